@@ -1,0 +1,83 @@
+// AABB tree over a triangle soup (Algorithm 1, line 1): a binary bounding-volume hierarchy whose
+// splits minimise the surface-area heuristic. Split candidates follow Hunt, Mark & Stoll (2006) [4]:
+// a few uniform samples first, then more samples placed where the primitive count changes fastest.
+// Queries: closest point (with the feature it lies on) and triangles overlapping a box.
+#ifndef ShrinkWrap_AABBTree_h
+#define ShrinkWrap_AABBTree_h
+
+#include "TriangleDistance.h"
+#include "TriangleSoup.h"
+
+#include <array>
+#include <limits>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+struct AABBTreeSettings
+{
+  int leafSize = 4;        // at most this many triangles in a leaf
+  int uniformSamples = 8;  // first pass of the split search, per axis
+  int adaptiveSamples = 8; // second pass, placed by primitive density
+  int parallelSubtreeSize = 4096; // subtrees this small are built in parallel
+};
+
+struct ClosestHit
+{
+  int triangle = -1; // -1: nothing within the search radius
+  double squaredDistance = std::numeric_limits<double>::infinity();
+  Vec3 point = Vec3::Zero();
+  Feature feature = Feature::Face;
+};
+
+class AABBTree
+{
+public:
+  explicit AABBTree(const TriangleSoup& soup, const AABBTreeSettings& settings = {});
+
+  // Nearest point of the soup to p, searched within sqrt(maxSquaredDistance).
+  ClosestHit closestPoint(
+    const Vec3& p, double maxSquaredDistance = std::numeric_limits<double>::infinity()) const;
+
+  // Indices (into the soup) of triangles whose bounding boxes overlap box.
+  void trianglesOverlapping(const Box& box, std::vector<int>& out) const;
+
+  const Box& bounds() const { return this->Nodes.front().box; }
+  int depth() const { return this->Depth; }
+  std::size_t nodeCount() const { return this->Nodes.size(); }
+
+private:
+  struct Node
+  {
+    Box box;
+    int first; // leaf: first triangle in Order; inner: index of the left child (right = first + 1)
+    int count; // leaf: number of triangles; inner: 0
+  };
+  struct Prim
+  {
+    Box box;
+    Vec3 centroid;
+    int id;
+  };
+
+  struct Subtree
+  {
+    int index, begin, end, depth;
+  };
+  AABBTree() = default;
+  void buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings& s);
+  void build(std::vector<Node>& nodes, std::vector<Prim>& prims, int index, int begin, int end, int depth,
+    const AABBTreeSettings& s, std::vector<Subtree>* deferred);
+  int splitPosition(std::vector<Prim>& prims, int begin, int end, const Box& centroids,
+    const AABBTreeSettings& s) const;
+
+  std::vector<Node> Nodes;
+  std::vector<int> Order;                    // soup triangle index per leaf slot
+  std::vector<std::array<Vec3, 3>> Corners;  // triangle corners in leaf order, for locality
+  int Depth = 0;
+};
+
+} // namespace shrinkwrap
+
+#endif

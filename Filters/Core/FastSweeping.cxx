@@ -1,0 +1,244 @@
+#include "FastSweeping.h"
+
+#include <vtkSMPThreadLocal.h>
+#include <vtkSMPTools.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+// One grid line for the closest-point passes: the nodes' site indices, with a stride.
+struct Line
+{
+  std::int32_t* site;
+  std::int64_t stride;
+  int length;
+  double origin; // coordinate of the first node along the line's axis
+  double step;
+};
+
+// Scratch space of one thread for the lower envelope of one line.
+struct Envelope
+{
+  struct Parabola
+  {
+    double vertex; // the site's coordinate along the line
+    double offset; // squared distance from the line to the site
+    std::int32_t site;
+  };
+  std::vector<Parabola> candidates;
+  std::vector<int> hull;        // candidates on the lower envelope, left to right
+  std::vector<double> boundary; // where hull[k] starts to win
+
+  // Every node of the line takes the site nearest to it among the sites its nodes hold
+  // (Felzenszwalb & Huttenlocher 2012, with sites off the line: parabolas (t - vertex)^2 + offset).
+  template <typename OffsetOf>
+  void apply(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf)
+  {
+    this->candidates.clear();
+    for (int t = 0; t < line.length; ++t)
+    {
+      const std::int32_t s = line.site[t * line.stride];
+      if (s >= 0 && (this->candidates.empty() || this->candidates.back().site != s))
+      {
+        this->candidates.push_back({ sites[s][axis], offsetOf(sites[s]), s });
+      }
+    }
+    if (this->candidates.empty())
+    {
+      return;
+    }
+    // Sites lie within a few cells of their nodes, so the list is nearly sorted: insertion sort.
+    auto& c = this->candidates;
+    for (std::size_t a = 1; a < c.size(); ++a)
+    {
+      for (std::size_t b = a; b > 0 && c[b].vertex < c[b - 1].vertex; --b)
+      {
+        std::swap(c[b], c[b - 1]);
+      }
+    }
+    this->hull.assign(1, 0);
+    this->boundary.assign(1, -std::numeric_limits<double>::infinity());
+    for (int q = 1; q < static_cast<int>(c.size()); ++q)
+    {
+      double cut = 0;
+      while (!this->hull.empty())
+      {
+        const auto& p = c[this->hull.back()];
+        if (c[q].vertex == p.vertex)
+        {
+          // Same vertex: the lower parabola wins everywhere.
+          if (c[q].offset >= p.offset)
+          {
+            break;
+          }
+          this->hull.pop_back();
+          this->boundary.pop_back();
+          continue;
+        }
+        cut = ((c[q].offset + c[q].vertex * c[q].vertex) - (p.offset + p.vertex * p.vertex)) /
+          (2 * (c[q].vertex - p.vertex));
+        if (cut > this->boundary.back())
+        {
+          break;
+        }
+        this->hull.pop_back();
+        this->boundary.pop_back();
+      }
+      if (this->hull.empty())
+      {
+        this->hull.push_back(q);
+        this->boundary.push_back(-std::numeric_limits<double>::infinity());
+      }
+      else if (c[q].vertex != c[this->hull.back()].vertex)
+      {
+        this->hull.push_back(q);
+        this->boundary.push_back(cut);
+      }
+    }
+    std::size_t k = 0;
+    for (int t = 0; t < line.length; ++t)
+    {
+      const double x = line.origin + t * line.step;
+      while (k + 1 < this->hull.size() && this->boundary[k + 1] < x)
+      {
+        ++k;
+      }
+      line.site[t * line.stride] = c[this->hull[k]].site;
+    }
+  }
+};
+
+// The pass along `axis`: every line parallel to it, in parallel. Lines are taken in index order
+// (x fastest among the others), so neighbouring lines reuse the same cache lines.
+void envelopePass(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* site, int axis)
+{
+  const auto& d = lattice.dims;
+  const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2; // the two other axes, u varying fastest
+  const std::int64_t strides[3] = { 1, d[0], static_cast<std::int64_t>(d[0]) * d[1] };
+  vtkSMPThreadLocal<Envelope> scratch;
+  vtkSMPTools::For(0, static_cast<long long>(d[w]), [&](long long b, long long e) {
+    Envelope& envelope = scratch.Local();
+    for (long long lw = b; lw < e; ++lw)
+    {
+      const double cw = lattice.origin[w] + lw * lattice.spacing[w];
+      for (int lu = 0; lu < d[u]; ++lu)
+      {
+        const double cu = lattice.origin[u] + lu * lattice.spacing[u];
+        const Line line{ site + lu * strides[u] + lw * strides[w], strides[axis], d[axis], lattice.origin[axis],
+          lattice.spacing[axis] };
+        envelope.apply(line, axis, sites, [&](const Vec3& s) {
+          return (s[u] - cu) * (s[u] - cu) + (s[w] - cw) * (s[w] - cw);
+        });
+      }
+    }
+  });
+}
+
+// Godunov update for |grad u| = 1 from the smaller neighbour on each axis (a) with spacings h:
+// the largest u with sum_k max(u - a_k, 0)^2 / h_k^2 = 1.
+float eikonalUpdate(std::array<double, 3> a, std::array<double, 3> h)
+{
+  // Sort axes by neighbour value.
+  for (int x = 0; x < 2; ++x)
+  {
+    for (int y = 0; y < 2 - x; ++y)
+    {
+      if (a[y] > a[y + 1])
+      {
+        std::swap(a[y], a[y + 1]);
+        std::swap(h[y], h[y + 1]);
+      }
+    }
+  }
+  double u = a[0] + h[0];
+  double sw = 0, swa = 0, swa2 = 0; // sums of 1/h^2, a/h^2, a^2/h^2
+  for (int m = 0; m < 3; ++m)
+  {
+    if (!std::isfinite(a[m]) || (m > 0 && u <= a[m]))
+    {
+      break;
+    }
+    const double w = 1 / (h[m] * h[m]);
+    sw += w;
+    swa += w * a[m];
+    swa2 += w * a[m] * a[m];
+    const double disc = swa * swa - sw * (swa2 - 1);
+    u = disc >= 0 ? (swa + std::sqrt(disc)) / sw : u;
+  }
+  return static_cast<float>(u);
+}
+} // namespace
+
+bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* siteOfNode,
+  const Progress& progress)
+{
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    envelopePass(lattice, sites, siteOfNode, axis);
+    if (!progress.report((axis + 1) / 3.0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool sweepEikonal(const GridLattice& lattice, const std::uint8_t* frozen, float* distance, int iterations,
+  const Progress& progress)
+{
+  const auto& d = lattice.dims;
+  const std::int64_t sy = d[0], sz = sy * d[1];
+  const std::array<double, 3> h = { lattice.spacing[0], lattice.spacing[1], lattice.spacing[2] };
+  const float inf = std::numeric_limits<float>::infinity();
+  for (std::int64_t n = 0; n < lattice.nodeCount(); ++n)
+  {
+    if (!frozen[n])
+    {
+      distance[n] = inf;
+    }
+  }
+  auto neighbourMin = [&](std::int64_t n, int i, int len, std::int64_t stride) -> double {
+    const float lo = i > 0 ? distance[n - stride] : inf;
+    const float hi = i + 1 < len ? distance[n + stride] : inf;
+    return std::min(lo, hi);
+  };
+  const int sweeps = 8 * std::max(1, iterations);
+  for (int s = 0; s < sweeps; ++s)
+  {
+    const int o = s % 8;
+    const int di = (o & 1) ? -1 : 1, dj = (o & 2) ? -1 : 1, dk = (o & 4) ? -1 : 1;
+    for (int k = dk > 0 ? 0 : d[2] - 1; k >= 0 && k < d[2]; k += dk)
+    {
+      for (int j = dj > 0 ? 0 : d[1] - 1; j >= 0 && j < d[1]; j += dj)
+      {
+        for (int i = di > 0 ? 0 : d[0] - 1; i >= 0 && i < d[0]; i += di)
+        {
+          const std::int64_t n = lattice.index(i, j, k);
+          if (frozen[n])
+          {
+            continue;
+          }
+          const std::array<double, 3> a = { neighbourMin(n, i, d[0], 1), neighbourMin(n, j, d[1], sy),
+            neighbourMin(n, k, d[2], sz) };
+          if (std::isfinite(std::min({ a[0], a[1], a[2] })))
+          {
+            distance[n] = std::min(distance[n], eikonalUpdate(a, h));
+          }
+        }
+      }
+    }
+    if (!progress.report(static_cast<double>(s + 1) / sweeps))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace shrinkwrap

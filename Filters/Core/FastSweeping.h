@@ -1,0 +1,34 @@
+// Far field of Algorithm 1, line 7: distances at the nodes off the band.
+//  - Closest-point passes (default): the band's exact closest surface points ("sites") spread to the
+//    grid in three passes, one per axis, as in separable exact distance transforms (Maurer et al. 2003,
+//    Felzenszwalb & Huttenlocher 2012): along each grid line, every node takes the site nearest to it
+//    among the sites the line's nodes hold, found exactly by the lower envelope of the parabolas
+//    (t - s_axis)^2 + (squared distance from the line to s). Each line is independent (parallel,
+//    linear time). A node's distance is then that to a true surface point, never below the exact one
+//    and far closer to it than the Eikonal scheme's first-order error.
+//  - Eikonal sweeping (Zhao 2005 [16], as in the paper): Godunov upwind updates of |grad d| = 1 in the
+//    2^3 = 8 sweep orderings.
+#ifndef ShrinkWrap_FastSweeping_h
+#define ShrinkWrap_FastSweeping_h
+
+#include "GridLattice.h"
+#include "Progress.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+// siteOfNode: index into sites for each node, -1 where none yet; on return every node has the
+// nearest site found (if there is any site at all).
+bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* siteOfNode,
+  const Progress& progress);
+
+// distance: the band values where frozen[n] is nonzero, anything elsewhere; unsigned distances out.
+bool sweepEikonal(const GridLattice& lattice, const std::uint8_t* frozen, float* distance, int iterations,
+  const Progress& progress);
+
+} // namespace shrinkwrap
+
+#endif

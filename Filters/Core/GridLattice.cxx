@@ -1,0 +1,95 @@
+#include "GridLattice.h"
+
+#include <cmath>
+#include <limits>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+// Node counts beyond this per axis overflow the 32-bit indices VTK extents use.
+constexpr double kMaxNodesPerAxis = 1 << 30;
+} // namespace
+
+bool placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLattice& lattice, std::string& error)
+{
+  if (meshBounds.empty() || !meshBounds.min.allFinite() || !meshBounds.max.allFinite())
+  {
+    error = "the mesh bounds are empty or not finite";
+    return false;
+  }
+  if (!(placement.boxScale > 0) || !std::isfinite(placement.boxScale))
+  {
+    error = "BoxScale must be positive";
+    return false;
+  }
+  if (!(placement.offsetFactor >= 0) || !std::isfinite(placement.offsetFactor))
+  {
+    error = "OffsetFactor must be zero or positive";
+    return false;
+  }
+  if (placement.cellSize < 0 || !std::isfinite(placement.cellSize))
+  {
+    error = "CellSize must be positive (or 0 to use Resolution)";
+    return false;
+  }
+  if (placement.cellSize == 0 && placement.resolution < 1)
+  {
+    error = "Resolution must be at least 1 (cells along the longest axis)";
+    return false;
+  }
+  const Vec3 scaled = placement.boxScale * meshBounds.size();
+  const double offset = placement.offsetFactor * scaled.maxCoeff();
+  const Vec3 extent = scaled + Vec3::Constant(2 * offset);
+  if (!(extent.maxCoeff() > 0))
+  {
+    error = "the mesh has no extent (all its points coincide)";
+    return false;
+  }
+  const double h = placement.cellSize > 0 ? placement.cellSize : extent.maxCoeff() / placement.resolution;
+  lattice.spacing = Vec3::Constant(h);
+  Vec3 span;
+  for (int a = 0; a < 3; ++a)
+  {
+    // Whole cells covering the extent (at least one), grown symmetrically about the centre.
+    const double cells = std::max(1.0, std::ceil(extent[a] / h - 1e-9));
+    if (!(cells < kMaxNodesPerAxis))
+    {
+      error = "the grid would have more than 2^30 nodes along an axis";
+      return false;
+    }
+    lattice.dims[a] = static_cast<int>(cells) + 1;
+    span[a] = cells * h;
+  }
+  lattice.origin = meshBounds.center() - 0.5 * span;
+  return true;
+}
+
+bool explicitGrid(const Box& bounds, const std::array<int, 3>& dims, GridLattice& lattice, std::string& error)
+{
+  if (!bounds.min.allFinite() || !bounds.max.allFinite())
+  {
+    error = "the output bounds are not finite";
+    return false;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (dims[a] < 2)
+    {
+      error = "the output dimensions must be at least 2 nodes on every axis";
+      return false;
+    }
+    if (!(bounds.max[a] > bounds.min[a]))
+    {
+      error = "the output bounds must have max > min on every axis";
+      return false;
+    }
+    lattice.dims[a] = dims[a];
+    lattice.spacing[a] = (bounds.max[a] - bounds.min[a]) / (dims[a] - 1);
+  }
+  lattice.origin = bounds.min;
+  return true;
+}
+
+} // namespace shrinkwrap

@@ -1,0 +1,61 @@
+// The node lattice of a distance grid: index <-> position. Values live at the nodes (VTK point data),
+// so the shrink-wrap evolver samples exactly the lattice the signed distance filter writes.
+#ifndef ShrinkWrap_GridLattice_h
+#define ShrinkWrap_GridLattice_h
+
+#include "Box.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace shrinkwrap
+{
+
+struct GridLattice
+{
+  Vec3 origin = Vec3::Zero();
+  Vec3 spacing = Vec3::Ones();
+  std::array<int, 3> dims = { 0, 0, 0 }; // nodes per axis
+
+  std::int64_t nodeCount() const
+  {
+    return static_cast<std::int64_t>(this->dims[0]) * this->dims[1] * this->dims[2];
+  }
+  std::int64_t index(int i, int j, int k) const
+  {
+    return i + static_cast<std::int64_t>(this->dims[0]) * (j + static_cast<std::int64_t>(this->dims[1]) * k);
+  }
+  Vec3 position(int i, int j, int k) const
+  {
+    return this->origin + Vec3(i, j, k).cwiseProduct(this->spacing);
+  }
+  Box bounds() const
+  {
+    Box b;
+    b.extend(this->origin);
+    b.extend(this->position(this->dims[0] - 1, this->dims[1] - 1, this->dims[2] - 1));
+    return b;
+  }
+  double minSpacing() const { return this->spacing.minCoeff(); }
+};
+
+// How the grid is placed around a mesh (paper Section 4.1 and Algorithm 1, lines 3-4).
+struct GridPlacement
+{
+  double boxScale = 1.1;     // phi: the mesh bounds are scaled by it about their centre
+  double offsetFactor = 1.0; // o = offsetFactor * the largest side of the scaled box, added on every side
+  int resolution = 120;      // cells along the longest axis of the whole grid ("120^3" in Table 1)
+  double cellSize = 0;       // > 0 overrides resolution
+};
+
+// The lattice for a mesh with the given bounds; equal spacing on all axes. Returns false with a
+// message for bounds that are empty or not finite, or settings that make no grid.
+bool placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLattice& lattice, std::string& error);
+
+// A lattice spanning explicit bounds with the given node counts (as Resample To Image does).
+bool explicitGrid(const Box& bounds, const std::array<int, 3>& dims, GridLattice& lattice, std::string& error);
+
+} // namespace shrinkwrap
+
+#endif

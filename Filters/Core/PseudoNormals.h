@@ -1,0 +1,37 @@
+// Angle-weighted pseudonormals (Baerentzen & Aanaes, IEEE TVCG 2005): for a closed manifold mesh the
+// sign of (x - p) . n(feature of p), with p the closest surface point to x, is the sign of x.
+// That decides the band nodes, which the flood fill of Algorithm 1 (line 8) cannot reach.
+#ifndef ShrinkWrap_PseudoNormals_h
+#define ShrinkWrap_PseudoNormals_h
+
+#include "TriangleDistance.h"
+#include "TriangleSoup.h"
+
+#include <array>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+class PseudoNormals
+{
+public:
+  explicit PseudoNormals(const TriangleSoup& welded);
+
+  const Vec3& at(int triangle, Feature feature) const;
+
+  // Edges used by one triangle only (holes) and by more than two (non-manifold).
+  long long boundaryEdges() const { return this->BoundaryEdges; }
+  long long nonManifoldEdges() const { return this->NonManifoldEdges; }
+
+private:
+  std::vector<Vec3> Face;
+  std::vector<std::array<Vec3, 3>> Corner; // per triangle: its vertices' pseudonormals
+  std::vector<std::array<Vec3, 3>> Edge;   // per triangle: edges 01, 12, 20
+  long long BoundaryEdges = 0;
+  long long NonManifoldEdges = 0;
+};
+
+} // namespace shrinkwrap
+
+#endif

@@ -1,0 +1,30 @@
+// Sign of Algorithm 1, line 8, by flood fill. The band (the nodes of every cell the surface touches)
+// is watertight for a closed mesh, so the off-band nodes fall into connected regions (6-neighbours)
+// that lie wholly inside or wholly outside. A grid edge from a band node to an off-band node does not
+// cross the surface (else both ends would be band nodes), so every band node next to a region has the
+// region's side: its pseudonormal sign votes for it. A closed mesh gives unanimous votes; a minority
+// means that one region reaches both sides of the surface through a hole, and the field is unsigned.
+// Voting needs no seed on the grid boundary, so grids that cut through the mesh are signed too.
+#ifndef ShrinkWrap_SignFill_h
+#define ShrinkWrap_SignFill_h
+
+#include "DistanceBand.h"
+
+namespace shrinkwrap
+{
+
+struct SignVotes
+{
+  long long regions = 0;
+  long long agreeing = 0;    // band-to-region grid edges whose band sign is the region's
+  long long disagreeing = 0; // ... whose band sign is not
+  bool consistent() const { return this->disagreeing == 0; }
+};
+
+// Labels every Unvisited node Outside or Inside by the votes of the band nodes around its region
+// (no votes: Outside). Returns false in aborted if the progress callback asked to stop.
+SignVotes signRegions(const GridLattice& lattice, std::uint8_t* state, const Progress& progress, bool& aborted);
+
+} // namespace shrinkwrap
+
+#endif

@@ -1,0 +1,162 @@
+#include "SignedDistance.h"
+
+#include "AABBTree.h"
+#include "DistanceBand.h"
+#include "FastSweeping.h"
+#include "PseudoNormals.h"
+#include "SignFill.h"
+
+#include <vtkSMPTools.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Far field by closest-point passes; the distance of every node is that to its site.
+bool closestPointFarField(const GridLattice& lattice, const DistanceBand& band, float* distance,
+  const Progress& progress)
+{
+  std::vector<std::int32_t> site(lattice.nodeCount(), -1);
+  for (std::size_t k = 0; k < band.nodes.size(); ++k)
+  {
+    site[band.nodes[k]] = static_cast<std::int32_t>(k);
+  }
+  if (!sweepClosestPoints(lattice, band.closest, site.data(), progress))
+  {
+    return false;
+  }
+  const auto& d = lattice.dims;
+  vtkSMPTools::For(0, static_cast<long long>(d[1]) * d[2], [&](long long b, long long e) {
+    for (long long row = b; row < e; ++row)
+    {
+      const int j = static_cast<int>(row % d[1]), k = static_cast<int>(row / d[1]);
+      const std::int64_t base = lattice.index(0, j, k);
+      for (int i = 0; i < d[0]; ++i)
+      {
+        distance[base + i] = static_cast<float>((lattice.position(i, j, k) - band.closest[site[base + i]]).norm());
+      }
+    }
+  });
+  return true;
+}
+
+bool eikonalFarField(
+  const GridLattice& lattice, const DistanceBand& band, int rounds, float* distance, const Progress& progress)
+{
+  std::vector<std::uint8_t> frozen(lattice.nodeCount(), 0);
+  for (std::size_t k = 0; k < band.nodes.size(); ++k)
+  {
+    frozen[band.nodes[k]] = 1;
+    distance[band.nodes[k]] = band.distance[k];
+  }
+  return sweepEikonal(lattice, frozen.data(), distance, rounds, progress);
+}
+
+// Negates the inside (band and off-band) of an unsigned field.
+void applySigns(const GridLattice& lattice, const std::uint8_t* state, bool isSigned, float* distance)
+{
+  if (!isSigned)
+  {
+    return;
+  }
+  vtkSMPTools::For(0, lattice.nodeCount(), [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t n = b; n < e; ++n)
+    {
+      if (state[n] == Inside || state[n] == BandInside)
+      {
+        distance[n] = -distance[n];
+      }
+    }
+  });
+}
+} // namespace
+
+int workingBytesPerNode(const SignedDistanceSettings& settings)
+{
+  // Node state always; site index (closest point) or frozen flag (Eikonal).
+  return 1 + (settings.sweep == SweepMethod::ClosestPoint ? 4 : 1);
+}
+
+SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+{
+  SignedDistanceResult result;
+  auto clock = std::chrono::steady_clock::now();
+
+  // Algorithm 1, line 1: the tree, and the pseudonormals that sign the band.
+  const TriangleSoup soup = weldDuplicatePoints(input);
+  const AABBTree tree(soup);
+  const PseudoNormals normals(soup);
+  result.boundaryEdges = normals.boundaryEdges();
+  result.nonManifoldEdges = normals.nonManifoldEdges();
+  result.treeSeconds = secondsSince(clock);
+  if (!progress.report(0.05))
+  {
+    return result;
+  }
+
+  // Lines 2-5: the octree outline and exact distances on its nodes.
+  clock = std::chrono::steady_clock::now();
+  std::vector<std::int64_t> cells;
+  if (!outlineCells(soup, lattice, progress.stage(0.05, 0.2), cells))
+  {
+    return result;
+  }
+  std::vector<std::uint8_t> state(lattice.nodeCount(), Unvisited);
+  result.outlineSeconds = secondsSince(clock);
+  clock = std::chrono::steady_clock::now();
+  DistanceBand band;
+  const Box grid = lattice.bounds();
+  const bool meshInsideGrid = (soup.bounds().min.array() > grid.min.array()).all() &&
+    (soup.bounds().max.array() < grid.max.array()).all();
+  std::vector<std::int64_t> nodes =
+    bandNodes(lattice, cells, settings.bandLayers, !meshInsideGrid, state.data());
+  if (!computeBand(tree, normals, lattice, std::move(nodes), 1e-6 * lattice.minSpacing(),
+        progress.stage(0.2, 0.45), band, state.data()))
+  {
+    return result;
+  }
+  result.bandNodes = static_cast<long long>(band.nodes.size());
+  result.bandSeconds = secondsSince(clock);
+
+  // Lines 6-7: the far field.
+  clock = std::chrono::steady_clock::now();
+  const Progress sweepProgress = progress.stage(0.45, 0.8);
+  const bool swept = settings.sweep == SweepMethod::ClosestPoint
+    ? closestPointFarField(lattice, band, distance, sweepProgress)
+    : eikonalFarField(lattice, band, settings.eikonalIterations, distance, sweepProgress);
+  if (!swept)
+  {
+    return result;
+  }
+  result.sweepSeconds = secondsSince(clock);
+
+  // Line 8: the sign.
+  clock = std::chrono::steady_clock::now();
+  if (settings.computeSign)
+  {
+    bool aborted;
+    const SignVotes votes = signRegions(lattice, state.data(), progress.stage(0.8, 0.98), aborted);
+    if (aborted)
+    {
+      return result;
+    }
+    result.signDisagreements = votes.disagreeing;
+    result.isSigned = votes.consistent();
+  }
+  applySigns(lattice, state.data(), result.isSigned, distance);
+  result.signSeconds = secondsSince(clock);
+  result.completed = progress.report(1);
+  return result;
+}
+
+} // namespace shrinkwrap

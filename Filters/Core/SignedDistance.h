@@ -1,0 +1,51 @@
+// Algorithm 1 of the paper: the signed distance of a triangle soup at the nodes of a lattice.
+#ifndef ShrinkWrap_SignedDistance_h
+#define ShrinkWrap_SignedDistance_h
+
+#include "GridLattice.h"
+#include "Progress.h"
+#include "TriangleSoup.h"
+
+#include <cstdint>
+#include <string>
+
+namespace shrinkwrap
+{
+
+enum class SweepMethod
+{
+  ClosestPoint, // propagate closest surface points (default: more exact at the same speed)
+  Eikonal       // the paper's fast sweeping of |grad d| = 1 [16]
+};
+
+struct SignedDistanceSettings
+{
+  SweepMethod sweep = SweepMethod::ClosestPoint;
+  int bandLayers = 1;   // node layers of exact distances beyond the nodes of the cells the surface touches
+  int eikonalIterations = 1; // repetitions of the eight Eikonal sweeps
+  bool computeSign = true;
+};
+
+struct SignedDistanceResult
+{
+  bool completed = false; // false: aborted, the values are incomplete
+  bool isSigned = false;  // false: unsigned, because the outside leaked in or sign was not asked for
+  long long bandNodes = 0;
+  long long boundaryEdges = 0;
+  long long nonManifoldEdges = 0;
+  long long signDisagreements = 0;
+  // Seconds per stage.
+  double treeSeconds = 0, outlineSeconds = 0, bandSeconds = 0, sweepSeconds = 0, signSeconds = 0;
+};
+
+// Bytes per grid node the computation needs besides the output values and the mesh.
+int workingBytesPerNode(const SignedDistanceSettings& settings);
+
+// Fills `distance` (lattice.nodeCount() values, x fastest) with the signed distance to the soup:
+// negative inside, positive outside. The soup must be non-empty with finite coordinates.
+SignedDistanceResult computeSignedDistance(const TriangleSoup& soup, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
+
+} // namespace shrinkwrap
+
+#endif

@@ -1,0 +1,32 @@
+// The paper's triangle soup (Section 2.1): indexed triangles with no topology required, so
+// non-manifold and duplicate-point meshes are accepted. Points with identical coordinates are welded
+// so that the pseudonormals of shared vertices and edges can be found.
+#ifndef ShrinkWrap_TriangleSoup_h
+#define ShrinkWrap_TriangleSoup_h
+
+#include "Box.h"
+
+#include <array>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+struct TriangleSoup
+{
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+
+  Box bounds() const; // of the points that triangles use
+  bool allFinite() const;
+  // Largest triangle area; zero when every triangle is degenerate.
+  double maxTriangleArea() const;
+};
+
+// Merge points with bit-identical coordinates. The result is the same surface; only the indices
+// change (a triangle that then repeats an index is kept: as a segment it still has distances).
+TriangleSoup weldDuplicatePoints(const TriangleSoup& soup);
+
+} // namespace shrinkwrap
+
+#endif

@@ -1,0 +1,337 @@
+#include "vtkMeshSignedDistance.h"
+
+#include "SignedDistance.h"
+#include "SystemMemory.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolygon.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+#include "vtkTriangleStrip.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+
+vtkStandardNewMacro(vtkMeshSignedDistance);
+
+namespace
+{
+using shrinkwrap::TriangleSoup;
+
+// The paper's triangle soup: polygons of any size (ear-cut by vtkPolygon when n > 3) and strips.
+// Cells naming points that do not exist are counted in badCells and left out.
+TriangleSoup soupFromPolyData(vtkPolyData* input, vtkIdType& badCells)
+{
+  TriangleSoup soup;
+  badCells = 0;
+  vtkPoints* points = input->GetPoints();
+  const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
+  soup.points.resize(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    points->GetPoint(i, soup.points[i].data());
+  }
+  auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
+    soup.triangles.push_back({ static_cast<int>(a), static_cast<int>(b), static_cast<int>(c) });
+  };
+  auto valid = [&](vtkIdType n, const vtkIdType* ids) {
+    const bool ok = std::all_of(ids, ids + n, [np](vtkIdType id) { return id >= 0 && id < np; });
+    badCells += !ok;
+    return ok;
+  };
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> corners;
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(n, ids);
+    if (!valid(n, ids))
+    {
+      continue;
+    }
+    if (n == 3)
+    {
+      addTriangle(ids[0], ids[1], ids[2]);
+      continue;
+    }
+    if (n < 3)
+    {
+      continue;
+    }
+    polygon->Initialize(n, ids, points);
+    if (polygon->Triangulate(corners) && corners->GetNumberOfIds() > 0)
+    {
+      for (vtkIdType k = 0; k + 2 < corners->GetNumberOfIds(); k += 3)
+      {
+        addTriangle(ids[corners->GetId(k)], ids[corners->GetId(k + 1)], ids[corners->GetId(k + 2)]);
+      }
+    }
+    else
+    {
+      // Ear cutting fails on degenerate polygons; a fan still has their distances.
+      for (vtkIdType k = 1; k + 1 < n; ++k)
+      {
+        addTriangle(ids[0], ids[k], ids[k + 1]);
+      }
+    }
+  }
+  vtkNew<vtkCellArray> stripTriangles;
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    strips->GetCurrentCell(n, ids);
+    if (!valid(n, ids))
+    {
+      continue;
+    }
+    for (vtkIdType k = 0; k + 2 < n; ++k)
+    {
+      // Strips alternate orientation.
+      k % 2 == 0 ? addTriangle(ids[k], ids[k + 1], ids[k + 2]) : addTriangle(ids[k + 1], ids[k], ids[k + 2]);
+    }
+  }
+  return soup;
+}
+
+std::string gibibytes(double bytes)
+{
+  std::ostringstream s;
+  s.precision(3);
+  s << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
+  return s.str();
+}
+
+// Runs f with vtkSMPTools on all cores. Debian's VTK defaults to the Sequential backend; a scoped
+// STDThread backend leaves the process-wide choice alone. A backend the user chose wins.
+template <typename F>
+void onAllCores(F&& f)
+{
+  if (std::getenv("VTK_SMP_BACKEND_IN_USE"))
+  {
+    f();
+    return;
+  }
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, f);
+}
+} // namespace
+
+vtkMeshSignedDistance::vtkMeshSignedDistance()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(1);
+}
+
+int vtkMeshSignedDistance::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+bool vtkMeshSignedDistance::ExplicitLattice(shrinkwrap::GridLattice& lattice, std::string& error) const
+{
+  shrinkwrap::Box box; // as given: inverted bounds are an error, not swapped
+  box.min = shrinkwrap::Vec3(this->OutputBounds[0], this->OutputBounds[2], this->OutputBounds[4]);
+  box.max = shrinkwrap::Vec3(this->OutputBounds[1], this->OutputBounds[3], this->OutputBounds[5]);
+  return shrinkwrap::explicitGrid(
+    box, { this->OutputDimensions[0], this->OutputDimensions[1], this->OutputDimensions[2] }, lattice, error);
+}
+
+int vtkMeshSignedDistance::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // The grid placed around the input is only known once the input is; an explicit grid is known now.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  shrinkwrap::GridLattice lattice;
+  std::string error;
+  if (this->UseExplicitGrid && this->ExplicitLattice(lattice, error))
+  {
+    const int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+    outInfo->Set(vtkDataObject::ORIGIN(), lattice.origin.data(), 3);
+    outInfo->Set(vtkDataObject::SPACING(), lattice.spacing.data(), 3);
+  }
+  else
+  {
+    outInfo->Remove(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+  }
+  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_FLOAT, 1);
+  return 1;
+}
+
+int vtkMeshSignedDistance::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Distances need the whole mesh.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  return 1;
+}
+
+int vtkMeshSignedDistance::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkImageData* output = vtkImageData::GetData(outInfo);
+  output->Initialize();
+  if (!input)
+  {
+    vtkErrorMacro("Mesh Signed Distance needs a vtkPolyData input.");
+    return 1;
+  }
+
+  // Input checks: each leaves an empty output and the pipeline usable.
+  if (input->GetNumberOfLines() > 0 || input->GetNumberOfVerts() > 0)
+  {
+    vtkWarningMacro("Ignoring " << input->GetNumberOfLines() << " lines and " << input->GetNumberOfVerts()
+                                << " vertices: only polygons and triangle strips have an inside.");
+  }
+  vtkIdType badCells;
+  const TriangleSoup soup = soupFromPolyData(input, badCells);
+  if (badCells > 0)
+  {
+    vtkErrorMacro("The input has " << badCells << " cells whose point ids are out of range: it is corrupt.");
+    return 1;
+  }
+  if (soup.triangles.empty())
+  {
+    vtkErrorMacro("The input has no polygons or triangle strips: there is no surface to measure from.");
+    return 1;
+  }
+  if (!soup.allFinite())
+  {
+    vtkErrorMacro("The input has NaN or infinite point coordinates; fix or remove those points first.");
+    return 1;
+  }
+  if (!(soup.maxTriangleArea() > 0))
+  {
+    vtkErrorMacro("Every triangle of the input is degenerate (zero area): there is no surface.");
+    return 1;
+  }
+
+  shrinkwrap::GridLattice lattice;
+  std::string error;
+  bool placed;
+  if (this->UseExplicitGrid)
+  {
+    placed = this->ExplicitLattice(lattice, error);
+  }
+  else
+  {
+    const shrinkwrap::GridPlacement placement{ this->BoxScale, this->OffsetFactor, this->Resolution, this->CellSize };
+    placed = shrinkwrap::placeGrid(soup.bounds(), placement, lattice, error);
+  }
+  if (!placed)
+  {
+    vtkErrorMacro("Cannot place the grid: " << error << ".");
+    return 1;
+  }
+
+  shrinkwrap::SignedDistanceSettings settings;
+  settings.sweep =
+    this->SweepMethod == EIKONAL ? shrinkwrap::SweepMethod::Eikonal : shrinkwrap::SweepMethod::ClosestPoint;
+  settings.bandLayers = this->BandLayers;
+  settings.computeSign = this->ComputeSign;
+
+  // Refuse a grid that cannot fit before allocating anything for it.
+  // In floating point: the node count of an absurd grid overflows 64-bit integers.
+  const double nodes = static_cast<double>(lattice.dims[0]) * lattice.dims[1] * lattice.dims[2];
+  const double needed = nodes * (sizeof(float) + shrinkwrap::workingBytesPerNode(settings));
+  const double available = static_cast<double>(shrinkwrap::availableMemoryBytes());
+  if (needed > 0.8 * available)
+  {
+    vtkErrorMacro("A " << lattice.dims[0] << " x " << lattice.dims[1] << " x " << lattice.dims[2]
+                       << " grid would need " << gibibytes(needed) << " but only " << gibibytes(available)
+                       << " of memory is available; lower Resolution or raise CellSize.");
+    return 1;
+  }
+
+  vtkNew<vtkFloatArray> values;
+  values->SetName("SignedDistance");
+  values->SetNumberOfValues(lattice.nodeCount());
+  shrinkwrap::SignedDistanceResult result;
+  const shrinkwrap::Progress progress([this](double fraction) {
+    this->UpdateProgress(fraction);
+    return !this->GetAbortExecute();
+  });
+  onAllCores([&] {
+    result = shrinkwrap::computeSignedDistance(soup, lattice, settings, values->GetPointer(0), progress);
+  });
+  if (!result.completed)
+  {
+    vtkWarningMacro("Mesh Signed Distance was aborted; the output is empty.");
+    return 1;
+  }
+
+  const int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  output->SetExtent(const_cast<int*>(extent));
+  output->SetOrigin(lattice.origin.data());
+  output->SetSpacing(lattice.spacing.data());
+  output->GetPointData()->SetScalars(values);
+
+  std::ostringstream status;
+  if (result.isSigned)
+  {
+    status << "signed";
+  }
+  else if (!this->ComputeSign)
+  {
+    status << "unsigned: ComputeSign is off";
+  }
+  else
+  {
+    status << "unsigned: the outside reaches the inside (" << result.boundaryEdges << " boundary edges, "
+           << result.nonManifoldEdges << " non-manifold edges, " << result.signDisagreements
+           << " band sign disagreements)";
+    vtkWarningMacro("The mesh is not closed, so the distance field is " << status.str() << ".");
+  }
+  vtkNew<vtkIntArray> isSigned;
+  isSigned->SetName("Signed");
+  isSigned->InsertNextValue(result.isSigned ? 1 : 0);
+  vtkNew<vtkStringArray> statusArray;
+  statusArray->SetName("DistanceStatus");
+  statusArray->InsertNextValue(status.str());
+  output->GetFieldData()->AddArray(isSigned);
+  output->GetFieldData()->AddArray(statusArray);
+  return 1;
+}
+
+void vtkMeshSignedDistance::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "BoxScale: " << this->BoxScale << "\n";
+  os << indent << "OffsetFactor: " << this->OffsetFactor << "\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "CellSize: " << this->CellSize << "\n";
+  os << indent << "UseExplicitGrid: " << this->UseExplicitGrid << "\n";
+  os << indent << "OutputBounds: " << this->OutputBounds[0] << " " << this->OutputBounds[1] << " "
+     << this->OutputBounds[2] << " " << this->OutputBounds[3] << " " << this->OutputBounds[4] << " "
+     << this->OutputBounds[5] << "\n";
+  os << indent << "OutputDimensions: " << this->OutputDimensions[0] << " " << this->OutputDimensions[1] << " "
+     << this->OutputDimensions[2] << "\n";
+  os << indent << "SweepMethod: " << (this->SweepMethod == EIKONAL ? "Eikonal" : "ClosestPoint") << "\n";
+  os << indent << "BandLayers: " << this->BandLayers << "\n";
+  os << indent << "ComputeSign: " << this->ComputeSign << "\n";
+}

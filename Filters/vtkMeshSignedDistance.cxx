@@ -3,6 +3,7 @@
 #include "SignedDistance.h"
 #include "SystemMemory.h"
 
+#include "vtkAlgorithmOutput.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkFieldData.h"
@@ -112,6 +113,38 @@ TriangleSoup soupFromPolyData(vtkPolyData* input, vtkIdType& badCells)
   return soup;
 }
 
+// Bounds of the points that polygons and strips use: the surface, without stray points or lines.
+shrinkwrap::Box surfaceBounds(vtkPolyData* input)
+{
+  shrinkwrap::Box box;
+  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  if (!points)
+  {
+    return box;
+  }
+  const vtkIdType np = points->GetNumberOfPoints();
+  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        if (ids[k] >= 0 && ids[k] < np)
+        {
+          shrinkwrap::Vec3 p;
+          points->GetPoint(ids[k], p.data());
+          box.extend(p);
+        }
+      }
+    }
+  }
+  return box;
+}
+
 std::string gibibytes(double bytes)
 {
   std::ostringstream s;
@@ -146,32 +179,45 @@ int vtkMeshSignedDistance::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-bool vtkMeshSignedDistance::ExplicitLattice(shrinkwrap::GridLattice& lattice, std::string& error) const
+bool vtkMeshSignedDistance::ComputeLattice(
+  const shrinkwrap::Box& surfaceBounds, shrinkwrap::GridLattice& lattice, std::string& error) const
 {
-  shrinkwrap::Box box; // as given: inverted bounds are an error, not swapped
-  box.min = shrinkwrap::Vec3(this->OutputBounds[0], this->OutputBounds[2], this->OutputBounds[4]);
-  box.max = shrinkwrap::Vec3(this->OutputBounds[1], this->OutputBounds[3], this->OutputBounds[5]);
-  return shrinkwrap::explicitGrid(
-    box, { this->OutputDimensions[0], this->OutputDimensions[1], this->OutputDimensions[2] }, lattice, error);
+  if (this->UseExplicitGrid)
+  {
+    shrinkwrap::Box box; // as given: inverted bounds are an error, not swapped
+    box.min = shrinkwrap::Vec3(this->OutputBounds[0], this->OutputBounds[2], this->OutputBounds[4]);
+    box.max = shrinkwrap::Vec3(this->OutputBounds[1], this->OutputBounds[3], this->OutputBounds[5]);
+    return shrinkwrap::explicitGrid(
+      box, { this->OutputDimensions[0], this->OutputDimensions[1], this->OutputDimensions[2] }, lattice, error);
+  }
+  const shrinkwrap::GridPlacement placement{ this->BoxScale, this->OffsetFactor, this->Resolution, this->CellSize };
+  return shrinkwrap::placeGrid(surfaceBounds, placement, lattice, error);
 }
 
 int vtkMeshSignedDistance::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  // The grid placed around the input is only known once the input is; an explicit grid is known now.
+  // Downstream filters (slices, contours, streaming) need the grid now. A grid placed around the
+  // input needs the input's bounds, so the input is brought up to date here; RequestData derives the
+  // same lattice from the same bounds.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+  shrinkwrap::Box bounds;
+  if (!this->UseExplicitGrid && this->GetNumberOfInputConnections(0) > 0)
+  {
+    vtkAlgorithm* producer = this->GetInputAlgorithm(0, 0);
+    const int port = this->GetInputConnection(0, 0)->GetIndex();
+    producer->UpdatePiece(0, 1, 0);
+    bounds = surfaceBounds(vtkPolyData::SafeDownCast(producer->GetOutputDataObject(port)));
+  }
   shrinkwrap::GridLattice lattice;
   std::string error;
-  if (this->UseExplicitGrid && this->ExplicitLattice(lattice, error))
+  if (this->ComputeLattice(bounds, lattice, error))
   {
     const int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
     outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
     outInfo->Set(vtkDataObject::ORIGIN(), lattice.origin.data(), 3);
     outInfo->Set(vtkDataObject::SPACING(), lattice.spacing.data(), 3);
-  }
-  else
-  {
-    outInfo->Remove(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
   }
   vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_FLOAT, 1);
   return 1;
@@ -232,17 +278,7 @@ int vtkMeshSignedDistance::RequestData(
 
   shrinkwrap::GridLattice lattice;
   std::string error;
-  bool placed;
-  if (this->UseExplicitGrid)
-  {
-    placed = this->ExplicitLattice(lattice, error);
-  }
-  else
-  {
-    const shrinkwrap::GridPlacement placement{ this->BoxScale, this->OffsetFactor, this->Resolution, this->CellSize };
-    placed = shrinkwrap::placeGrid(soup.bounds(), placement, lattice, error);
-  }
-  if (!placed)
+  if (!this->ComputeLattice(surfaceBounds(input), lattice, error))
   {
     vtkErrorMacro("Cannot place the grid: " << error << ".");
     return 1;
@@ -284,17 +320,27 @@ int vtkMeshSignedDistance::RequestData(
     return 1;
   }
 
-  const int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-  output->SetExtent(const_cast<int*>(extent));
+  int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+  output->SetExtent(extent);
   output->SetOrigin(lattice.origin.data());
   output->SetSpacing(lattice.spacing.data());
   output->GetPointData()->SetScalars(values);
+  // A downstream request for part of the grid (streaming, or a piece per MPI rank) gets that part.
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+    output->Crop(extent);
+  }
 
   std::ostringstream status;
   if (result.isSigned)
   {
     status << "signed";
+    if (result.invertedOrientation)
+    {
+      status << " (the triangles face inwards; the signs follow the geometry)";
+      vtkWarningMacro("The mesh's triangles face inwards; the signs follow the geometry (negative inside).");
+    }
   }
   else if (!this->ComputeSign)
   {

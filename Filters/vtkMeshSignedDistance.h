@@ -36,6 +36,7 @@
 
 namespace shrinkwrap
 {
+struct Box;
 struct GridLattice;
 }
 
@@ -145,7 +146,9 @@ protected:
   bool ComputeSign = true;
 
 private:
-  bool ExplicitLattice(shrinkwrap::GridLattice& lattice, std::string& error) const;
+  // The output lattice: explicit, or placed around the bounds of the input's surface.
+  bool ComputeLattice(
+    const shrinkwrap::Box& surfaceBounds, shrinkwrap::GridLattice& lattice, std::string& error) const;
 
   vtkMeshSignedDistance(const vtkMeshSignedDistance&) = delete;
   void operator=(const vtkMeshSignedDistance&) = delete;

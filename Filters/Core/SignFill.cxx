@@ -1,5 +1,7 @@
 #include "SignFill.h"
 
+#include <vtkSMPTools.h>
+
 namespace shrinkwrap
 {
 
@@ -50,7 +52,8 @@ long long flood(const GridLattice& lattice, std::uint8_t* state, std::int64_t se
 }
 } // namespace
 
-SignVotes signRegions(const GridLattice& lattice, std::uint8_t* state, const Progress& progress, bool& aborted)
+SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, std::uint8_t* state,
+  const Progress& progress, bool& aborted)
 {
   SignVotes votes;
   aborted = false;
@@ -67,7 +70,11 @@ SignVotes signRegions(const GridLattice& lattice, std::uint8_t* state, const Pro
       outside += state[m] == BandOutside;
       inside += state[m] == BandInside;
     });
-    if (inside > outside)
+    if (seed == 0 && cornerIsOutside && inside > outside)
+    {
+      votes.inverted = true;
+    }
+    if ((inside > outside) != votes.inverted)
     {
       flood(lattice, state, seed, Outside, Inside, [](std::int64_t) {});
     }
@@ -79,6 +86,15 @@ SignVotes signRegions(const GridLattice& lattice, std::uint8_t* state, const Pro
       aborted = true;
       return votes;
     }
+  }
+  if (votes.inverted)
+  {
+    vtkSMPTools::For(0, total, [&](std::int64_t b, std::int64_t e) {
+      for (std::int64_t n = b; n < e; ++n)
+      {
+        state[n] = state[n] == BandInside ? BandOutside : (state[n] == BandOutside ? BandInside : state[n]);
+      }
+    });
   }
   return votes;
 }

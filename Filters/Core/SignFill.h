@@ -15,6 +15,7 @@ namespace shrinkwrap
 
 struct SignVotes
 {
+  bool inverted = false; // the triangles face inwards: every sign was flipped to follow the geometry
   long long regions = 0;
   long long agreeing = 0;    // band-to-region grid edges whose band sign is the region's
   long long disagreeing = 0; // ... whose band sign is not
@@ -22,8 +23,11 @@ struct SignVotes
 };
 
 // Labels every Unvisited node Outside or Inside by the votes of the band nodes around its region
-// (no votes: Outside). Returns false in aborted if the progress callback asked to stop.
-SignVotes signRegions(const GridLattice& lattice, std::uint8_t* state, const Progress& progress, bool& aborted);
+// (no votes: Outside). With cornerIsOutside (the mesh lies inside the grid), the region of node 0 is
+// outside by definition: if its votes say inside, the mesh faces inwards and all signs are flipped.
+// Sets aborted if the progress callback asked to stop.
+SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, std::uint8_t* state,
+  const Progress& progress, bool& aborted);
 
 } // namespace shrinkwrap
 

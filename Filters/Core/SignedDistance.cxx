@@ -145,12 +145,13 @@ SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const Grid
   if (settings.computeSign)
   {
     bool aborted;
-    const SignVotes votes = signRegions(lattice, state.data(), progress.stage(0.8, 0.98), aborted);
+    const SignVotes votes = signRegions(lattice, meshInsideGrid, state.data(), progress.stage(0.8, 0.98), aborted);
     if (aborted)
     {
       return result;
     }
     result.signDisagreements = votes.disagreeing;
+    result.invertedOrientation = votes.inverted;
     result.isSigned = votes.consistent();
   }
   applySigns(lattice, state.data(), result.isSigned, distance);

@@ -30,6 +30,7 @@ struct SignedDistanceResult
 {
   bool completed = false; // false: aborted, the values are incomplete
   bool isSigned = false;  // false: unsigned, because the outside leaked in or sign was not asked for
+  bool invertedOrientation = false; // the triangles face inwards; signs follow the geometry
   long long bandNodes = 0;
   long long boundaryEdges = 0;
   long long nonManifoldEdges = 0;

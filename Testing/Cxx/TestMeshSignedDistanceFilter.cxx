@@ -10,6 +10,7 @@
 #include <vtkCommand.h>
 #include <vtkContourFilter.h>
 #include <vtkPlane.h>
+#include <vtkReverseSense.h>
 #include <vtkSphereSource.h>
 #include <vtkStringArray.h>
 
@@ -158,6 +159,22 @@ int TestMeshSignedDistanceFilter(int, char*[])
   filter->Modified();
   filter->Update();
   SW_CHECK(filter->GetOutput()->GetNumberOfPoints() == 81LL * 81 * 81, "the pipeline runs again after an abort");
+
+  // A mesh whose triangles face inwards: still negative inside, with a warning.
+  vtkNew<vtkReverseSense> reverse;
+  reverse->SetInputData(sphere(32));
+  reverse->ReverseCellsOn();
+  reverse->Update();
+  events.warnings = 0;
+  filter->SetInputData(reverse->GetOutput());
+  filter->SetResolution(40);
+  filter->Update();
+  values = vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetArray("SignedDistance"));
+  SW_CHECK(fieldValue(filter->GetOutput(), "Signed") == 1 && values && values->GetRange()[0] < -0.9,
+    "an inside-out mesh still gives negative distances inside");
+  SW_CHECK(events.warnings > 0, "and a warning about its orientation");
+  testing::checkAccuracy("inside-out sphere",
+    testing::compareWithReference(filter->GetOutput(), testing::triangulated(sphere(32)), true, true), true);
 
   // An open mesh (a sphere with its top cut off): unsigned, flagged, and a warning.
   vtkNew<vtkPlane> plane;

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# ShrinkWrap on a fresh Debian 12 machine, as root: installs what is missing (Debian packages only),
+# configures, builds, then runs one of
+#   demo   the main job on the default data (Data/trefoil.obj): out/trefoil_sdf.vti and .png
+#   test   the whole test suite through ctest, then the C++ tests again under AddressSanitizer
+#   bench  the benchmarks of Testing/Benchmarks (peers: OpenVDB, vtkImplicitPolyDataDistance)
+# Every step is idempotent: a second run only rebuilds what changed.
+set -euo pipefail
+cd "$(dirname "$0")"
+mode="${1:-demo}"
+build="${SHRINKWRAP_BUILD:-$PWD/build}"
+jobs="$(nproc)"
+
+packages=(cmake ninja-build g++ paraview paraview-dev python3-paraview libeigen3-dev
+  qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libhdf5-dev libnetcdf-dev libgdal-dev
+  libboost-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libgl2ps-dev libglew-dev
+  libtheora-dev libtiff-dev libjpeg-dev liblz4-dev liblzma-dev libdouble-conversion-dev libutfcpp-dev
+  libexpat1-dev libfreetype-dev libpng-dev libxml2-dev mpi-default-dev libx11-dev libgl-dev xvfb xauth)
+[ "$mode" = bench ] && packages+=(libopenvdb-dev libboost-iostreams-dev)
+
+install_missing() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    echo "== installing: ${missing[*]}"
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  fi
+}
+
+# CGAL's mesh data set (bunny00, armadillo, knot1, elephant-with-holes, ...) from Debian's libcgal-demo.
+fetch_cgal_meshes() {
+  local dir="$build/cgal"
+  [ -f "$dir/data/meshes/bunny00.off" ] && return
+  echo "== fetching CGAL's meshes (libcgal-demo)"
+  mkdir -p "$dir" && (cd "$dir" && rm -f libcgal-demo_*.deb &&
+    { apt-get download libcgal-demo >/dev/null 2>&1 || { apt-get update -qq && apt-get download libcgal-demo >/dev/null; }; } &&
+    dpkg -x libcgal-demo_*.deb deb &&
+    tar xzf deb/usr/share/doc/libcgal-dev/data.tar.gz data/meshes && rm -rf deb libcgal-demo_*.deb)
+}
+
+configure_and_build() { # folder, extra cmake arguments...
+  local dir="$1"; shift
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHRINKWRAP_CGAL_MESHES="$build/cgal/data/meshes" "$@" >/dev/null
+  cmake --build "$dir" -j "$jobs"
+}
+
+install_missing
+plugin="$build/lib/paraview-5.11/plugins/ShrinkWrap/ShrinkWrap.so"
+case "$mode" in
+  demo)
+    configure_and_build "$build"
+    xvfb-run -a pvbatch Examples/demo.py "$plugin" Data/trefoil.obj out
+    ;;
+  test)
+    fetch_cgal_meshes
+    configure_and_build "$build"
+    (cd "$build" && ctest --output-on-failure -j 2)
+    # The C++ tests once more with AddressSanitizer and UBSan (bad input must not corrupt memory).
+    configure_and_build "$build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHRINKWRAP_SANITIZE=ON
+    (cd "$build-asan" && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1 ctest --output-on-failure)
+    ;;
+  bench)
+    configure_and_build "$build" -DSHRINKWRAP_BENCHMARKS=ON
+    bash Testing/Benchmarks/run.sh "$build"
+    ;;
+  *)
+    echo "usage: bash shrinkwrap.sh demo|test|bench" >&2
+    exit 2
+    ;;
+esac

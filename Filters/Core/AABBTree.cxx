@@ -11,25 +11,37 @@ namespace shrinkwrap
 namespace
 {
 constexpr int kMaxDepth = 64;
+} // namespace
+
+// Buffers of the split search, reused from node to node (a tree has tens of thousands of nodes).
+struct AABBTree::SplitScratch
+{
+  std::vector<double> coords, cuts, rightCost;
+  std::vector<int> histogram, firstCut, binCount;
+  std::vector<Box> binBox;
+};
+
+namespace
+{
 
 // Split candidates along one axis of the centroid range [lo, hi]: uniform samples, then samples
 // at equal steps of the cumulative centroid count, which Hunt et al. [4] show places them where the
 // SAH cost changes most.
-std::vector<double> splitCandidates(
-  const std::vector<double>& coords, double lo, double hi, int uniform, int adaptive)
+void splitCandidates(const std::vector<double>& coords, int count, double lo, double hi, int uniform,
+  int adaptive, std::vector<int>& histogram, std::vector<double>& candidates)
 {
-  std::vector<int> histogram(uniform, 0);
+  histogram.assign(uniform, 0);
   const double width = (hi - lo) / uniform;
-  for (double c : coords)
+  for (int k = 0; k < count; ++k)
   {
-    ++histogram[std::min(uniform - 1, static_cast<int>((c - lo) / width))];
+    ++histogram[std::min(uniform - 1, static_cast<int>((coords[k] - lo) / width))];
   }
-  std::vector<double> candidates;
+  candidates.clear();
   for (int k = 1; k < uniform; ++k)
   {
     candidates.push_back(lo + k * width);
   }
-  const double n = static_cast<double>(coords.size());
+  const double n = static_cast<double>(count);
   int bin = 0;
   double below = 0; // centroids left of bin
   for (int r = 1; r <= adaptive; ++r)
@@ -44,7 +56,6 @@ std::vector<double> splitCandidates(
   }
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  return candidates;
 }
 } // namespace
 
@@ -78,7 +89,7 @@ AABBTree::AABBTree(const TriangleSoup& soup, const AABBTreeSettings& settings)
 }
 
 void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int index, int begin, int end,
-  int depth, const AABBTreeSettings& s, std::vector<Subtree>* deferred)
+  int depth, const AABBTreeSettings& s, SplitScratch& scratch, std::vector<Subtree>* deferred)
 {
   Box box, centroids;
   for (int k = begin; k < end; ++k)
@@ -93,7 +104,7 @@ void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int ind
     return;
   }
   const int mid =
-    count > s.leafSize && depth < kMaxDepth ? this->splitPosition(prims, begin, end, centroids, s) : -1;
+    count > s.leafSize && depth < kMaxDepth ? this->splitPosition(prims, begin, end, centroids, s, scratch) : -1;
   if (mid <= begin || mid >= end)
   {
     nodes[index] = { box, begin, count };
@@ -104,8 +115,8 @@ void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int ind
   const int left = static_cast<int>(nodes.size());
   nodes[index] = { box, left, 0 };
   nodes.resize(nodes.size() + 2);
-  this->build(nodes, prims, left, begin, mid, depth + 1, s, deferred);
-  this->build(nodes, prims, left + 1, mid, end, depth + 1, s, deferred);
+  this->build(nodes, prims, left, begin, mid, depth + 1, s, scratch, deferred);
+  this->build(nodes, prims, left + 1, mid, end, depth + 1, s, scratch, deferred);
 }
 
 void AABBTree::buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings& s)
@@ -113,16 +124,18 @@ void AABBTree::buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings&
   // The top of the tree first, leaving subtrees of at most parallelSubtreeSize triangles for later;
   // then those subtrees side by side, each in a node list of its own, appended at the end.
   std::vector<Subtree> subtrees;
-  this->build(this->Nodes, prims, 0, 0, static_cast<int>(prims.size()), 1, s, &subtrees);
+  SplitScratch scratch;
+  this->build(this->Nodes, prims, 0, 0, static_cast<int>(prims.size()), 1, s, scratch, &subtrees);
   std::vector<std::vector<Node>> parts(subtrees.size());
   std::vector<int> depths(subtrees.size(), 0);
   vtkSMPTools::For(0, static_cast<int>(subtrees.size()), 1, [&](int b, int e) {
     for (int t = b; t < e; ++t)
     {
       AABBTree local;
+      SplitScratch localScratch;
       local.Nodes.assign(1, Node{});
       const Subtree& st = subtrees[t];
-      local.build(local.Nodes, prims, 0, st.begin, st.end, st.depth, s, nullptr);
+      local.build(local.Nodes, prims, 0, st.begin, st.end, st.depth, s, localScratch, nullptr);
       parts[t] = std::move(local.Nodes);
       depths[t] = local.Depth;
     }
@@ -152,13 +165,14 @@ void AABBTree::buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings&
 }
 
 int AABBTree::splitPosition(std::vector<Prim>& prims, int begin, int end, const Box& centroids,
-  const AABBTreeSettings& s) const
+  const AABBTreeSettings& s, SplitScratch& scratch) const
 {
   const int count = end - begin;
   double bestCost = std::numeric_limits<double>::infinity();
   int bestAxis = -1;
   double bestSplit = 0;
-  std::vector<double> coords(count);
+  std::vector<double>& coords = scratch.coords;
+  coords.resize(std::max<std::size_t>(coords.size(), count));
   for (int axis = 0; axis < 3; ++axis)
   {
     const double lo = centroids.min[axis], hi = centroids.max[axis];
@@ -172,18 +186,22 @@ int AABBTree::splitPosition(std::vector<Prim>& prims, int begin, int end, const 
     }
     // Small nodes gain little from the adaptive samples; they take the uniform ones only.
     const int adaptive = count > 16 * s.uniformSamples ? s.adaptiveSamples : 0;
-    const std::vector<double> cuts = splitCandidates(coords, lo, hi, s.uniformSamples, adaptive);
+    std::vector<double>& cuts = scratch.cuts;
+    splitCandidates(coords, count, lo, hi, s.uniformSamples, adaptive, scratch.histogram, cuts);
     // Fine bins between consecutive cuts; counts and boxes per bin give the exact SAH at each cut.
     // A centroid's uniform bin is found by division; the few adaptive cuts inside it by a short scan.
     const int bins = static_cast<int>(cuts.size()) + 1;
     const double width = (hi - lo) / s.uniformSamples;
-    std::vector<int> firstCut(s.uniformSamples);
+    std::vector<int>& firstCut = scratch.firstCut;
+    firstCut.resize(s.uniformSamples);
     for (int u = 0; u < s.uniformSamples; ++u)
     {
       firstCut[u] = static_cast<int>(std::lower_bound(cuts.begin(), cuts.end(), lo + u * width) - cuts.begin());
     }
-    std::vector<int> binCount(bins, 0);
-    std::vector<Box> binBox(bins);
+    std::vector<int>& binCount = scratch.binCount;
+    std::vector<Box>& binBox = scratch.binBox;
+    binCount.assign(bins, 0);
+    binBox.assign(bins, Box());
     for (int k = 0; k < count; ++k)
     {
       const int u = std::min(s.uniformSamples - 1, static_cast<int>((coords[k] - lo) / width));
@@ -195,7 +213,8 @@ int AABBTree::splitPosition(std::vector<Prim>& prims, int begin, int end, const 
       ++binCount[b];
       binBox[b].extend(prims[begin + k].box);
     }
-    std::vector<double> rightCost(bins, 0);
+    std::vector<double>& rightCost = scratch.rightCost;
+    rightCost.assign(bins, 0);
     Box right;
     int nRight = 0;
     for (int b = bins - 1; b > 0; --b)

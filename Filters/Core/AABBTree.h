@@ -65,12 +65,13 @@ private:
   {
     int index, begin, end, depth;
   };
+  struct SplitScratch;
   AABBTree() = default;
   void buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings& s);
   void build(std::vector<Node>& nodes, std::vector<Prim>& prims, int index, int begin, int end, int depth,
-    const AABBTreeSettings& s, std::vector<Subtree>* deferred);
+    const AABBTreeSettings& s, SplitScratch& scratch, std::vector<Subtree>* deferred);
   int splitPosition(std::vector<Prim>& prims, int begin, int end, const Box& centroids,
-    const AABBTreeSettings& s) const;
+    const AABBTreeSettings& s, SplitScratch& scratch) const;
 
   std::vector<Node> Nodes;
   std::vector<int> Order;                    // soup triangle index per leaf slot

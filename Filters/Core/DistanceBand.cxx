@@ -176,8 +176,8 @@ std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vecto
 }
 
 bool computeBand(const AABBTree& tree, const PseudoNormals& normals, const GridLattice& lattice,
-  std::vector<std::int64_t> nodes, double onSurface, const Progress& progress, DistanceBand& band,
-  std::uint8_t* state)
+  std::vector<std::int64_t> nodes, double searchRadius, double onSurface, const Progress& progress,
+  DistanceBand& band, std::uint8_t* state)
 {
   const std::size_t n = nodes.size();
   band.nodes = std::move(nodes);
@@ -191,7 +191,11 @@ bool computeBand(const AABBTree& tree, const PseudoNormals& normals, const GridL
       const std::int64_t node = band.nodes[k];
       const Vec3 x = lattice.position(
         static_cast<int>(node % sy), static_cast<int>((node / sy) % lattice.dims[1]), static_cast<int>(node / sz));
-      const ClosestHit hit = tree.closestPoint(x);
+      ClosestHit hit = tree.closestPoint(x, searchRadius * searchRadius);
+      if (hit.triangle < 0)
+      {
+        hit = tree.closestPoint(x); // a grid-boundary node of a grid that cuts the mesh
+      }
       band.closest[k] = hit.point;
       band.distance[k] = static_cast<float>(std::sqrt(hit.squaredDistance));
       const double side = (x - hit.point).dot(normals.at(hit.triangle, hit.feature));

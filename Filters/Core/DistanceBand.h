@@ -51,9 +51,11 @@ std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vecto
 
 // Exact distances, closest points and signs at the band nodes; the signs go into state too (band
 // nodes within `onSurface` of the surface stay BandOnSurface). Returns false if aborted.
+// searchRadius bounds the distance of band nodes near the surface (a node farther off is searched
+// again without bound).
 bool computeBand(const AABBTree& tree, const PseudoNormals& normals, const GridLattice& lattice,
-  std::vector<std::int64_t> nodes, double onSurface, const Progress& progress, DistanceBand& band,
-  std::uint8_t* state);
+  std::vector<std::int64_t> nodes, double searchRadius, double onSurface, const Progress& progress,
+  DistanceBand& band, std::uint8_t* state);
 
 } // namespace shrinkwrap
 

@@ -37,8 +37,9 @@ struct Envelope
 
   // Every node of the line takes the site nearest to it among the sites its nodes hold
   // (Felzenszwalb & Huttenlocher 2012, with sites off the line: parabolas (t - vertex)^2 + offset).
+  // With `distance` (the last pass), each node's distance to its site is written there too.
   template <typename OffsetOf>
-  void apply(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf)
+  void apply(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, float* distance)
   {
     this->candidates.clear();
     for (int t = 0; t < line.length; ++t)
@@ -51,6 +52,10 @@ struct Envelope
     }
     if (this->candidates.empty())
     {
+      for (int t = 0; distance && t < line.length; ++t)
+      {
+        distance[t * line.stride] = std::numeric_limits<float>::infinity(); // no surface on the grid
+      }
       return;
     }
     // Sites lie within a few cells of their nodes, so the list is nearly sorted: insertion sort.
@@ -109,14 +114,21 @@ struct Envelope
       {
         ++k;
       }
-      line.site[t * line.stride] = c[this->hull[k]].site;
+      const Parabola& best = c[this->hull[k]];
+      line.site[t * line.stride] = best.site;
+      if (distance)
+      {
+        distance[t * line.stride] =
+          static_cast<float>(std::sqrt((x - best.vertex) * (x - best.vertex) + best.offset));
+      }
     }
   }
 };
 
 // The pass along `axis`: every line parallel to it, in parallel. Lines are taken in index order
 // (x fastest among the others), so neighbouring lines reuse the same cache lines.
-void envelopePass(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* site, int axis)
+void envelopePass(
+  const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* site, int axis, float* distance)
 {
   const auto& d = lattice.dims;
   const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2; // the two other axes, u varying fastest
@@ -130,11 +142,12 @@ void envelopePass(const GridLattice& lattice, const std::vector<Vec3>& sites, st
       for (int lu = 0; lu < d[u]; ++lu)
       {
         const double cu = lattice.origin[u] + lu * lattice.spacing[u];
-        const Line line{ site + lu * strides[u] + lw * strides[w], strides[axis], d[axis], lattice.origin[axis],
-          lattice.spacing[axis] };
-        envelope.apply(line, axis, sites, [&](const Vec3& s) {
-          return (s[u] - cu) * (s[u] - cu) + (s[w] - cw) * (s[w] - cw);
-        });
+        const std::int64_t first = lu * strides[u] + lw * strides[w];
+        const Line line{ site + first, strides[axis], d[axis], lattice.origin[axis], lattice.spacing[axis] };
+        envelope.apply(
+          line, axis, sites,
+          [&](const Vec3& s) { return (s[u] - cu) * (s[u] - cu) + (s[w] - cw) * (s[w] - cw); },
+          distance ? distance + first : nullptr);
       }
     }
   });
@@ -176,11 +189,11 @@ float eikonalUpdate(std::array<double, 3> a, std::array<double, 3> h)
 } // namespace
 
 bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* siteOfNode,
-  const Progress& progress)
+  float* distance, const Progress& progress)
 {
   for (int axis = 0; axis < 3; ++axis)
   {
-    envelopePass(lattice, sites, siteOfNode, axis);
+    envelopePass(lattice, sites, siteOfNode, axis, axis == 2 ? distance : nullptr);
     if (!progress.report((axis + 1) / 3.0))
     {
       return false;

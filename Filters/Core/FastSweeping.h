@@ -21,9 +21,9 @@ namespace shrinkwrap
 {
 
 // siteOfNode: index into sites for each node, -1 where none yet; on return every node has the
-// nearest site found (if there is any site at all).
+// nearest site found (if there is any site at all), and distance its distance to it.
 bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* siteOfNode,
-  const Progress& progress);
+  float* distance, const Progress& progress);
 
 // distance: the band values where frozen[n] is nonzero, anything elsewhere; unsigned distances out.
 bool sweepEikonal(const GridLattice& lattice, const std::uint8_t* frozen, float* distance, int iterations,

@@ -10,6 +10,8 @@
 
 #include "DistanceBand.h"
 
+#include <array>
+
 namespace shrinkwrap
 {
 
@@ -25,9 +27,10 @@ struct SignVotes
 // Labels every Unvisited node Outside or Inside by the votes of the band nodes around its region
 // (no votes: Outside). With cornerIsOutside (the mesh lies inside the grid), the region of node 0 is
 // outside by definition: if its votes say inside, the mesh faces inwards and all signs are flipped.
-// Sets aborted if the progress callback asked to stop.
-SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, std::uint8_t* state,
-  const Progress& progress, bool& aborted);
+// bandExtent (imin, imax, jmin, jmax, kmin, kmax of the band nodes) lets the nodes well away from the
+// band be labelled without a flood. Sets aborted if the progress callback asked to stop.
+SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const std::array<int, 6>& bandExtent,
+  std::uint8_t* state, const Progress& progress, bool& aborted);
 
 } // namespace shrinkwrap
 

@@ -30,23 +30,7 @@ bool closestPointFarField(const GridLattice& lattice, const DistanceBand& band, 
   {
     site[band.nodes[k]] = static_cast<std::int32_t>(k);
   }
-  if (!sweepClosestPoints(lattice, band.closest, site.data(), progress))
-  {
-    return false;
-  }
-  const auto& d = lattice.dims;
-  vtkSMPTools::For(0, static_cast<long long>(d[1]) * d[2], [&](long long b, long long e) {
-    for (long long row = b; row < e; ++row)
-    {
-      const int j = static_cast<int>(row % d[1]), k = static_cast<int>(row / d[1]);
-      const std::int64_t base = lattice.index(0, j, k);
-      for (int i = 0; i < d[0]; ++i)
-      {
-        distance[base + i] = static_cast<float>((lattice.position(i, j, k) - band.closest[site[base + i]]).norm());
-      }
-    }
-  });
-  return true;
+  return sweepClosestPoints(lattice, band.closest, site.data(), distance, progress);
 }
 
 bool eikonalFarField(
@@ -59,6 +43,23 @@ bool eikonalFarField(
     distance[band.nodes[k]] = band.distance[k];
   }
   return sweepEikonal(lattice, frozen.data(), distance, rounds, progress);
+}
+
+// imin, imax, jmin, jmax, kmin, kmax of the given nodes.
+std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std::int64_t>& nodes)
+{
+  const std::int64_t sy = lattice.dims[0], sz = sy * lattice.dims[1];
+  std::array<int, 6> e = { lattice.dims[0], -1, lattice.dims[1], -1, lattice.dims[2], -1 };
+  for (std::int64_t n : nodes)
+  {
+    const int c[3] = { static_cast<int>(n % sy), static_cast<int>((n / sy) % lattice.dims[1]), static_cast<int>(n / sz) };
+    for (int a = 0; a < 3; ++a)
+    {
+      e[2 * a] = std::min(e[2 * a], c[a]);
+      e[2 * a + 1] = std::max(e[2 * a + 1], c[a]);
+    }
+  }
+  return e;
 }
 
 // Negates the inside (band and off-band) of an unsigned field.
@@ -120,7 +121,9 @@ SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const Grid
     (soup.bounds().max.array() < grid.max.array()).all();
   std::vector<std::int64_t> nodes =
     bandNodes(lattice, cells, settings.bandLayers, !meshInsideGrid, state.data());
-  if (!computeBand(tree, normals, lattice, std::move(nodes), 1e-6 * lattice.minSpacing(),
+  // A node of a touched cell is within a cell diagonal of the surface; each extra layer adds a cell.
+  const double searchRadius = 1.001 * (1 + settings.bandLayers) * lattice.spacing.norm();
+  if (!computeBand(tree, normals, lattice, std::move(nodes), searchRadius, 1e-6 * lattice.minSpacing(),
         progress.stage(0.2, 0.45), band, state.data()))
   {
     return result;
@@ -145,7 +148,8 @@ SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const Grid
   if (settings.computeSign)
   {
     bool aborted;
-    const SignVotes votes = signRegions(lattice, meshInsideGrid, state.data(), progress.stage(0.8, 0.98), aborted);
+    const SignVotes votes =
+      signRegions(lattice, meshInsideGrid, nodeExtent(lattice, band.nodes), state.data(), progress.stage(0.8, 0.98), aborted);
     if (aborted)
     {
       return result;

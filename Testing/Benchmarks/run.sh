@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Benchmarks of Mesh Signed Distance beside its peers, printed as Markdown for RESULTS.md.
+#   bash Testing/Benchmarks/run.sh <build folder>      (bash shrinkwrap.sh bench does the build first)
+# Mesh: the paper's bunny (../shared/data/bunny_paper.obj, Table 1), else CGAL's bunny00.
+set -euo pipefail
+build="${1:-build}"
+here="$(cd "$(dirname "$0")" && pwd)"
+mesh="$here/../../../shared/data/bunny_paper.obj"
+[ -f "$mesh" ] || mesh="$build/cgal/data/meshes/bunny00.off"
+bench="$build/bin/BenchSignedDistance"
+
+echo "## Mesh Signed Distance, $(date -u +%Y-%m-%d)"
+echo
+echo "Machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores, $(free -g | awk '/Mem:/ {print $2}') GiB;"
+echo "ParaView $(dpkg-query -W -f='${Version}' paraview-dev), OpenVDB $(dpkg-query -W -f='${Version}' libopenvdb-dev)."
+echo "Command: \`bash shrinkwrap.sh bench\` (= \`$bench $(basename "$mesh") --runs 5\`)."
+echo "Times in seconds, median of 5 runs; ratios from the same run. Errors against exact distances"
+echo "(AABB tree at every node), in cells h."
+echo
+"$bench" "$mesh" --runs 5 2>/dev/null | grep -v "^COMPONENT"
+echo
+echo "Peak memory (fresh process):"
+echo
+for r in 240; do echo "- $("$bench" "$mesh" --memory $r 2>/dev/null | grep memory)"; done

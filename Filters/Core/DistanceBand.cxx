@@ -147,30 +147,19 @@ std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vecto
     for (std::size_t k = 0; k < end; ++k)
     {
       const std::int64_t n = nodes[k];
-      const int i = static_cast<int>(n % sy), j = static_cast<int>((n / sy) % lattice.dims[1]),
-                kk = static_cast<int>(n / sz);
-      if (i > 0) add(n - sx);
-      if (i + 1 < lattice.dims[0]) add(n + sx);
-      if (j > 0) add(n - sy);
-      if (j + 1 < lattice.dims[1]) add(n + sy);
-      if (kk > 0) add(n - sz);
-      if (kk + 1 < lattice.dims[2]) add(n + sz);
+      const auto c = lattice.coordinates(n);
+      if (c[0] > 0) add(n - sx);
+      if (c[0] + 1 < lattice.dims[0]) add(n + sx);
+      if (c[1] > 0) add(n - sy);
+      if (c[1] + 1 < lattice.dims[1]) add(n + sy);
+      if (c[2] > 0) add(n - sz);
+      if (c[2] + 1 < lattice.dims[2]) add(n + sz);
     }
   }
   if (withGridBoundary)
   {
     const auto& d = lattice.dims;
-    for (int k = 0; k < d[2]; ++k)
-    {
-      for (int j = 0; j < d[1]; ++j)
-      {
-        const bool face = k == 0 || k == d[2] - 1 || j == 0 || j == d[1] - 1;
-        for (int i = 0; i < d[0]; i += (face || i == d[0] - 1) ? 1 : d[0] - 1)
-        {
-          add(lattice.index(i, j, k));
-        }
-      }
-    }
+    forEachFaceNode(lattice, { 0, d[0] - 1, 0, d[1] - 1, 0, d[2] - 1 }, add);
   }
   return nodes;
 }
@@ -184,13 +173,11 @@ bool computeBand(const AABBTree& tree, const PseudoNormals& normals, const GridL
   band.closest.resize(n);
   band.distance.resize(n);
   band.sign.resize(n);
-  const std::int64_t sy = lattice.dims[0], sz = sy * lattice.dims[1];
   return forChunks(static_cast<long long>(n), 16, progress, [&](long long b, long long e) {
     for (long long k = b; k < e; ++k)
     {
       const std::int64_t node = band.nodes[k];
-      const Vec3 x = lattice.position(
-        static_cast<int>(node % sy), static_cast<int>((node / sy) % lattice.dims[1]), static_cast<int>(node / sz));
+      const Vec3 x = lattice.position(lattice.coordinates(node));
       ClosestHit hit = tree.closestPoint(x, searchRadius * searchRadius);
       if (hit.triangle < 0)
       {

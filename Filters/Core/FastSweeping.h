@@ -25,7 +25,8 @@ namespace shrinkwrap
 bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* siteOfNode,
   float* distance, const Progress& progress);
 
-// distance: the band values where frozen[n] is nonzero, anything elsewhere; unsigned distances out.
+// distance: the band values where frozen[n] is nonzero (band nodes), anything elsewhere; unsigned
+// distances out.
 bool sweepEikonal(const GridLattice& lattice, const std::uint8_t* frozen, float* distance, int iterations,
   const Progress& progress);
 

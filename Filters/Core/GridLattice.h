@@ -5,6 +5,7 @@
 
 #include "Box.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -26,6 +27,14 @@ struct GridLattice
   {
     return i + static_cast<std::int64_t>(this->dims[0]) * (j + static_cast<std::int64_t>(this->dims[1]) * k);
   }
+  // (i, j, k) of node index n.
+  std::array<int, 3> coordinates(std::int64_t n) const
+  {
+    const std::int64_t row = n / this->dims[0];
+    return { static_cast<int>(n - row * this->dims[0]), static_cast<int>(row % this->dims[1]),
+      static_cast<int>(row / this->dims[1]) };
+  }
+  Vec3 position(const std::array<int, 3>& c) const { return this->position(c[0], c[1], c[2]); }
   Vec3 position(int i, int j, int k) const
   {
     return this->origin + Vec3(i, j, k).cwiseProduct(this->spacing);
@@ -39,6 +48,25 @@ struct GridLattice
   }
   double minSpacing() const { return this->spacing.minCoeff(); }
 };
+
+// Calls f(node index) once for every node on the faces of the box of node indices
+// box = (imin, imax, jmin, jmax, kmin, kmax), inclusive.
+template <typename F>
+void forEachFaceNode(const GridLattice& lattice, const std::array<int, 6>& box, F&& f)
+{
+  for (int k = box[4]; k <= box[5]; ++k)
+  {
+    for (int j = box[2]; j <= box[3]; ++j)
+    {
+      const bool face = k == box[4] || k == box[5] || j == box[2] || j == box[3];
+      const int step = face ? 1 : std::max(1, box[1] - box[0]); // inside rows: both ends only
+      for (int i = box[0]; i <= box[1]; i += step)
+      {
+        f(lattice.index(i, j, k));
+      }
+    }
+  }
+}
 
 // How the grid is placed around a mesh (paper Section 4.1 and Algorithm 1, lines 3-4).
 struct GridPlacement

@@ -111,17 +111,7 @@ std::vector<std::int64_t> labelShell(
     }
   });
   std::vector<std::int64_t> seeds;
-  for (int k = inner[4]; k <= inner[5]; ++k)
-  {
-    for (int j = inner[2]; j <= inner[3]; ++j)
-    {
-      const bool face = k == inner[4] || k == inner[5] || j == inner[2] || j == inner[3];
-      for (int i = inner[0]; i <= inner[1]; i += (face || i == inner[1]) ? 1 : std::max(1, inner[1] - inner[0]))
-      {
-        seeds.push_back(lattice.index(i, j, k));
-      }
-    }
-  }
+  forEachFaceNode(lattice, inner, [&](std::int64_t n) { seeds.push_back(n); });
   return seeds;
 }
 } // namespace

@@ -33,26 +33,24 @@ bool closestPointFarField(const GridLattice& lattice, const DistanceBand& band, 
   return sweepClosestPoints(lattice, band.closest, site.data(), distance, progress);
 }
 
-bool eikonalFarField(
-  const GridLattice& lattice, const DistanceBand& band, int rounds, float* distance, const Progress& progress)
+// Far field by the paper's Eikonal sweeps from the band, whose nodes are the nonzero states so far.
+bool eikonalFarField(const GridLattice& lattice, const DistanceBand& band, const std::uint8_t* state, int rounds,
+  float* distance, const Progress& progress)
 {
-  std::vector<std::uint8_t> frozen(lattice.nodeCount(), 0);
   for (std::size_t k = 0; k < band.nodes.size(); ++k)
   {
-    frozen[band.nodes[k]] = 1;
     distance[band.nodes[k]] = band.distance[k];
   }
-  return sweepEikonal(lattice, frozen.data(), distance, rounds, progress);
+  return sweepEikonal(lattice, state, distance, rounds, progress);
 }
 
 // imin, imax, jmin, jmax, kmin, kmax of the given nodes.
 std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std::int64_t>& nodes)
 {
-  const std::int64_t sy = lattice.dims[0], sz = sy * lattice.dims[1];
   std::array<int, 6> e = { lattice.dims[0], -1, lattice.dims[1], -1, lattice.dims[2], -1 };
   for (std::int64_t n : nodes)
   {
-    const int c[3] = { static_cast<int>(n % sy), static_cast<int>((n / sy) % lattice.dims[1]), static_cast<int>(n / sz) };
+    const auto c = lattice.coordinates(n);
     for (int a = 0; a < 3; ++a)
     {
       e[2 * a] = std::min(e[2 * a], c[a]);
@@ -83,8 +81,8 @@ void applySigns(const GridLattice& lattice, const std::uint8_t* state, bool isSi
 
 int workingBytesPerNode(const SignedDistanceSettings& settings)
 {
-  // Node state always; site index (closest point) or frozen flag (Eikonal).
-  return 1 + (settings.sweep == SweepMethod::ClosestPoint ? 4 : 1);
+  // Node state always; the site index of the closest-point passes.
+  return 1 + (settings.sweep == SweepMethod::ClosestPoint ? 4 : 0);
 }
 
 SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const GridLattice& lattice,
@@ -136,7 +134,7 @@ SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const Grid
   const Progress sweepProgress = progress.stage(0.45, 0.8);
   const bool swept = settings.sweep == SweepMethod::ClosestPoint
     ? closestPointFarField(lattice, band, distance, sweepProgress)
-    : eikonalFarField(lattice, band, settings.eikonalIterations, distance, sweepProgress);
+    : eikonalFarField(lattice, band, state.data(), settings.eikonalIterations, distance, sweepProgress);
   if (!swept)
   {
     return result;

@@ -13,11 +13,15 @@ echo "## Mesh Signed Distance, $(date -u +%Y-%m-%d)"
 echo
 echo "Machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores, $(free -g | awk '/Mem:/ {print $2}') GiB;"
 echo "ParaView $(dpkg-query -W -f='${Version}' paraview-dev), OpenVDB $(dpkg-query -W -f='${Version}' libopenvdb-dev)."
-echo "Command: \`bash shrinkwrap.sh bench\` (= \`$bench $(basename "$mesh") --runs 5\`)."
+echo "Command: \`bash shrinkwrap.sh bench\` (runs \`Testing/Benchmarks/run.sh\`)."
 echo "Times in seconds, median of 5 runs; ratios from the same run. Errors against exact distances"
 echo "(AABB tree at every node), in cells h."
 echo
-"$bench" "$mesh" --runs 5 2>/dev/null | grep -v "^COMPONENT"
+"$bench" "$mesh" --runs 5 --resolutions 30,45,90,120,180,240 2>/dev/null | grep -v "^COMPONENT"
+echo
+echo "The same on CGAL's bunny00 (closed, so the field is signed), without the VTK peer:"
+echo
+"$bench" "$build/cgal/data/meshes/bunny00.off" --runs 5 --no-vtk 2>/dev/null | grep "^|"
 echo
 echo "Peak memory (fresh process):"
 echo

@@ -65,6 +65,7 @@ case "$mode" in
       ctest --output-on-failure -R "BadInput|Filter")
     ;;
   bench)
+    fetch_cgal_meshes
     configure_and_build "$build" -DSHRINKWRAP_BENCHMARKS=ON
     bash Testing/Benchmarks/run.sh "$build"
     ;;

@@ -8,6 +8,7 @@
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
 #include <vtkSphereSource.h>
+#include <vtkStripper.h>
 
 namespace
 {
@@ -72,6 +73,15 @@ vtkSmartPointer<vtkPolyData> cube()
   return source->GetOutput();
 }
 
+// The sphere as triangle strips only.
+vtkSmartPointer<vtkPolyData> strips()
+{
+  vtkNew<vtkStripper> stripper;
+  stripper->SetInputData(sphere(0, 1));
+  stripper->Update();
+  return stripper->GetOutput();
+}
+
 vtkSmartPointer<vtkPolyData> twoComponents()
 {
   vtkNew<vtkAppendPolyData> append;
@@ -115,6 +125,9 @@ int TestSignedDistanceAccuracy(int, char*[])
   check("cube (quads)", cube(), 48, vtkMeshSignedDistance::CLOSEST_POINT);
   check("torus (seams)", torus(), 48, vtkMeshSignedDistance::CLOSEST_POINT);
   check("two components", twoComponents(), 48, vtkMeshSignedDistance::CLOSEST_POINT);
+  vtkSmartPointer<vtkPolyData> stripped = strips();
+  SW_CHECK(stripped->GetNumberOfStrips() > 0 && stripped->GetNumberOfPolys() == 0, "the stripped sphere has strips only");
+  check("sphere as triangle strips", stripped, 48, vtkMeshSignedDistance::CLOSEST_POINT);
   check("hexagonal prism (n-gons)", hexagonalPrism(), 48, vtkMeshSignedDistance::CLOSEST_POINT);
   check("torus", torus(), 40, vtkMeshSignedDistance::EIKONAL);
   return testing::finish("TestSignedDistanceAccuracy");

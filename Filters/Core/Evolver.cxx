@@ -1,0 +1,315 @@
+#include "Evolver.h"
+
+#include "TangentialRedistribution.h"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+#include <vtkSMPTools.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace shrinkwrap
+{
+
+// The system matrix keeps its sparsity pattern for the whole evolution; only values change.
+struct Evolver::Solver
+{
+  using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  Matrix matrix;
+  std::vector<int> diagonal; // value index of (i, i)
+  std::vector<int> offDiagonal; // value index of (i, ring(p)), per one-ring entry p
+  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper> cg;
+  Eigen::BiCGSTAB<Matrix> bicgstab;
+
+  explicit Solver(const SurfaceMesh& mesh)
+  {
+    const int nv = mesh.vertexCount();
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < nv; ++i)
+    {
+      entries.emplace_back(i, i, 1.0);
+      for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
+      {
+        entries.emplace_back(i, mesh.ring(p), 1.0);
+      }
+    }
+    this->matrix.resize(nv, nv);
+    this->matrix.setFromTriplets(entries.begin(), entries.end());
+    this->matrix.makeCompressed();
+    this->diagonal.resize(nv);
+    this->offDiagonal.resize(mesh.ringEnd(nv - 1));
+    const int* outer = this->matrix.outerIndexPtr();
+    const int* inner = this->matrix.innerIndexPtr();
+    auto find = [&](int row, int column) {
+      return static_cast<int>(std::lower_bound(inner + outer[row], inner + outer[row + 1], column) - inner);
+    };
+    for (int i = 0; i < nv; ++i)
+    {
+      this->diagonal[i] = find(i, i);
+      for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
+      {
+        this->offDiagonal[p] = find(i, mesh.ring(p));
+      }
+    }
+  }
+};
+
+Evolver::Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const DistanceGrid* field,
+  const Box& domain, double scale, const Vec3& center)
+  : Mesh(mesh)
+  , Settings(settings)
+  , Field(field && !field->empty() ? field : nullptr)
+  , Scale(scale)
+  , Center(center)
+{
+  std::ostringstream why;
+  if (!(settings.timeStep > 0) || !std::isfinite(settings.timeStep))
+    why << "the time step must be positive";
+  else if (!(scale > 0) || !std::isfinite(scale))
+    why << "the scale must be positive";
+  else if (settings.C1 < 0 || settings.C2 < 0 || settings.C < 0 || settings.D < 0)
+    why << "C1, C2, C and D must not be negative";
+  else if (settings.omegaAngle < 0 || settings.omegaVolume < 0 || settings.rhoA < 0)
+    why << "the redistribution weights must not be negative";
+  else if (mesh.vertexCount() < 4)
+    why << "the surface is empty";
+  this->Error = why.str();
+  if (!this->Error.empty())
+  {
+    return;
+  }
+  if (!domain.empty())
+  {
+    this->Domain.min = scale * (domain.min - center);
+    this->Domain.max = scale * (domain.max - center);
+  }
+  this->Y.reserve(mesh.vertexCount());
+  for (const Vec3& x : mesh.initialPoints())
+  {
+    this->Y.push_back(scale * (x - center));
+  }
+  this->VT.assign(mesh.vertexCount(), Vec3::Zero());
+  this->Linear = std::make_unique<Solver>(mesh);
+}
+
+Evolver::~Evolver() = default;
+
+void Evolver::sampleField(std::vector<double>& d, std::vector<Vec3>& grad) const
+{
+  const int nv = this->Mesh.vertexCount();
+  d.assign(nv, 0.0);
+  grad.assign(nv, Vec3::Zero());
+  if (!this->Field)
+  {
+    return;
+  }
+  vtkSMPTools::For(0, nv, [&](int b, int e) {
+    for (int i = b; i < e; ++i)
+    {
+      const DistanceSample s = this->Field->sample(this->Center + this->Y[i] / this->Scale);
+      d[i] = this->Scale * s.value; // distances scale with the geometry; gradients do not
+      grad[i] = s.gradient;
+    }
+  });
+}
+
+StepReport Evolver::check(const std::vector<Vec3>& y) const
+{
+  StepReport report;
+  report.step = this->Steps + 1;
+  std::ostringstream message;
+  for (int i = 0; i < static_cast<int>(y.size()); ++i)
+  {
+    if (!y[i].allFinite())
+    {
+      message << "vertex " << i << " became NaN at step " << report.step;
+      report.failure = Failure::NotANumber;
+      report.where = i;
+      report.message = message.str();
+      return report;
+    }
+    if (!this->Domain.empty() && (this->Domain.squaredDistance(y[i]) > 0))
+    {
+      message << "vertex " << i << " left the domain at step " << report.step;
+      report.failure = Failure::LeftDomain;
+      report.where = i;
+      report.message = message.str();
+      return report;
+    }
+  }
+  const auto& tris = this->Mesh.triangles();
+  for (int t = 0; t < this->Mesh.triangleCount(); ++t)
+  {
+    const auto& v = tris[t];
+    const auto a = triangleAngles(y[v[0]], y[v[1]], y[v[2]]);
+    const double smallest = std::min({ a[0], a[1], a[2] });
+    if (!(smallest >= this->Settings.minAngle))
+    {
+      message << "triangle " << t << " degenerated (smallest angle " << smallest << " rad) at step " << report.step;
+      report.failure = Failure::DegenerateTriangle;
+      report.where = t;
+      report.message = message.str();
+      return report;
+    }
+  }
+  return report;
+}
+
+StepReport Evolver::step()
+{
+  const int nv = this->Mesh.vertexCount();
+  const EvolverSettings& s = this->Settings;
+  const double tau = s.timeStep;
+  SurfaceGeometry g;
+  computeGeometry(this->Mesh, this->Y, g);
+  std::vector<double> d;
+  std::vector<Vec3> grad;
+  this->sampleField(d, grad);
+
+  // Control functions, eqs. (3) and (4).
+  std::vector<double> eps(nv), eta(nv);
+  for (int i = 0; i < nv; ++i)
+  {
+    eps[i] = s.C2 > 0 ? s.C1 * (1.0 - std::exp(-d[i] * d[i] / s.C2)) : s.C1;
+    const double alignment = grad[i].dot(g.normal[i]);
+    eta[i] = s.C * d[i] * (-alignment - s.D * std::sqrt(std::max(0.0, 1.0 - alignment * alignment)));
+  }
+
+  // Tangential velocity (Section 2.3).
+  std::vector<Vec3> vt(nv, Vec3::Zero());
+  StepReport report;
+  report.step = this->Steps + 1;
+  if (s.redistribution == Redistribution::Angle)
+  {
+    std::vector<double> weights(nv, s.omegaAngle);
+    if (this->Field)
+    {
+      for (int i = 0; i < nv; ++i)
+      {
+        weights[i] *= s.rhoA * (1.0 - std::exp(-d[i] * d[i])); // rho(d), eq. (10)
+      }
+    }
+    angleVelocities(this->Mesh, this->Y, g, weights, vt);
+  }
+  else if (s.redistribution == Redistribution::Volume)
+  {
+    std::vector<Vec3> normalVelocity(nv);
+    for (int i = 0; i < nv; ++i)
+    {
+      normalVelocity[i] = eps[i] * g.curvature[i] + eta[i] * g.normal[i];
+    }
+    const VolumeRedistribution settings{ s.omegaVolume, s.volumePerArea, s.solverTolerance };
+    if (!volumeVelocities(this->Mesh, this->Y, g, normalVelocity, settings, this->Potential, vt))
+    {
+      report.failure = Failure::SolverFailed;
+      report.message = "the redistribution potential did not converge at step " + std::to_string(report.step);
+      return report;
+    }
+  }
+
+  // Assemble: the symmetric form multiplies row i by |V_i| / eps_i.
+  Solver& L = *this->Linear;
+  double* values = L.matrix.valuePtr();
+  Eigen::MatrixXd rhs(nv, 3), guess(nv, 3);
+  const bool symmetric = s.solver == LinearSolver::ConjugateGradient;
+  for (int i = 0; i < nv; ++i)
+  {
+    const double e = std::max(eps[i], 1e-14);
+    const double rowScale = symmetric ? 1.0 : e / g.coVolume[i]; // multiplies tau w_ij
+    const double identity = symmetric ? g.coVolume[i] / e : 1.0;
+    double sum = 0;
+    for (int p = this->Mesh.ringBegin(i); p < this->Mesh.ringEnd(i); ++p)
+    {
+      values[L.offDiagonal[p]] = -tau * rowScale * g.weight[p];
+      sum += g.weight[p];
+    }
+    values[L.diagonal[i]] = identity + tau * rowScale * sum;
+    const Vec3 b = identity * (this->Y[i] + tau * eta[i] * g.normal[i] + tau * vt[i]);
+    rhs.row(i) = b.transpose();
+    guess.row(i) = this->Y[i].transpose();
+  }
+  Eigen::MatrixXd solution(nv, 3);
+  bool converged = true;
+  if (symmetric)
+  {
+    L.cg.setTolerance(s.solverTolerance);
+    L.cg.compute(L.matrix);
+    for (int c = 0; c < 3; ++c)
+    {
+      solution.col(c) = L.cg.solveWithGuess(rhs.col(c), guess.col(c));
+      converged = converged && L.cg.info() == Eigen::Success;
+    }
+  }
+  else
+  {
+    L.bicgstab.setTolerance(s.solverTolerance);
+    L.bicgstab.compute(L.matrix);
+    for (int c = 0; c < 3; ++c)
+    {
+      solution.col(c) = L.bicgstab.solveWithGuess(rhs.col(c), guess.col(c));
+      converged = converged && L.bicgstab.info() == Eigen::Success;
+    }
+  }
+  std::vector<Vec3> next(nv);
+  for (int i = 0; i < nv; ++i)
+  {
+    next[i] = solution.row(i).transpose();
+  }
+  report = this->check(next);
+  if (report.ok() && !converged)
+  {
+    report.failure = Failure::SolverFailed;
+    report.message = "the linear solver did not converge at step " + std::to_string(report.step);
+  }
+  if (!report.ok())
+  {
+    return report;
+  }
+  this->Y.swap(next);
+  this->VT.swap(vt);
+  ++this->Steps;
+  return report;
+}
+
+std::vector<Vec3> Evolver::positions() const
+{
+  std::vector<Vec3> x;
+  x.reserve(this->Y.size());
+  for (const Vec3& y : this->Y)
+  {
+    x.push_back(this->Center + y / this->Scale);
+  }
+  return x;
+}
+
+SurfaceGeometry Evolver::geometry() const
+{
+  SurfaceGeometry g;
+  computeGeometry(this->Mesh, this->positions(), g);
+  return g;
+}
+
+std::vector<Vec3> Evolver::tangentialVelocity() const
+{
+  // y = phi x and t_scaled = phi^2 t, so dx/dt = phi dy/dt_scaled.
+  std::vector<Vec3> v;
+  v.reserve(this->VT.size());
+  for (const Vec3& u : this->VT)
+  {
+    v.push_back(this->Scale * u);
+  }
+  return v;
+}
+
+double enclosedVolume(const SurfaceMesh& mesh, const std::vector<Vec3>& x)
+{
+  double volume = 0;
+  for (const auto& t : mesh.triangles())
+  {
+    volume += x[t[0]].dot(x[t[1]].cross(x[t[2]]));
+  }
+  return volume / 6.0;
+}
+
+} // namespace shrinkwrap

@@ -1,0 +1,87 @@
+#include "SurfaceGeometry.h"
+
+#include <vtkSMPTools.h>
+
+#include <cmath>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+double angle(const Vec3& u, const Vec3& v)
+{
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+double cotangent(const Vec3& u, const Vec3& v)
+{
+  const double s = u.cross(v).norm();
+  return s > 0 ? u.dot(v) / s : 0.0; // a degenerate angle contributes nothing; the step reports it
+}
+} // namespace
+
+std::array<double, 3> triangleAngles(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return { angle(b - a, c - a), angle(c - b, a - b), angle(a - c, b - c) };
+}
+
+void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& x, SurfaceGeometry& g)
+{
+  const int nt = mesh.triangleCount(), nv = mesh.vertexCount();
+  const auto& tris = mesh.triangles();
+  g.triangleArea.resize(nt);
+  g.coVolume.assign(nv, 0.0);
+  g.normal.resize(nv);
+  g.weight.resize(mesh.ringEnd(nv - 1));
+  g.curvature.resize(nv);
+  for (int t = 0; t < nt; ++t)
+  {
+    const auto& v = tris[t];
+    g.triangleArea[t] = 0.5 * (x[v[1]] - x[v[0]]).cross(x[v[2]] - x[v[0]]).norm();
+  }
+  vtkSMPTools::For(0, nv, [&](int b, int e) {
+    for (int i = b; i < e; ++i)
+    {
+      double coVolume = 0;
+      Vec3 normal = Vec3::Zero(), laplacian = Vec3::Zero();
+      for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
+      {
+        const int j = mesh.ring(p), k = mesh.ring(mesh.next(i, p)), l = mesh.ring(mesh.previous(i, p));
+        coVolume += g.triangleArea[mesh.ringTriangle(p)] / 3.0;
+        // Triangle (i, j, k): its normal weighted by its angle at i.
+        const Vec3 n = (x[j] - x[i]).cross(x[k] - x[i]);
+        const double len = n.norm();
+        if (len > 0)
+        {
+          normal += angle(x[j] - x[i], x[k] - x[i]) * n / len;
+        }
+        // Edge (i, j): opposite corners k (triangle i, j, k) and l (triangle i, l, j).
+        const double w = 0.5 * (cotangent(x[i] - x[k], x[j] - x[k]) + cotangent(x[i] - x[l], x[j] - x[l]));
+        g.weight[p] = w;
+        laplacian += w * (x[j] - x[i]);
+      }
+      g.coVolume[i] = coVolume;
+      const double len = normal.norm();
+      g.normal[i] = len > 0 ? Vec3(normal / len) : Vec3::Zero();
+      g.curvature[i] = coVolume > 0 ? Vec3(laplacian / coVolume) : Vec3::Zero();
+    }
+  });
+  g.area = 0;
+  g.minAngle = M_PI;
+  g.minAngleTriangle = -1;
+  for (int t = 0; t < nt; ++t)
+  {
+    g.area += g.triangleArea[t];
+    const auto& v = tris[t];
+    const auto a = triangleAngles(x[v[0]], x[v[1]], x[v[2]]);
+    const double m = std::min({ a[0], a[1], a[2] });
+    if (m < g.minAngle)
+    {
+      g.minAngle = m;
+      g.minAngleTriangle = t;
+    }
+  }
+}
+
+} // namespace shrinkwrap

@@ -1,0 +1,308 @@
+// The evolver's building blocks and bars of issue #3 besides the shrinking-sphere tables: icosphere and
+// one-rings, distance sampling, the stability scale of Section 2.4, that redistribution does its job,
+// advection onto a target, failure detection, and bad input.
+#include "DistanceGrid.h"
+#include "Evolver.h"
+#include "Icosphere.h"
+#include "SignedDistance.h"
+#include "StabilityScaling.h"
+#include "TestUtilities.h"
+
+#include <vtkSMPTools.h>
+
+#include <functional>
+#include <random>
+
+namespace
+{
+using namespace shrinkwrap;
+
+SurfaceMesh meshOf(const TriangleSurface& surface)
+{
+  SurfaceMesh mesh;
+  std::string error;
+  SW_CHECK(SurfaceMesh::build(surface.points, surface.triangles, mesh, error), "surface builds: " << error);
+  return mesh;
+}
+
+void icospheres()
+{
+  const long long expected[7] = { 12, 42, 162, 642, 2562, 10242, 40962 };
+  for (int s = 0; s <= 6; ++s)
+  {
+    const TriangleSurface sphere = icosphere(s, Vec3(1, 2, 3), 2.0);
+    SW_CHECK(static_cast<long long>(sphere.points.size()) == expected[s] && icosphereVertexCount(s) == expected[s],
+      "icosphere level " << s << " has " << expected[s] << " vertices (eq. (9))");
+    if (s > 4)
+    {
+      continue;
+    }
+    const SurfaceMesh mesh = meshOf(sphere);
+    int ringEntries = 0;
+    for (int i = 0; i < mesh.vertexCount(); ++i)
+    {
+      ringEntries += mesh.valence(i);
+      // Counter-clockwise rings: consecutive neighbours j, k make triangle (i, j, k) of the mesh.
+      for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
+      {
+        const auto& t = mesh.triangles()[mesh.ringTriangle(p)];
+        const int j = mesh.ring(p), k = mesh.ring(mesh.next(i, p));
+        const bool matches = (t[0] == i && t[1] == j && t[2] == k) || (t[1] == i && t[2] == j && t[0] == k) ||
+          (t[2] == i && t[0] == j && t[1] == k);
+        SW_CHECK(matches, "ring entry " << p << " of vertex " << i << " names its triangle");
+      }
+    }
+    SW_CHECK(ringEntries == 3 * mesh.triangleCount(), "ring entries = 2 E = 3 T on level " << s);
+    const double volume = enclosedVolume(mesh, sphere.points);
+    SW_CHECK(volume > 0 && volume < 4.0 / 3.0 * M_PI * 8.0, "outward orientation, inscribed volume on level " << s);
+  }
+}
+
+void distanceSampling()
+{
+  // A linear function is reproduced exactly by trilinear interpolation, and so is its gradient.
+  GridLattice lattice;
+  lattice.origin = Vec3(-1, -2, 0.5);
+  lattice.spacing = Vec3(0.1, 0.2, 0.15);
+  lattice.dims = { 21, 17, 13 };
+  const Vec3 a(0.3, -1.2, 2.0);
+  std::vector<float> values(lattice.nodeCount());
+  for (int k = 0; k < lattice.dims[2]; ++k)
+    for (int j = 0; j < lattice.dims[1]; ++j)
+      for (int i = 0; i < lattice.dims[0]; ++i)
+        values[lattice.index(i, j, k)] = static_cast<float>(a.dot(lattice.position(i, j, k)) + 0.7);
+  const DistanceGrid grid(lattice, values);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  double worst = 0, worstGradient = 0;
+  const Box box = lattice.bounds();
+  for (int n = 0; n < 1000; ++n)
+  {
+    const Vec3 x = box.min + Vec3(u(random), u(random), u(random)).cwiseProduct(box.size());
+    const DistanceSample s = grid.sample(x);
+    worst = std::max(worst, std::abs(s.value - (a.dot(x) + 0.7)));
+    worstGradient = std::max(worstGradient, (s.gradient - a).norm());
+  }
+  SW_CHECK(worst < 1e-5 && worstGradient < 1e-4, "trilinear value and gradient exact for a linear field ("
+      << worst << ", " << worstGradient << ")");
+}
+
+void stabilityScaling()
+{
+  // Eq. (7) prints phi = cbrt(tau / mu_r); areas scale with phi^2, so only the square root brings the
+  // mean co-volume to tau. Measured on an icosphere of radius r scaled by phi.
+  const double tau = 0.015, r = 10.0; // tau / mu_r far from 1, where the roots differ
+  const int level = 3;
+  const SurfaceMesh mesh = meshOf(icosphere(level, Vec3::Zero(), r));
+  for (const bool squareRoot : { true, false })
+  {
+    const double phi = squareRoot ? stabilityScale(tau, r, level) : std::cbrt(tau / meanCoVolume(r, level));
+    std::vector<Vec3> scaled;
+    for (const Vec3& x : mesh.initialPoints())
+    {
+      scaled.push_back(phi * x);
+    }
+    SurfaceGeometry g;
+    computeGeometry(mesh, scaled, g);
+    const double mean = g.area / mesh.vertexCount();
+    std::printf("phi by %s: mean co-volume %.5f for tau %.5f\n", squareRoot ? "sqrt (ours)" : "cbrt (eq. (7))", mean, tau);
+    if (squareRoot)
+    {
+      SW_CHECK(std::abs(mean - tau) < 0.05 * tau, "phi = sqrt(tau / mu_r) gives mean co-volume tau");
+    }
+    else
+    {
+      SW_CHECK(std::abs(mean - tau) > 0.5 * tau, "eq. (7)'s cube root does not");
+    }
+  }
+}
+
+struct Shape
+{
+  double coVolumeRatio;
+  double minAngleDegrees;     // the worst triangle
+  double meanMinAngleDegrees; // the smallest angle of each triangle, averaged
+};
+
+// An ellipsoid evolving by mean curvature flow for `steps` steps.
+Shape ellipsoidFlow(Redistribution redistribution, int steps)
+{
+  TriangleSurface ellipsoid = icosphere(3);
+  for (Vec3& p : ellipsoid.points)
+  {
+    p = p.cwiseProduct(Vec3(1.0, 0.5, 0.35));
+  }
+  const SurfaceMesh mesh = meshOf(ellipsoid);
+  EvolverSettings settings;
+  settings.C1 = 1;
+  settings.C2 = 0;
+  settings.C = 0;
+  settings.timeStep = 1e-4;
+  settings.redistribution = redistribution;
+  settings.omegaAngle = 1.0;
+  settings.omegaVolume = 1.0;
+  Evolver evolver(mesh, settings);
+  for (int k = 0; k < steps; ++k)
+  {
+    const StepReport r = evolver.step();
+    SW_CHECK(r.ok(), "ellipsoid flow step " << k << ": " << r.message);
+    if (!r.ok())
+    {
+      break;
+    }
+  }
+  const SurfaceGeometry g = evolver.geometry();
+  const auto [lo, hi] = std::minmax_element(g.coVolume.begin(), g.coVolume.end());
+  const std::vector<Vec3> x = evolver.positions();
+  double meanMin = 0;
+  for (const auto& t : mesh.triangles())
+  {
+    const auto a = triangleAngles(x[t[0]], x[t[1]], x[t[2]]);
+    meanMin += std::min({ a[0], a[1], a[2] });
+  }
+  meanMin /= mesh.triangleCount();
+  return { *hi / *lo, g.minAngle * 180 / M_PI, meanMin * 180 / M_PI };
+}
+
+void redistributionDoesItsJob()
+{
+  const int steps = 300;
+  const Shape none = ellipsoidFlow(Redistribution::None, steps);
+  const Shape volume = ellipsoidFlow(Redistribution::Volume, steps);
+  const Shape angle = ellipsoidFlow(Redistribution::Angle, steps);
+  std::printf("ellipsoid (1, 0.5, 0.35) from an icosphere of level 3, MCF, %d steps of 1e-4, omega 1:\n", steps);
+  for (const auto& [name, shape] : { std::make_pair("none", none), std::make_pair("volume", volume),
+         std::make_pair("angle", angle) })
+  {
+    std::printf("  %-7s max/min co-volume %7.2f, min angle %5.2f deg, mean of triangles' min angles %5.2f deg\n",
+      name, shape.coVolumeRatio, shape.minAngleDegrees, shape.meanMinAngleDegrees);
+  }
+  SW_CHECK((none.coVolumeRatio - 1) >= 3 * (volume.coVolumeRatio - 1),
+    "volume-based redistribution evens co-volumes at least 3x better than none");
+  SW_CHECK(angle.minAngleDegrees > none.minAngleDegrees && angle.meanMinAngleDegrees > none.meanMinAngleDegrees,
+    "angle-based redistribution (omega_angle = 1) keeps the minimum angles higher");
+}
+
+void advection()
+{
+  // The signed distance of a unit sphere, from the project's own SDF (the lattice the filter writes).
+  const TriangleSurface target = icosphere(5);
+  TriangleSoup soup{ target.points, target.triangles };
+  GridLattice lattice;
+  std::string error;
+  placeGrid(soup.bounds(), GridPlacement{ 1.1, 0.6, 64, 0 }, lattice, error);
+  std::vector<float> values(lattice.nodeCount());
+  computeSignedDistance(soup, lattice, {}, values.data());
+  const DistanceGrid field(lattice, values);
+  const double h = lattice.spacing.x();
+
+  // A sphere of radius 2 moved by advection (C > 0) with little diffusion (C1 small).
+  const SurfaceMesh start = meshOf(icosphere(3, Vec3::Zero(), 2.0));
+  EvolverSettings settings;
+  settings.timeStep = 0.02;
+  settings.C1 = 0.05;
+  settings.C2 = 1.0;
+  settings.C = 5.0;
+  settings.D = 0.0;
+  Evolver evolver(start, settings, &field, lattice.bounds());
+  for (int k = 0; k < 200; ++k)
+  {
+    const StepReport r = evolver.step();
+    SW_CHECK(r.ok(), "advection step: " << r.message);
+    if (!r.ok())
+    {
+      break;
+    }
+  }
+  double worst = 0;
+  for (const Vec3& x : evolver.positions())
+  {
+    worst = std::max(worst, std::abs(x.norm() - 1.0));
+  }
+  std::printf("advection: radius 2 -> max | |x| - 1 | = %.4f = %.3f h after 200 steps\n", worst, worst / h);
+  SW_CHECK(worst <= 0.5 * h, "the sphere settles on the unit sphere within 0.5 h");
+}
+
+void failureIsReported()
+{
+  const SurfaceMesh mesh = meshOf(icosphere(3));
+  EvolverSettings settings;
+  settings.C2 = 0;
+  settings.C = 0;
+  settings.timeStep = 0.3; // r(t)^2 = 1 - 4t: the sphere vanishes at t = 0.25
+  Box domain;
+  domain.extend(Vec3::Constant(-2));
+  domain.extend(Vec3::Constant(2));
+  Evolver evolver(mesh, settings, nullptr, domain);
+  StepReport r;
+  int k = 0;
+  for (; k < 20 && r.ok(); ++k)
+  {
+    r = evolver.step();
+  }
+  std::printf("too large a step: %s\n", r.message.c_str());
+  SW_CHECK(!r.ok() && r.step >= 1 && r.step <= 20 && r.where >= 0 && !r.message.empty(),
+    "the failure is reported with its step and place");
+  bool finite = true;
+  for (const Vec3& x : evolver.positions())
+  {
+    finite = finite && x.allFinite();
+  }
+  SW_CHECK(finite && evolver.steps() == r.step - 1, "the last good surface is kept: no NaN escapes");
+}
+
+void badInput()
+{
+  SurfaceMesh mesh;
+  std::string error;
+  const TriangleSurface tet{ { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
+    { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } } };
+  SW_CHECK(SurfaceMesh::build(tet.points, tet.triangles, mesh, error), "a tetrahedron is a closed surface");
+  SW_CHECK(!SurfaceMesh::build({}, {}, mesh, error), "empty surface refused: " << error);
+  TriangleSurface isolated = tet;
+  isolated.points.push_back({ 5, 5, 5 });
+  SW_CHECK(!SurfaceMesh::build(isolated.points, isolated.triangles, mesh, error), "isolated vertex refused: " << error);
+  TriangleSurface open = tet;
+  open.triangles.pop_back();
+  SW_CHECK(!SurfaceMesh::build(open.points, open.triangles, mesh, error), "open surface refused: " << error);
+  TriangleSurface fin = tet; // a third triangle on edge (0, 1)
+  fin.points.push_back({ 0.5, -1, 0 });
+  fin.triangles.push_back({ 0, 1, 4 });
+  SW_CHECK(!SurfaceMesh::build(fin.points, fin.triangles, mesh, error), "non-manifold edge refused: " << error);
+  TriangleSurface flipped = tet;
+  std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
+  SW_CHECK(!SurfaceMesh::build(flipped.points, flipped.triangles, mesh, error), "inconsistent orientation refused: " << error);
+  TriangleSurface nan = tet;
+  nan.points[1].x() = std::nan("");
+  SW_CHECK(!SurfaceMesh::build(nan.points, nan.triangles, mesh, error), "NaN refused: " << error);
+
+  SurfaceMesh::build(tet.points, tet.triangles, mesh, error);
+  for (const auto& [what, change] : std::vector<std::pair<std::string, std::function<void(EvolverSettings&)>>>{
+         { "tau = 0", [](EvolverSettings& s) { s.timeStep = 0; } },
+         { "tau < 0", [](EvolverSettings& s) { s.timeStep = -0.1; } },
+         { "C1 < 0", [](EvolverSettings& s) { s.C1 = -1; } },
+         { "C < 0", [](EvolverSettings& s) { s.C = -1; } },
+         { "D < 0", [](EvolverSettings& s) { s.D = -1; } },
+         { "omega < 0", [](EvolverSettings& s) { s.omegaAngle = -1; } } })
+  {
+    EvolverSettings settings;
+    change(settings);
+    const Evolver evolver(mesh, settings);
+    SW_CHECK(!evolver.error().empty(), what << " refused: " << evolver.error());
+  }
+}
+} // namespace
+
+int TestEvolver(int, char*[])
+{
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
+    icospheres();
+    distanceSampling();
+    stabilityScaling();
+    redistributionDoesItsJob();
+    advection();
+    failureIsReported();
+    badInput();
+  });
+  return testing::finish("TestEvolver");
+}

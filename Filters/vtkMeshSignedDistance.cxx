@@ -1,5 +1,6 @@
 #include "vtkMeshSignedDistance.h"
 
+#include "AllCores.h"
 #include "SignedDistance.h"
 #include "SystemMemory.h"
 
@@ -153,18 +154,6 @@ std::string gibibytes(double bytes)
   return s.str();
 }
 
-// Runs f with vtkSMPTools on all cores. Debian's VTK defaults to the Sequential backend; a scoped
-// STDThread backend leaves the process-wide choice alone. A backend the user chose wins.
-template <typename F>
-void onAllCores(F&& f)
-{
-  if (std::getenv("VTK_SMP_BACKEND_IN_USE"))
-  {
-    f();
-    return;
-  }
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, f);
-}
 } // namespace
 
 vtkMeshSignedDistance::vtkMeshSignedDistance()
@@ -311,7 +300,7 @@ int vtkMeshSignedDistance::RequestData(
     this->UpdateProgress(fraction);
     return !this->GetAbortExecute();
   });
-  onAllCores([&] {
+  shrinkwrap::onAllCores([&] {
     result = shrinkwrap::computeSignedDistance(soup, lattice, settings, values->GetPointer(0), progress);
   });
   if (!result.completed)

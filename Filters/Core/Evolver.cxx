@@ -283,6 +283,17 @@ std::vector<Vec3> Evolver::positions() const
   return x;
 }
 
+void Evolver::restart(const std::vector<Vec3>& x, int steps)
+{
+  for (std::size_t i = 0; i < x.size() && i < this->Y.size(); ++i)
+  {
+    this->Y[i] = this->Scale * (x[i] - this->Center);
+  }
+  this->Steps = steps;
+  this->Potential.clear();
+  std::fill(this->VT.begin(), this->VT.end(), Vec3::Zero());
+}
+
 SurfaceGeometry Evolver::geometry() const
 {
   SurfaceGeometry g;

@@ -86,6 +86,8 @@ public:
 
   // Current positions in the caller's units.
   std::vector<Vec3> positions() const;
+  // Continues from earlier positions (caller's units) as the result of step `steps`, e.g. a cached step.
+  void restart(const std::vector<Vec3>& positions, int steps);
   // Geometry of the current positions, in the caller's units (areas, weights and curvatures rescaled).
   SurfaceGeometry geometry() const;
   // The tangential velocity used in the last step, in the caller's units per unit time.

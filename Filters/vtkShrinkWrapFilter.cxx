@@ -1,0 +1,497 @@
+#include "vtkShrinkWrapFilter.h"
+
+#include "AllCores.h"
+#include "Evolver.h"
+#include "Icosphere.h"
+#include "MeshQuality.h"
+#include "StabilityScaling.h"
+#include "vtkMeshSignedDistance.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+
+vtkStandardNewMacro(vtkShrinkWrapFilter);
+
+using namespace shrinkwrap;
+
+namespace
+{
+Box boundsOf(vtkPolyData* mesh)
+{
+  Box box;
+  double b[6];
+  mesh->GetBounds(b);
+  if (mesh->GetNumberOfPoints() > 0)
+  {
+    box.extend(Vec3(b[0], b[2], b[4]));
+    box.extend(Vec3(b[1], b[3], b[5]));
+  }
+  return box;
+}
+
+// The SignedDistance array of an image as a DistanceGrid; empty with a message if there is none.
+DistanceGrid gridOf(vtkImageData* image, std::string& error)
+{
+  vtkDataArray* values = image ? image->GetPointData()->GetArray("SignedDistance") : nullptr;
+  if (!values || values->GetNumberOfComponents() != 1)
+  {
+    error = "the distance field has no point array \"SignedDistance\"";
+    return {};
+  }
+  GridLattice lattice;
+  int extent[6];
+  image->GetExtent(extent);
+  image->GetSpacing(lattice.spacing.data());
+  image->GetOrigin(lattice.origin.data());
+  for (int a = 0; a < 3; ++a)
+  {
+    lattice.dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
+    lattice.origin[a] += extent[2 * a] * lattice.spacing[a];
+  }
+  if (lattice.dims[0] < 2 || lattice.dims[1] < 2 || lattice.dims[2] < 2 || !(lattice.spacing.minCoeff() > 0))
+  {
+    error = "the distance field needs at least 2 nodes and a positive spacing on every axis";
+    return {};
+  }
+  std::vector<float> v(values->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    v[i] = static_cast<float>(values->GetTuple1(i));
+  }
+  return DistanceGrid(lattice, std::move(v));
+}
+
+// A polydata's triangles as a surface; false if it has other polygons (or none).
+bool trianglesOf(vtkPolyData* mesh, TriangleSurface& surface)
+{
+  surface.points.resize(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    mesh->GetPoint(i, surface.points[i].data());
+  }
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n != 3)
+    {
+      return false;
+    }
+    surface.triangles.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
+  }
+  return !surface.triangles.empty() && mesh->GetNumberOfStrips() == 0;
+}
+} // namespace
+
+// Everything derived from the inputs and properties: dropped when either changes.
+struct vtkShrinkWrapFilter::Session
+{
+  vtkMTimeType key = 0;
+  DistanceGrid field;
+  SurfaceMesh mesh;
+  std::unique_ptr<Evolver> evolver;
+  struct Step
+  {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> tangentialVelocity;
+  };
+  std::map<int, Step> cache;
+  int newest = 0;
+  int lastGood = -1; // set when a step failed: the last step that did not
+  std::string failure;
+  int computed = 0;
+  int stride = 1; // cached steps kept: multiples of stride, and the newest
+};
+
+vtkShrinkWrapFilter::vtkShrinkWrapFilter()
+{
+  this->SetNumberOfInputPorts(3);
+  this->SetNumberOfOutputPorts(1);
+}
+
+vtkShrinkWrapFilter::~vtkShrinkWrapFilter() = default;
+
+int vtkShrinkWrapFilter::GetNumberOfComputedSteps() const
+{
+  return this->Current ? this->Current->computed : 0;
+}
+
+int vtkShrinkWrapFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 1 ? "vtkImageData" : "vtkPolyData");
+  if (port > 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkShrinkWrapFilter::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // Every evolution step is a time step of the output.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int n = std::max(0, this->NumberOfSteps);
+  const double tau = this->TimeStep > 0 ? this->TimeStep : 1.0;
+  std::vector<double> times(n + 1);
+  for (int k = 0; k <= n; ++k)
+  {
+    times[k] = k * tau;
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), n + 1);
+  const double range[2] = { 0.0, n * tau };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
+int vtkShrinkWrapFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The whole target, field and starting surface, whatever time is asked of the output.
+  for (int port = 0; port < 3; ++port)
+  {
+    for (int c = 0; c < inputVector[port]->GetNumberOfInformationObjects(); ++c)
+    {
+      vtkInformation* info = inputVector[port]->GetInformationObject(c);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      info->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    }
+  }
+  return 1;
+}
+
+bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
+{
+  vtkPolyData* target = vtkPolyData::GetData(inputVector[0], 0);
+  vtkImageData* fieldImage = vtkImageData::GetData(inputVector[1], 0);
+  vtkPolyData* initial = vtkPolyData::GetData(inputVector[2], 0);
+  auto session = std::make_unique<Session>();
+  if (!(this->TimeStep > 0) || !std::isfinite(this->TimeStep))
+  {
+    vtkErrorMacro("TimeStep (tau) must be positive.");
+    return false;
+  }
+  if (this->SubdivisionLevel < 0 || this->SubdivisionLevel > 8)
+  {
+    vtkErrorMacro("SubdivisionLevel must be between 0 and 8.");
+    return false;
+  }
+  if (!target || target->GetNumberOfPolys() + target->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("The target has no polygons to wrap.");
+    return false;
+  }
+  const Box targetBox = boundsOf(target);
+  if (!targetBox.min.allFinite() || !targetBox.max.allFinite())
+  {
+    vtkErrorMacro("The target has NaN or infinite coordinates.");
+    return false;
+  }
+
+  // The distance field: the DistanceField input, or computed here with the same algorithm.
+  std::string error;
+  if (fieldImage)
+  {
+    session->field = gridOf(fieldImage, error);
+  }
+  else
+  {
+    vtkNew<vtkMeshSignedDistance> sdf;
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(target);
+    sdf->SetInputData(copy);
+    sdf->SetResolution(this->Resolution);
+    sdf->Update();
+    session->field = gridOf(sdf->GetOutput(), error);
+    if (session->field.empty())
+    {
+      error = "the target's distance field could not be computed (see the message above)";
+    }
+  }
+  if (session->field.empty())
+  {
+    vtkErrorMacro("Cannot wrap: " << error << ".");
+    return false;
+  }
+
+  // The starting surface.
+  TriangleSurface start;
+  if (initial)
+  {
+    if (!trianglesOf(initial, start))
+    {
+      vtkErrorMacro("The InitialSurface must be made of triangles only.");
+      return false;
+    }
+  }
+  else
+  {
+    start = icosphere(this->SubdivisionLevel, targetBox.center(), 0.5 * 1.05 * targetBox.diagonal());
+  }
+  if (!SurfaceMesh::build(start.points, start.triangles, session->mesh, error))
+  {
+    vtkErrorMacro("The starting surface cannot evolve: " << error << ".");
+    return false;
+  }
+  const Box domain = session->field.lattice().bounds();
+  for (const Vec3& p : start.points)
+  {
+    if (domain.squaredDistance(p) > 0)
+    {
+      vtkErrorMacro("The distance field does not contain the starting surface; enlarge the field "
+                    "(Offset Factor of Mesh Signed Distance) or start from a smaller surface.");
+      return false;
+    }
+  }
+
+  // Section 2.4: scale so that the mean co-volume of the sphere inscribed in the target's box is tau.
+  const Vec3 size = targetBox.size();
+  const double radius = 0.5 * std::max(size.minCoeff(), 1e-3 * size.maxCoeff());
+  const double phi = this->AutomaticScaling
+    ? std::sqrt(this->TimeStep * session->mesh.vertexCount() / (4.0 * M_PI * radius * radius))
+    : 1.0;
+
+  EvolverSettings settings;
+  settings.timeStep = this->TimeStep;
+  settings.C1 = this->C1;
+  settings.C2 = this->C2;
+  settings.C = this->C;
+  settings.D = this->D;
+  settings.redistribution = this->TangentialRedistribution == VOLUME
+    ? Redistribution::Volume
+    : (this->TangentialRedistribution == ANGLE ? Redistribution::Angle : Redistribution::None);
+  settings.omegaAngle = this->OmegaAngle;
+  settings.omegaVolume = this->OmegaVolume;
+  settings.rhoA = this->RhoA;
+  settings.solverTolerance = this->SolverTolerance;
+  session->evolver =
+    std::make_unique<Evolver>(session->mesh, settings, &session->field, domain, phi, targetBox.center());
+  if (!session->evolver->error().empty())
+  {
+    vtkErrorMacro("Cannot wrap: " << session->evolver->error() << ".");
+    return false;
+  }
+  session->cache[0] = { session->evolver->positions(), std::vector<Vec3>(start.points.size(), Vec3::Zero()) };
+  this->Current = std::move(session);
+  return true;
+}
+
+int vtkShrinkWrapFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(outInfo);
+  output->Initialize();
+
+  // Any change of an input or a property starts a new session (and drops the cache).
+  vtkMTimeType key = this->GetMTime();
+  for (int port = 0; port < 3; ++port)
+  {
+    if (vtkDataObject* data = this->GetInputDataObject(port, 0))
+    {
+      key = std::max(key, data->GetMTime());
+    }
+  }
+  if (!this->Current || this->Current->key != key)
+  {
+    this->Current.reset();
+    bool started = false;
+    onAllCores([&] { started = this->StartSession(inputVector); });
+    if (!started)
+    {
+      return 1;
+    }
+    this->Current->key = key;
+  }
+  Session& s = *this->Current;
+
+  // The step asked for: the requested time snapped to a step, else the last step.
+  const int last = std::max(0, this->NumberOfSteps);
+  if (this->NumberOfSteps <= 0)
+  {
+    vtkWarningMacro("NumberOfSteps is " << this->NumberOfSteps << ": showing the starting surface.");
+  }
+  int wanted = last;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    wanted = std::clamp(static_cast<int>(std::lround(t / this->TimeStep)), 0, last);
+  }
+  const int shown = s.lastGood >= 0 ? std::min(wanted, s.lastGood) : wanted;
+
+  // Compute what is missing, from the nearest cached step before it.
+  if (!s.cache.count(shown))
+  {
+    auto base = std::prev(s.cache.upper_bound(shown));
+    if (s.evolver->steps() != base->first)
+    {
+      s.evolver->restart(base->second.positions, base->first);
+    }
+    const int first = base->first;
+    bool aborted = false;
+    onAllCores([&] {
+      for (int k = first + 1; k <= shown; ++k)
+      {
+        const StepReport report = s.evolver->step();
+        ++s.computed;
+        if (!report.ok())
+        {
+          s.lastGood = k - 1;
+          s.failure = report.message;
+          break;
+        }
+        s.cache[k] = { s.evolver->positions(), s.evolver->tangentialVelocity() };
+        s.newest = std::max(s.newest, k);
+        this->UpdateProgress(static_cast<double>(k - first) / (shown - first));
+        if (this->GetAbortExecute())
+        {
+          aborted = true;
+          break;
+        }
+      }
+    });
+    if (aborted)
+    {
+      vtkWarningMacro("Shrink Wrap was aborted; the output is empty (computed steps stay cached).");
+      return 1;
+    }
+    if (s.lastGood >= 0)
+    {
+      vtkWarningMacro("The evolution failed: " << s.failure << "; later times show step " << s.lastGood << ".");
+    }
+    // Keep the cache under its memory limit: drop every other step, keeping step 0 and the newest.
+    const double bytesPerStep = 2.0 * sizeof(Vec3) * s.mesh.vertexCount();
+    while (s.cache.size() > 2 && s.cache.size() * bytesPerStep > this->CacheMemoryLimit * 1024 * 1024)
+    {
+      s.stride *= 2;
+      for (auto it = s.cache.begin(); it != s.cache.end();)
+      {
+        it = (it->first % s.stride != 0 && it->first != s.newest) ? s.cache.erase(it) : std::next(it);
+      }
+    }
+  }
+  const int step = s.lastGood >= 0 ? std::min(wanted, s.lastGood) : wanted;
+  const auto found = s.cache.find(step) != s.cache.end() ? s.cache.find(step) : std::prev(s.cache.upper_bound(step));
+  const Session::Step& entry = found->second;
+
+  // The surface and its arrays.
+  const std::vector<Vec3>& x = entry.positions;
+  const int nv = static_cast<int>(x.size());
+  SurfaceGeometry g;
+  computeGeometry(s.mesh, x, g);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(nv);
+  auto named = [](auto array, const char* name, int components, vtkIdType tuples) {
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(tuples);
+    return array;
+  };
+  vtkNew<vtkFloatArray> distance, alignment, curvature, coVolume, normals, tangential;
+  named(distance.Get(), "Distance", 1, nv);
+  named(alignment.Get(), "AdvectionAlignment", 1, nv);
+  named(curvature.Get(), "MeanCurvature", 1, nv);
+  named(coVolume.Get(), "CoVolume", 1, nv);
+  named(normals.Get(), "Normals", 3, nv);
+  named(tangential.Get(), "TangentialVelocity", 3, nv);
+  for (int i = 0; i < nv; ++i)
+  {
+    points->SetPoint(i, x[i].data());
+    const DistanceSample d = s.field.sample(x[i]);
+    distance->SetValue(i, static_cast<float>(d.value));
+    alignment->SetValue(i, static_cast<float>(-d.gradient.dot(g.normal[i])));
+    curvature->SetValue(i, static_cast<float>(-g.curvature[i].dot(g.normal[i]))); // h = -H N
+    coVolume->SetValue(i, static_cast<float>(g.coVolume[i]));
+    normals->SetTuple3(i, g.normal[i].x(), g.normal[i].y(), g.normal[i].z());
+    const Vec3& v = entry.tangentialVelocity[i];
+    tangential->SetTuple3(i, v.x(), v.y(), v.z());
+  }
+  const int nt = s.mesh.triangleCount();
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkFloatArray> minAngle, maxAngle, jacobian;
+  named(minAngle.Get(), "MinAngle", 1, nt);
+  named(maxAngle.Get(), "MaxAngle", 1, nt);
+  named(jacobian.Get(), "JacobianCondition", 1, nt);
+  for (int t = 0; t < nt; ++t)
+  {
+    const auto& tri = s.mesh.triangles()[t];
+    const vtkIdType ids[3] = { tri[0], tri[1], tri[2] };
+    triangles->InsertNextCell(3, ids);
+    const TriangleQuality q = triangleQuality(x[tri[0]], x[tri[1]], x[tri[2]]);
+    minAngle->SetValue(t, static_cast<float>(q.minAngle));
+    maxAngle->SetValue(t, static_cast<float>(q.maxAngle));
+    jacobian->SetValue(t, static_cast<float>(q.jacobianCondition));
+  }
+  output->SetPoints(points);
+  output->SetPolys(triangles);
+  for (vtkDataArray* a : { distance.Get(), alignment.Get(), curvature.Get(), coVolume.Get(), tangential.Get() })
+  {
+    output->GetPointData()->AddArray(a);
+  }
+  output->GetPointData()->SetNormals(normals);
+  output->GetPointData()->SetActiveScalars("Distance");
+  for (vtkDataArray* a : { minAngle.Get(), maxAngle.Get(), jacobian.Get() })
+  {
+    output->GetCellData()->AddArray(a);
+  }
+
+  vtkNew<vtkIntArray> stepIndex;
+  stepIndex->SetName("StepIndex");
+  stepIndex->InsertNextValue(found->first);
+  vtkNew<vtkDoubleArray> time;
+  time->SetName("Time");
+  time->InsertNextValue(found->first * this->TimeStep);
+  vtkNew<vtkStringArray> status;
+  status->SetName("Status");
+  status->InsertNextValue(s.lastGood >= 0 && wanted > s.lastGood ? "failed: " + s.failure : std::string("ok"));
+  output->GetFieldData()->AddArray(stepIndex);
+  output->GetFieldData()->AddArray(time);
+  output->GetFieldData()->AddArray(status);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), found->first * this->TimeStep);
+  return 1;
+}
+
+void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TimeStep: " << this->TimeStep << "\n";
+  os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
+  os << indent << "SubdivisionLevel: " << this->SubdivisionLevel << "\n";
+  os << indent << "C1: " << this->C1 << "\n";
+  os << indent << "C2: " << this->C2 << "\n";
+  os << indent << "C: " << this->C << "\n";
+  os << indent << "D: " << this->D << "\n";
+  os << indent << "TangentialRedistribution: " << this->TangentialRedistribution << "\n";
+  os << indent << "OmegaAngle: " << this->OmegaAngle << "\n";
+  os << indent << "OmegaVolume: " << this->OmegaVolume << "\n";
+  os << indent << "RhoA: " << this->RhoA << "\n";
+  os << indent << "AutomaticScaling: " << this->AutomaticScaling << "\n";
+  os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "CacheMemoryLimit: " << this->CacheMemoryLimit << " MiB\n";
+}

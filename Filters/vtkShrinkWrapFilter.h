@@ -1,0 +1,157 @@
+/**
+ * @class   vtkShrinkWrapFilter
+ * @brief   Wraps a polygon mesh in a watertight triangle surface by Lagrangian evolution (time aware).
+ *
+ * Algorithm 3 of "Advection-Driven Shrink-Wrapping of Triangulated Surfaces": a starting surface
+ * evolves by eq. (2), dF/dt = eps(d) Laplace-Beltrami(F) + eta(d) N + v_T, towards the target's signed
+ * distance d. Every time step is a time step of the output: the filter advertises the times
+ * {0, tau, ..., N_t tau} and returns the surface at the requested time (the last one when no time is
+ * requested). Computed steps are cached: going back is instant, going forward resumes from the newest
+ * cached step; changing an input or a property drops the cache.
+ *
+ * Inputs: port 0, the target (vtkPolyData with polygons). Port 1 (optional), "DistanceField": a
+ * vtkImageData with a point array "SignedDistance", e.g. from Mesh Signed Distance; otherwise one is
+ * computed with Resolution. Port 2 (optional), "InitialSurface": a closed 2-manifold triangle surface to
+ * start from; otherwise a geodesic icosphere of SubdivisionLevel around the target.
+ *
+ * Output: the surface in the target's coordinates. Point data: Distance (d), AdvectionAlignment
+ * (-grad d . N), MeanCurvature (H, positive where convex), CoVolume (|V_i|), Normals, and
+ * TangentialVelocity (v_T of the step that produced the surface). Cell data: MinAngle, MaxAngle (degrees)
+ * and JacobianCondition (Knupp). Field data: StepIndex, Time and Status ("ok", or the failure and its
+ * step; later times then show the last good surface).
+ *
+ * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
+ * NumberOfSteps N_t = 200, SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 1 and D = 0
+ * (eq. (4)), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
+ * RhoA = 1 (A of eq. (10)), AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates
+ * scaled so that the mean co-volume of the sphere inscribed in the target's box is tau), SolverTolerance
+ * 1e-10, Resolution 120 (of the internal distance field), CacheMemoryLimit 512 MiB.
+ */
+#ifndef vtkShrinkWrapFilter_h
+#define vtkShrinkWrapFilter_h
+
+#include "ShrinkWrapFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for the cache
+
+class SHRINKWRAPFILTERS_EXPORT vtkShrinkWrapFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkShrinkWrapFilter* New();
+  vtkTypeMacro(vtkShrinkWrapFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Redistributions
+  {
+    NONE = 0,
+    ANGLE = 1,
+    VOLUME = 2
+  };
+
+  /// Port 1: an image with "SignedDistance" (optional).
+  void SetDistanceFieldConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  /// Port 2: a closed triangle surface to start from (optional).
+  void SetInitialSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
+
+  ///@{
+  /// tau, the time step. Default 0.015.
+  vtkSetMacro(TimeStep, double);
+  vtkGetMacro(TimeStep, double);
+  ///@}
+  ///@{
+  /// N_t, the number of time steps. Default 200.
+  vtkSetMacro(NumberOfSteps, int);
+  vtkGetMacro(NumberOfSteps, int);
+  ///@}
+  ///@{
+  /// s, the subdivision level of the starting icosphere. Default 3 (642 vertices).
+  vtkSetMacro(SubdivisionLevel, int);
+  vtkGetMacro(SubdivisionLevel, int);
+  ///@}
+  ///@{
+  /// C1 and C2 of eps(d) = C1 (1 - exp(-d^2 / C2)), eq. (3). Defaults 1 and 1; C2 = 0 gives eps = C1.
+  vtkSetMacro(C1, double);
+  vtkGetMacro(C1, double);
+  vtkSetMacro(C2, double);
+  vtkGetMacro(C2, double);
+  ///@}
+  ///@{
+  /// C and D of eta(d) = C d ((-grad d . N) - D sqrt(1 - (grad d . N)^2)), eq. (4). Defaults 1 and 0.
+  vtkSetMacro(C, double);
+  vtkGetMacro(C, double);
+  vtkSetMacro(D, double);
+  vtkGetMacro(D, double);
+  ///@}
+  ///@{
+  /// Tangential redistribution: NONE, ANGLE (default) or VOLUME, with omega_angle (0.5), omega_vol (1)
+  /// and A of rho(d) = A (1 - exp(-d^2)), eq. (10) (1).
+  vtkSetClampMacro(TangentialRedistribution, int, NONE, VOLUME);
+  vtkGetMacro(TangentialRedistribution, int);
+  vtkSetMacro(OmegaAngle, double);
+  vtkGetMacro(OmegaAngle, double);
+  vtkSetMacro(OmegaVolume, double);
+  vtkGetMacro(OmegaVolume, double);
+  vtkSetMacro(RhoA, double);
+  vtkGetMacro(RhoA, double);
+  ///@}
+  ///@{
+  /// Scale the evolution for stability (Section 2.4). Default on.
+  vtkSetMacro(AutomaticScaling, bool);
+  vtkGetMacro(AutomaticScaling, bool);
+  vtkBooleanMacro(AutomaticScaling, bool);
+  ///@}
+  ///@{
+  /// Relative residual of the linear solves. Default 1e-10.
+  vtkSetMacro(SolverTolerance, double);
+  vtkGetMacro(SolverTolerance, double);
+  ///@}
+  ///@{
+  /// Cells along the longest axis of the internal distance field (no DistanceField input). Default 120.
+  vtkSetMacro(Resolution, int);
+  vtkGetMacro(Resolution, int);
+  ///@}
+  ///@{
+  /// Memory for cached steps, in MiB; beyond it every other cached step is dropped. Default 512.
+  vtkSetMacro(CacheMemoryLimit, double);
+  vtkGetMacro(CacheMemoryLimit, double);
+  ///@}
+
+  /// Evolution steps computed since the cache was last dropped (for tests and diagnostics).
+  int GetNumberOfComputedSteps() const;
+
+protected:
+  vtkShrinkWrapFilter();
+  ~vtkShrinkWrapFilter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double TimeStep = 0.015;
+  int NumberOfSteps = 200;
+  int SubdivisionLevel = 3;
+  double C1 = 1.0;
+  double C2 = 1.0;
+  double C = 1.0;
+  double D = 0.0;
+  int TangentialRedistribution = ANGLE;
+  double OmegaAngle = 0.5;
+  double OmegaVolume = 1.0;
+  double RhoA = 1.0;
+  bool AutomaticScaling = true;
+  double SolverTolerance = 1e-10;
+  int Resolution = 120;
+  double CacheMemoryLimit = 512;
+
+private:
+  vtkShrinkWrapFilter(const vtkShrinkWrapFilter&) = delete;
+  void operator=(const vtkShrinkWrapFilter&) = delete;
+
+  struct Session;
+  bool StartSession(vtkInformationVector** inputVector);
+  std::unique_ptr<Session> Current;
+};
+
+#endif

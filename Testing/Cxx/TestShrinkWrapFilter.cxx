@@ -1,0 +1,218 @@
+// vtkShrinkWrapFilter through a VTK pipeline: time steps, the step cache, the output's arrays, a
+// closed one-piece result, the DistanceField and InitialSurface ports, and bad input.
+#include "SurfaceMesh.h"
+#include "TestUtilities.h"
+#include "vtkMeshSignedDistance.h"
+#include "vtkShrinkWrapFilter.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCellData.h>
+#include <vtkClipPolyData.h>
+#include <vtkCommand.h>
+#include <vtkInformation.h>
+#include <vtkPlane.h>
+#include <vtkPolyDataConnectivityFilter.h>
+#include <vtkSphereSource.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkStringArray.h>
+#include <vtkSuperquadricSource.h>
+#include <vtkTriangleFilter.h>
+
+#include <functional>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> target()
+{
+  vtkNew<vtkSuperquadricSource> source; // a rounded box, a little concave at its faces
+  source->SetScale(1.0, 0.7, 0.5);
+  source->SetThetaRoundness(0.3);
+  source->SetPhiRoundness(0.3);
+  source->SetThetaResolution(32);
+  source->SetPhiResolution(32);
+  source->ToroidalOff();
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(source->GetOutputPort());
+  triangles->Update();
+  return triangles->GetOutput();
+}
+
+std::vector<double> pointsOf(vtkPolyData* mesh)
+{
+  std::vector<double> p;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    mesh->GetPoint(i, x);
+    p.insert(p.end(), x, x + 3);
+  }
+  return p;
+}
+
+int stepOf(vtkPolyData* mesh)
+{
+  vtkDataArray* a = mesh->GetFieldData()->GetArray("StepIndex");
+  return a ? static_cast<int>(a->GetTuple1(0)) : -1;
+}
+
+std::string statusOf(vtkPolyData* mesh)
+{
+  auto* a = vtkStringArray::SafeDownCast(mesh->GetFieldData()->GetAbstractArray("Status"));
+  return a ? a->GetValue(0) : std::string();
+}
+
+int errorsWhile(vtkAlgorithm* filter, const std::function<void()>& run)
+{
+  struct Counter
+  {
+    int errors = 0;
+  } counter;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&counter);
+  observer->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++static_cast<Counter*>(data)->errors; });
+  const unsigned long id = filter->AddObserver(vtkCommand::ErrorEvent, observer);
+  run();
+  filter->RemoveObserver(id);
+  return counter.errors;
+}
+} // namespace
+
+int TestShrinkWrapFilter(int, char*[])
+{
+  vtkSmartPointer<vtkPolyData> box = target();
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputData(box);
+  wrap->SetNumberOfSteps(60);
+  wrap->SetResolution(64);
+  wrap->UpdateInformation();
+  vtkInformation* info = wrap->GetOutputInformation(0);
+  const int n = info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  SW_CHECK(n == 61, "TIME_STEPS has N_t + 1 entries (" << n << ")");
+  SW_CHECK(info->Get(vtkStreamingDemandDrivenPipeline::TIME_RANGE())[1] == 60 * 0.015, "TIME_RANGE ends at N_t tau");
+
+  // No time asked: the last step.
+  wrap->Update();
+  vtkPolyData* out = wrap->GetOutput();
+  SW_CHECK(stepOf(out) == 60 && statusOf(out) == "ok", "a plain update gives the last step, ok");
+  SW_CHECK(wrap->GetNumberOfComputedSteps() == 60, "60 steps computed");
+  shrinkwrap::SurfaceMesh closed;
+  std::string error;
+  std::vector<shrinkwrap::Vec3> x(out->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    out->GetPoint(i, x[i].data());
+  }
+  SW_CHECK(shrinkwrap::SurfaceMesh::build(x, testing::triangulated(out).triangles, closed, error),
+    "the output is a closed 2-manifold: " << error);
+  vtkNew<vtkPolyDataConnectivityFilter> pieces;
+  pieces->SetInputData(out);
+  pieces->SetExtractionModeToAllRegions();
+  pieces->Update();
+  SW_CHECK(pieces->GetNumberOfExtractedRegions() == 1, "one component");
+  for (const char* name : { "Distance", "AdvectionAlignment", "MeanCurvature", "CoVolume", "TangentialVelocity" })
+  {
+    SW_CHECK(out->GetPointData()->GetArray(name) &&
+        out->GetPointData()->GetArray(name)->GetNumberOfTuples() == out->GetNumberOfPoints(),
+      "point array " << name);
+  }
+  SW_CHECK(out->GetPointData()->GetNormals() != nullptr, "point normals");
+  for (const char* name : { "MinAngle", "MaxAngle", "JacobianCondition" })
+  {
+    SW_CHECK(out->GetCellData()->GetArray(name) &&
+        out->GetCellData()->GetArray(name)->GetNumberOfTuples() == out->GetNumberOfCells(),
+      "cell array " << name);
+  }
+  // The wrap approaches the target: most vertices within a couple of cells of it.
+  vtkDataArray* distance = out->GetPointData()->GetArray("Distance");
+  std::vector<double> d;
+  for (vtkIdType i = 0; i < distance->GetNumberOfTuples(); ++i)
+  {
+    d.push_back(std::abs(distance->GetTuple1(i)));
+  }
+  std::sort(d.begin(), d.end());
+  const double h = 3.3 * 2.0 / 64; // the field's cell: 3.3 times the box's largest side over 64 cells
+  std::printf("after 60 steps: median |d| = %.3f h, 90th percentile %.3f h\n", d[d.size() / 2] / h, d[d.size() * 9 / 10] / h);
+  SW_CHECK(d[d.size() / 2] < 2 * h, "the surface approaches the target");
+
+  // A step in the middle: exactly that step, and the same points as a fresh run stopped there.
+  wrap->UpdateTimeStep(30 * 0.015);
+  const std::vector<double> middle = pointsOf(wrap->GetOutput());
+  SW_CHECK(stepOf(wrap->GetOutput()) == 30, "time 30 tau gives step 30");
+  SW_CHECK(wrap->GetNumberOfComputedSteps() == 60, "going back computes nothing");
+  vtkNew<vtkShrinkWrapFilter> fresh;
+  fresh->SetInputData(box);
+  fresh->SetResolution(64);
+  fresh->SetNumberOfSteps(30);
+  fresh->Update();
+  SW_CHECK(pointsOf(fresh->GetOutput()) == middle, "the same points as a fresh run stopped at step 30");
+  wrap->UpdateTimeStep(17.4 * 0.015);
+  SW_CHECK(stepOf(wrap->GetOutput()) == 17, "times snap to the nearest step");
+
+  // A parameter change drops the cache.
+  wrap->SetC(2.0);
+  wrap->UpdateTimeStep(10 * 0.015);
+  SW_CHECK(wrap->GetNumberOfComputedSteps() == 10, "changing C drops the cache (" << wrap->GetNumberOfComputedSteps() << ")");
+  wrap->SetC(1.0);
+
+  // The DistanceField port: the same field from Mesh Signed Distance gives the same wrap.
+  vtkNew<vtkMeshSignedDistance> sdf;
+  sdf->SetInputData(box);
+  sdf->SetResolution(64);
+  vtkNew<vtkShrinkWrapFilter> withField;
+  withField->SetInputData(box);
+  withField->SetDistanceFieldConnection(sdf->GetOutputPort());
+  withField->SetNumberOfSteps(30);
+  withField->Update();
+  SW_CHECK(pointsOf(withField->GetOutput()) == middle, "a DistanceField input gives the same wrap");
+
+  // Bad input: an error and an empty output, or a warning; never a crash.
+  vtkNew<vtkShrinkWrapFilter> bad;
+  vtkNew<vtkPolyData> empty;
+  bad->SetInputData(empty);
+  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
+    "a target without polygons: error, empty output");
+  vtkNew<vtkPolyData> nanBox;
+  nanBox->DeepCopy(box);
+  nanBox->GetPoints()->SetPoint(3, std::nan(""), 0, 0);
+  bad->SetInputData(nanBox);
+  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
+    "NaN coordinates: error, empty output");
+  bad->SetInputData(box);
+  bad->SetResolution(32);
+  bad->SetTimeStep(0);
+  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0, "tau = 0: error");
+  bad->SetTimeStep(-1);
+  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0, "tau < 0: error");
+  bad->SetTimeStep(0.015);
+  bad->SetNumberOfSteps(0);
+  bad->Update();
+  SW_CHECK(stepOf(bad->GetOutput()) == 0 && bad->GetOutput()->GetNumberOfPoints() == 642, "N_t = 0: the starting surface");
+  bad->SetNumberOfSteps(5);
+  vtkNew<vtkImageData> noArray;
+  noArray->SetDimensions(4, 4, 4);
+  bad->SetInputData(1, noArray);
+  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0, "a DistanceField without SignedDistance: error");
+  vtkNew<vtkMeshSignedDistance> tight;
+  tight->SetInputData(box);
+  tight->SetResolution(16);
+  tight->SetOffsetFactor(0);
+  bad->SetDistanceFieldConnection(tight->GetOutputPort());
+  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0, "a field that does not contain the start: error");
+  bad->SetInputConnection(1, nullptr);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(2.0);
+  vtkNew<vtkPlane> plane;
+  plane->SetNormal(0, 0, 1);
+  vtkNew<vtkClipPolyData> open;
+  open->SetInputConnection(sphere->GetOutputPort());
+  open->SetClipFunction(plane);
+  bad->SetInitialSurfaceConnection(open->GetOutputPort());
+  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
+    "an open initial surface: error");
+  sphere->SetRadius(1.0); // inside the field, around the target
+  bad->SetInitialSurfaceConnection(sphere->GetOutputPort());
+  bad->Update();
+  SW_CHECK(stepOf(bad->GetOutput()) == 5 && statusOf(bad->GetOutput()) == "ok", "a closed initial surface wraps");
+  return testing::finish("TestShrinkWrapFilter");
+}

@@ -1,8 +1,9 @@
-"""The main job on the default data: the signed distance field of a mesh, saved and pictured.
+"""The main job on the default data: the signed distance field of a mesh, and the mesh shrink-wrapped.
 
 Usage: pvbatch Examples/demo.py <ShrinkWrap plugin .so> [mesh] [output folder]
-Writes <output>/<name>_sdf.vti and <output>/<name>_sdf.png (the zero contour, and a slice coloured by
-signed distance with isolines) and prints a short report.
+Writes, in the output folder: <name>_sdf.vti and <name>_sdf.png (the zero contour, and a slice coloured
+by signed distance with isolines); <name>_wrap.vtp (the final wrap), <name>_wrap.pvd with every 20th
+step in <name>_wrap/, and <name>_wrap.png (the wrap over the target); and prints a short report.
 """
 import os
 import sys
@@ -45,6 +46,71 @@ def show_distance_field(reader, sdf, view):
     view.ResetCamera(*bounds)
 
 
+def shrink_wrap(reader, sdf, out, name, h):
+    """Shrink Wrap with its defaults in the field above; files, picture and report."""
+    wrap = ShrinkWrap(Input=reader, DistanceField=sdf)
+    tau, steps = wrap.TimeStep, wrap.NumberOfSteps
+    start = time.time()
+    wrap.UpdatePipeline(steps * tau)
+    seconds = time.time() - start
+    final = servermanager.Fetch(wrap)
+    SaveData(os.path.join(out, name + "_wrap.vtp"), proxy=wrap)
+
+    # A series of every 20th step, for ParaView's animation.
+    folder = os.path.join(out, name + "_wrap")
+    os.makedirs(folder, exist_ok=True)
+    entries = []
+    for k in range(0, steps + 1, 20):
+        wrap.UpdatePipeline(k * tau)
+        file = "step_%04d.vtp" % k
+        SaveData(os.path.join(folder, file), proxy=wrap)
+        entries.append('    <DataSet timestep="%g" file="%s/%s"/>' % (k * tau, name + "_wrap", file))
+    with open(os.path.join(out, name + "_wrap.pvd"), "w") as pvd:
+        pvd.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n  <Collection>\n')
+        pvd.write("\n".join(entries) + "\n  </Collection>\n</VTKFile>\n")
+
+    # The wrap over the target.
+    view = CreateView("RenderView")
+    view.ViewSize = [1200, 800]
+    view.Background = [1, 1, 1]
+    view.UseColorPaletteForBackground = 0
+    view.OrientationAxesVisibility = 0
+    target = Show(reader, view)
+    target.ColorArrayName = ["POINTS", ""]
+    target.DiffuseColor = [0.75, 0.75, 0.7]
+    view.ViewTime = steps * tau  # the view shows its own time: the last step
+    shown = Show(wrap, view)
+    ColorBy(shown, ("POINTS", "Distance"))
+    shown.SetRepresentationType("Surface With Edges")
+    shown.Opacity = 0.55
+    lut = GetColorTransferFunction("Distance")
+    lut.ApplyPreset("Cool to Warm", True)
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.RescaleTransferFunction(-2 * h, 2 * h)
+    bar = GetScalarBar(lut, view)
+    bar.Title, bar.ComponentTitle = "distance to target", ""
+    bar.TitleColor = bar.LabelColor = [0.1, 0.1, 0.1]
+    shown.SetScalarBarVisibility(view, True)
+    view.CameraPosition = [6.0, -9.0, 9.0]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    view.ResetCamera(*reader.GetDataInformation().GetBounds())
+    png = os.path.join(out, name + "_wrap.png")
+    SaveScreenshot(png, view, ImageResolution=[1200, 800])
+
+    distance = sorted(abs(final.GetPointData().GetArray("Distance").GetValue(i)) for i in range(final.GetNumberOfPoints()))
+    angles = final.GetCellData().GetArray("MinAngle")
+    small = sum(1 for i in range(angles.GetNumberOfTuples()) if angles.GetValue(i) < 20.0)
+    status = final.GetFieldData().GetAbstractArray("Status").GetValue(0)
+    return "\n".join([
+        "Shrink Wrap of %s: %d steps of %g, %d vertices, %.2f s, status %s" % (
+            name, steps, tau, final.GetNumberOfPoints(), seconds, status),
+        "  closeness |d|: median %.2f h, 90th percentile %.2f h (h = %.4g, the field's cell)" % (
+            distance[len(distance) // 2] / h, distance[len(distance) * 9 // 10] / h, h),
+        "  triangles with a minimum angle below 20 degrees: %.1f%%" % (100.0 * small / angles.GetNumberOfTuples()),
+        "  wrote %s_wrap.vtp, %s_wrap.pvd (every 20th step) and %s" % (name, name, png)])
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     plugin = sys.argv[1]
@@ -73,12 +139,15 @@ def main():
     png = os.path.join(out, name + "_sdf.png")
     SaveScreenshot(png, view, ImageResolution=[1200, 800])
 
+    wrap_report = shrink_wrap(reader, sdf, out, name, image.GetSpacing()[0])
+
     low, high = image.GetPointData().GetArray("SignedDistance").GetRange()
     status = image.GetFieldData().GetAbstractArray("DistanceStatus").GetValue(0)
     print("Mesh Signed Distance of %s" % mesh)
     print("  grid %d x %d x %d nodes, cell size %.4g, %.2f s" % (image.GetDimensions() + (image.GetSpacing()[0], seconds)))
     print("  distance range [%.4g, %.4g], %s" % (low, high, status))
     print("  wrote %s and %s" % (vti, png))
+    print(wrap_report)
 
 
 if __name__ == "__main__":

@@ -33,12 +33,18 @@ install_missing() {
 # CGAL's mesh data set (bunny00, armadillo, knot1, elephant-with-holes, ...) from Debian's libcgal-demo.
 fetch_cgal_meshes() {
   local dir="$build/cgal"
-  [ -f "$dir/data/meshes/bunny00.off" ] && return
+  [ -f "$dir/data/meshes/bunny00.obj" ] && return
   echo "== fetching CGAL's meshes (libcgal-demo)"
   mkdir -p "$dir" && (cd "$dir" && rm -f libcgal-demo_*.deb &&
     { apt-get download libcgal-demo >/dev/null 2>&1 || { apt-get update -qq && apt-get download libcgal-demo >/dev/null; }; } &&
     dpkg -x libcgal-demo_*.deb deb &&
     tar xzf deb/usr/share/doc/libcgal-dev/data.tar.gz data/meshes && rm -rf deb libcgal-demo_*.deb)
+  # ParaView reads OBJ but not OFF: the bunny of the GUI test, converted.
+  awk 'BEGIN { n = -1 } /^#/ || NF == 0 { next }
+       n < 0 { if ($1 == "OFF") next; nv = $1; n = 0; next }
+       n < nv { print "v", $1, $2, $3; n++; next }
+       { printf "f"; for (i = 2; i <= $1 + 1; i++) printf " %d", $i + 1; print "" }' \
+    "$dir/data/meshes/bunny00.off" > "$dir/data/meshes/bunny00.obj"
 }
 
 configure_and_build() { # folder, extra cmake arguments...

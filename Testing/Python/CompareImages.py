@@ -1,33 +1,43 @@
-"""Compares images with baselines: CompareImages.py <threshold> <image> <baseline> [<image> <baseline> ...].
-Fails (exit 1) when an image is missing or differs by more than the threshold (vtkImageDifference)."""
+"""Compares images with baselines: CompareImages.py <max share %> <image> <baseline> [<image> <baseline> ...].
+An image fails when it is missing, differs in size, or when more than <max share %> of its pixels differ
+from the baseline by more than 10 (of 255) in some channel. (vtkImageDifference's thresholded error is
+normalised per pixel in this VTK, so a threshold on it hardly ever fails.)"""
 import os
 import sys
 
-from paraview import vtk  # noqa: F401
-from vtkmodules.vtkImagingCore import vtkImageDifference
 from vtkmodules.vtkIOImage import vtkPNGReader
 
-threshold = float(sys.argv[1])
+limit = float(sys.argv[1])
 pairs = list(zip(sys.argv[2::2], sys.argv[3::2]))
+
+
+def pixels(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    scalars = image.GetPointData().GetScalars()
+    return image.GetDimensions(), scalars.GetNumberOfComponents(), scalars
+
+
 failed = 0
 for image, baseline in pairs:
     if not os.path.exists(image):
         print("FAIL %s was not written" % image)
         failed += 1
         continue
-    readers = []
-    for path in (image, baseline):
-        r = vtkPNGReader()
-        r.SetFileName(path)
-        r.Update()
-        readers.append(r)
-    diff = vtkImageDifference()
-    diff.SetInputConnection(readers[0].GetOutputPort())
-    diff.SetImageConnection(readers[1].GetOutputPort())
-    diff.Update()
-    error = diff.GetThresholdedError()
-    ok = error <= threshold
+    (dims, comps, a), (dims_b, comps_b, b) = pixels(image), pixels(baseline)
+    if dims != dims_b or comps != comps_b:
+        print("FAIL %s: size %s x %d, baseline %s x %d" % (os.path.basename(image), dims, comps, dims_b, comps_b))
+        failed += 1
+        continue
+    channels = min(comps, 3)
+    different = sum(
+        1 for i in range(a.GetNumberOfTuples())
+        if max(abs(a.GetComponent(i, c) - b.GetComponent(i, c)) for c in range(channels)) > 10)
+    share = 100.0 * different / a.GetNumberOfTuples()
+    ok = share <= limit
     failed += not ok
-    print("%s %s: error %.2f (threshold %g)" % ("ok  " if ok else "FAIL", os.path.basename(image), error, threshold))
+    print("%s %s: %.2f%% of pixels differ (limit %g%%)" % ("ok  " if ok else "FAIL", os.path.basename(image), share, limit))
 print("%d passed, %d failed" % (len(pairs) - failed, failed))
 sys.exit(1 if failed else 0)

@@ -34,3 +34,12 @@ echo "Milliseconds per step (assembly, redistribution, three solves), median of 
 echo "flow of the unit icosphere with the tables' time steps:"
 echo
 "$build/bin/BenchEvolver"
+
+echo
+echo "## Shrink Wrap beside CGAL's alpha_wrap_3, $(date -u +%Y-%m-%d)"
+echo
+echo "Default parameters, 200 steps; the SDF (Resolution 120) is shown apart and included in the total."
+echo "Distances: the largest from the wrap's vertices to the target and from the target's vertices to"
+echo "the wrap, in percent of the target's diagonal. Wraps at s = 4 are written to $build/wraps."
+mkdir -p "$build/wraps"
+"$build/bin/BenchShrinkWrap" "$build/cgal/data/meshes" "$build/wraps" 2>/dev/null

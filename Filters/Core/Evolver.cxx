@@ -138,20 +138,14 @@ StepReport Evolver::check(const std::vector<Vec3>& y) const
       return report;
     }
   }
-  const auto& tris = this->Mesh.triangles();
-  for (int t = 0; t < this->Mesh.triangleCount(); ++t)
+  const SmallestAngle smallest = smallestAngle(this->Mesh, y);
+  if (!(smallest.angle >= this->Settings.minAngle))
   {
-    const auto& v = tris[t];
-    const auto a = triangleAngles(y[v[0]], y[v[1]], y[v[2]]);
-    const double smallest = std::min({ a[0], a[1], a[2] });
-    if (!(smallest >= this->Settings.minAngle))
-    {
-      message << "triangle " << t << " degenerated (smallest angle " << smallest << " rad) at step " << report.step;
-      report.failure = Failure::DegenerateTriangle;
-      report.where = t;
-      report.message = message.str();
-      return report;
-    }
+    message << "triangle " << smallest.triangle << " degenerated (smallest angle " << smallest.angle
+            << " rad) at step " << report.step;
+    report.failure = Failure::DegenerateTriangle;
+    report.where = smallest.triangle;
+    report.message = message.str();
   }
   return report;
 }

@@ -68,20 +68,50 @@ void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& x, Surfac
     }
   });
   g.area = 0;
-  g.minAngle = M_PI;
-  g.minAngleTriangle = -1;
   for (int t = 0; t < nt; ++t)
   {
     g.area += g.triangleArea[t];
-    const auto& v = tris[t];
-    const auto a = triangleAngles(x[v[0]], x[v[1]], x[v[2]]);
-    const double m = std::min({ a[0], a[1], a[2] });
-    if (m < g.minAngle)
+  }
+}
+
+double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const double ab = (b - a).squaredNorm(), bc = (c - b).squaredNorm(), ca = (a - c).squaredNorm();
+  if (bc <= ab && bc <= ca)
+  {
+    return angle(b - a, c - a); // opposite bc, at a
+  }
+  return ca <= ab ? angle(c - b, a - b) : angle(a - c, b - c);
+}
+
+SmallestAngle smallestAngle(const SurfaceMesh& mesh, const std::vector<Vec3>& x)
+{
+  const auto& tris = mesh.triangles();
+  std::vector<SmallestAngle> parts(std::max(1, mesh.triangleCount() / 4096 + 1));
+  const int n = mesh.triangleCount(), chunk = (n + static_cast<int>(parts.size()) - 1) / static_cast<int>(parts.size());
+  vtkSMPTools::For(0, static_cast<int>(parts.size()), [&](int b, int e) {
+    for (int p = b; p < e; ++p)
     {
-      g.minAngle = m;
-      g.minAngleTriangle = t;
+      for (int t = p * chunk; t < std::min(n, (p + 1) * chunk); ++t)
+      {
+        const auto& v = tris[t];
+        const double m = smallestAngle(x[v[0]], x[v[1]], x[v[2]]);
+        if (!(m >= parts[p].angle)) // NaN counts as smallest
+        {
+          parts[p] = { m, t };
+        }
+      }
+    }
+  });
+  SmallestAngle result;
+  for (const SmallestAngle& part : parts)
+  {
+    if (part.triangle >= 0 && !(part.angle >= result.angle))
+    {
+      result = part;
     }
   }
+  return result;
 }
 
 } // namespace shrinkwrap

@@ -7,6 +7,7 @@
 
 #include "SurfaceMesh.h"
 
+#include <cmath>
 #include <vector>
 
 namespace shrinkwrap
@@ -20,14 +21,23 @@ struct SurfaceGeometry
   std::vector<double> weight;    // w_ij, indexed like the one-rings
   std::vector<Vec3> curvature;   // h_i
   double area = 0;               // total
-  double minAngle = 0;           // smallest triangle angle (radians)
-  int minAngleTriangle = -1;
 };
 
 void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& points, SurfaceGeometry& g);
 
 // Angles of triangle (a, b, c) at a, b and c.
 std::array<double, 3> triangleAngles(const Vec3& a, const Vec3& b, const Vec3& c);
+
+// The smallest angle of a triangle (radians): the one opposite its shortest edge, one atan2.
+double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c);
+
+struct SmallestAngle
+{
+  double angle = M_PI; // radians
+  int triangle = -1;
+};
+// The smallest triangle angle of the surface, and where (in parallel).
+SmallestAngle smallestAngle(const SurfaceMesh& mesh, const std::vector<Vec3>& points);
 
 } // namespace shrinkwrap
 

@@ -161,7 +161,7 @@ Shape ellipsoidFlow(Redistribution redistribution, int steps)
     meanMin += std::min({ a[0], a[1], a[2] });
   }
   meanMin /= mesh.triangleCount();
-  return { *hi / *lo, g.minAngle * 180 / M_PI, meanMin * 180 / M_PI };
+  return { *hi / *lo, smallestAngle(mesh, x).angle * 180 / M_PI, meanMin * 180 / M_PI };
 }
 
 void redistributionDoesItsJob()

@@ -58,6 +58,29 @@ double smallAngleShare(const TriangleSoup& soup)
   return 100.0 * small / soup.triangles.size();
 }
 
+void write(const TriangleSoup& soup, const std::string& path)
+{
+  vtkNew<vtkPoints> points;
+  for (const Vec3& p : soup.points)
+  {
+    points->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> triangles;
+  for (const auto& t : soup.triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(triangles);
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  writer->SetDataModeToBinary(); // inline: this ParaView's reader rejects its own appended base64 here
+  writer->Write();
+}
+
 void row(const std::string& method, double sdf, double total, const TriangleSoup& wrap, const TriangleSoup& target,
   const std::string& status)
 {
@@ -111,10 +134,7 @@ int main(int argc, char* argv[])
         status ? status->GetValue(0) : "none");
       if (!out.empty() && level == 4)
       {
-        vtkNew<vtkXMLPolyDataWriter> writer;
-        writer->SetInputData(result);
-        writer->SetFileName((out + "/" + name + "_shrinkwrap_s4.vtp").c_str());
-        writer->Write();
+        write(testing::triangulated(result), out + "/" + name + "_shrinkwrap_s4.vtp");
       }
     }
 
@@ -156,6 +176,10 @@ int main(int argc, char* argv[])
         soup.triangles.push_back(tri);
       }
       row("alpha_wrap_3 diag/" + std::to_string(divisor), 0, total, soup, target, "ok");
+      if (!out.empty() && divisor == 50)
+      {
+        write(soup, out + "/" + name + "_alphawrap_50.vtp");
+      }
     }
   }
   return 0;

@@ -1,0 +1,33 @@
+"""Renders Shrink Wrap (s = 4) and CGAL's alpha wrap (diag/50) of a mesh side by side, edges shown.
+Usage: xvfb-run -a pvbatch render_wraps.py <folder with the benchmark's .vtp files> <name> <out.png>"""
+import os
+import sys
+
+from paraview.simple import *  # noqa: F401,F403
+
+folder, name, png = sys.argv[1], sys.argv[2], sys.argv[3]
+layout = CreateLayout("wraps")
+views = []
+for i, (file, title) in enumerate([(name + "_shrinkwrap_s4.vtp", "Shrink Wrap, s = 4 (2562 vertices)"),
+                                   (name + "_alphawrap_50.vtp", "CGAL alpha_wrap_3, alpha = diag/50")]):
+    view = CreateView("RenderView")
+    AssignViewToLayout(view=view, layout=layout, hint=i)
+    view.OrientationAxesVisibility = 0
+    view.Background = [1, 1, 1]
+    view.UseColorPaletteForBackground = 0
+    shown = Show(XMLPolyDataReader(FileName=[os.path.join(folder, file)]), view)
+    shown.SetRepresentationType("Surface With Edges")
+    shown.AmbientColor = shown.DiffuseColor = [0.85, 0.85, 0.8]
+    shown.EdgeColor = [0.2, 0.2, 0.5]
+    text = Text(Text=title)
+    label = Show(text, view)
+    label.Color = [0.1, 0.1, 0.1]
+    label.FontSize = 14
+    view.CameraPosition = [0.0, 0.0, 1.0]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    ResetCamera(view)
+    views.append(view)
+layout.SetSize(1400, 650)
+SaveScreenshot(png, layout, ImageResolution=[1400, 650])
+print("wrote", png)

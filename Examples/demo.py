@@ -46,6 +46,26 @@ def show_distance_field(reader, sdf, view):
     view.ResetCamera(*bounds)
 
 
+def show_wrap(reader, wrap, view, h):
+    """The picture of a wrap: the target in grey under the wrap's edges, coloured by distance (+-2 h)."""
+    view.OrientationAxesVisibility = 0
+    target = Show(reader, view)
+    target.ColorArrayName = ["POINTS", ""]
+    target.DiffuseColor = [0.75, 0.75, 0.7]
+    shown = Show(wrap, view)
+    ColorBy(shown, ("POINTS", "Distance"))
+    shown.SetRepresentationType("Surface With Edges")
+    shown.Opacity = 0.55
+    lut = GetColorTransferFunction("Distance")
+    lut.ApplyPreset("Cool to Warm", True)
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.RescaleTransferFunction(-2 * h, 2 * h)
+    bar = GetScalarBar(lut, view)
+    bar.Title, bar.ComponentTitle = "distance to target", ""
+    bar.TitleColor = bar.LabelColor = [0.1, 0.1, 0.1]
+    shown.SetScalarBarVisibility(view, True)
+
+
 def shrink_wrap(reader, sdf, out, name, h):
     """Shrink Wrap with its defaults in the field above; files, picture and report."""
     wrap = ShrinkWrap(Input=reader, DistanceField=sdf)
@@ -74,23 +94,8 @@ def shrink_wrap(reader, sdf, out, name, h):
     view.ViewSize = [1200, 800]
     view.Background = [1, 1, 1]
     view.UseColorPaletteForBackground = 0
-    view.OrientationAxesVisibility = 0
-    target = Show(reader, view)
-    target.ColorArrayName = ["POINTS", ""]
-    target.DiffuseColor = [0.75, 0.75, 0.7]
     view.ViewTime = steps * tau  # the view shows its own time: the last step
-    shown = Show(wrap, view)
-    ColorBy(shown, ("POINTS", "Distance"))
-    shown.SetRepresentationType("Surface With Edges")
-    shown.Opacity = 0.55
-    lut = GetColorTransferFunction("Distance")
-    lut.ApplyPreset("Cool to Warm", True)
-    lut.AutomaticRescaleRangeMode = "Never"
-    lut.RescaleTransferFunction(-2 * h, 2 * h)
-    bar = GetScalarBar(lut, view)
-    bar.Title, bar.ComponentTitle = "distance to target", ""
-    bar.TitleColor = bar.LabelColor = [0.1, 0.1, 0.1]
-    shown.SetScalarBarVisibility(view, True)
+    show_wrap(reader, wrap, view, h)
     view.CameraPosition = [6.0, -9.0, 9.0]
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]

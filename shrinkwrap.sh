@@ -16,7 +16,7 @@ packages=(cmake ninja-build g++ paraview paraview-dev python3-paraview libeigen3
   libboost-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libgl2ps-dev libglew-dev
   libtheora-dev libtiff-dev libjpeg-dev liblz4-dev liblzma-dev libdouble-conversion-dev libutfcpp-dev
   libexpat1-dev libfreetype-dev libpng-dev libxml2-dev mpi-default-dev libx11-dev libgl-dev xvfb xauth)
-[ "$mode" = bench ] && packages+=(libopenvdb-dev libboost-iostreams-dev)
+[ "$mode" = bench ] && packages+=(libopenvdb-dev libboost-iostreams-dev libcgal-dev)
 
 install_missing() {
   local missing=()

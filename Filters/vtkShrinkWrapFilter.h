@@ -25,7 +25,7 @@
  * (eq. (4)), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
  * RhoA = 1 (A of eq. (10)), AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates
  * scaled so that the mean co-volume of the sphere inscribed in the target's box is tau), SolverTolerance
- * 1e-8, Resolution 120 (of the internal distance field), CacheMemoryLimit 512 MiB.
+ * 1e-6, Resolution 120 (of the internal distance field), CacheMemoryLimit 512 MiB.
  */
 #ifndef vtkShrinkWrapFilter_h
 #define vtkShrinkWrapFilter_h
@@ -102,7 +102,7 @@ public:
   vtkBooleanMacro(AutomaticScaling, bool);
   ///@}
   ///@{
-  /// Relative residual of the linear solves. Default 1e-8.
+  /// Relative residual of the linear solves. Default 1e-6 (positions to about 1e-6 of the scaled size).
   vtkSetMacro(SolverTolerance, double);
   vtkGetMacro(SolverTolerance, double);
   ///@}
@@ -141,7 +141,7 @@ protected:
   double OmegaVolume = 1.0;
   double RhoA = 1.0;
   bool AutomaticScaling = true;
-  double SolverTolerance = 1e-8;
+  double SolverTolerance = 1e-6;
   int Resolution = 120;
   double CacheMemoryLimit = 512;
 

@@ -272,7 +272,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   const Vec3 size = targetBox.size();
   const double radius = 0.5 * std::max(size.minCoeff(), 1e-3 * size.maxCoeff());
   const double phi = this->AutomaticScaling
-    ? std::sqrt(this->TimeStep * session->mesh.vertexCount() / (4.0 * M_PI * radius * radius))
+    ? stabilityScale(this->TimeStep, radius, static_cast<long long>(session->mesh.vertexCount()))
     : 1.0;
 
   EvolverSettings settings;

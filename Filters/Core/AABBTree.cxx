@@ -108,7 +108,6 @@ void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int ind
   if (mid <= begin || mid >= end)
   {
     nodes[index] = { box, begin, count };
-    this->Depth = std::max(this->Depth, depth);
     return;
   }
   // Siblings sit next to each other, so an inner node needs one child index.
@@ -127,7 +126,6 @@ void AABBTree::buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings&
   SplitScratch scratch;
   this->build(this->Nodes, prims, 0, 0, static_cast<int>(prims.size()), 1, s, scratch, &subtrees);
   std::vector<std::vector<Node>> parts(subtrees.size());
-  std::vector<int> depths(subtrees.size(), 0);
   vtkSMPTools::For(0, static_cast<int>(subtrees.size()), 1, [&](int b, int e) {
     for (int t = b; t < e; ++t)
     {
@@ -137,7 +135,6 @@ void AABBTree::buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings&
       const Subtree& st = subtrees[t];
       local.build(local.Nodes, prims, 0, st.begin, st.end, st.depth, s, localScratch, nullptr);
       parts[t] = std::move(local.Nodes);
-      depths[t] = local.Depth;
     }
   });
   for (std::size_t t = 0; t < subtrees.size(); ++t)
@@ -160,7 +157,6 @@ void AABBTree::buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings&
         this->Nodes.push_back(node);
       }
     }
-    this->Depth = std::max(this->Depth, depths[t]);
   }
 }
 
@@ -299,35 +295,6 @@ ClosestHit AABBTree::closestPoint(const Vec3& p, double maxSquaredDistance) cons
     }
   }
   return hit;
-}
-
-void AABBTree::trianglesOverlapping(const Box& box, std::vector<int>& out) const
-{
-  if (this->Order.empty())
-  {
-    return;
-  }
-  int stack[2 * kMaxDepth + 2];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0)
-  {
-    const Node& node = this->Nodes[stack[--top]];
-    if (!node.box.overlaps(box))
-    {
-      continue;
-    }
-    if (node.count > 0)
-    {
-      for (int k = node.first; k < node.first + node.count; ++k)
-      {
-        out.push_back(this->Order[k]);
-      }
-      continue;
-    }
-    stack[top++] = node.first;
-    stack[top++] = node.first + 1;
-  }
 }
 
 } // namespace shrinkwrap

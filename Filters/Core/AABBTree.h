@@ -1,7 +1,8 @@
 // AABB tree over a triangle soup (Algorithm 1, line 1): a binary bounding-volume hierarchy whose
 // splits minimise the surface-area heuristic. Split candidates follow Hunt, Mark & Stoll (2006) [4]:
 // a few uniform samples first, then more samples placed where the primitive count changes fastest.
-// Queries: closest point (with the feature it lies on) and triangles overlapping a box.
+// Query: the closest point, with the feature it lies on. (The octree outline passes each node's
+// triangles on to its children, so it needs no box query.)
 #ifndef ShrinkWrap_AABBTree_h
 #define ShrinkWrap_AABBTree_h
 
@@ -40,12 +41,7 @@ public:
   ClosestHit closestPoint(
     const Vec3& p, double maxSquaredDistance = std::numeric_limits<double>::infinity()) const;
 
-  // Indices (into the soup) of triangles whose bounding boxes overlap box.
-  void trianglesOverlapping(const Box& box, std::vector<int>& out) const;
-
   const Box& bounds() const { return this->Nodes.front().box; }
-  int depth() const { return this->Depth; }
-  std::size_t nodeCount() const { return this->Nodes.size(); }
 
 private:
   struct Node
@@ -76,7 +72,6 @@ private:
   std::vector<Node> Nodes;
   std::vector<int> Order;                    // soup triangle index per leaf slot
   std::vector<std::array<Vec3, 3>> Corners;  // triangle corners in leaf order, for locality
-  int Depth = 0;
 };
 
 } // namespace shrinkwrap

@@ -44,10 +44,6 @@ struct Box
     const Vec3 d = (this->min - p).cwiseMax(p - this->max).cwiseMax(0.0);
     return d.squaredNorm();
   }
-  bool overlaps(const Box& b) const
-  {
-    return (this->min.array() <= b.max.array()).all() && (b.min.array() <= this->max.array()).all();
-  }
 };
 
 } // namespace shrinkwrap

@@ -7,14 +7,24 @@
 namespace shrinkwrap
 {
 
+double meanCoVolume(double radius, long long vertexCount)
+{
+  return 4.0 * M_PI * radius * radius / static_cast<double>(vertexCount);
+}
+
 double meanCoVolume(double radius, int level)
 {
-  return 4.0 * M_PI * radius * radius / static_cast<double>(icosphereVertexCount(level));
+  return meanCoVolume(radius, icosphereVertexCount(level));
+}
+
+double stabilityScale(double timeStep, double radius, long long vertexCount)
+{
+  return std::sqrt(timeStep / meanCoVolume(radius, vertexCount));
 }
 
 double stabilityScale(double timeStep, double radius, int level)
 {
-  return std::sqrt(timeStep / meanCoVolume(radius, level));
+  return stabilityScale(timeStep, radius, icosphereVertexCount(level));
 }
 
 } // namespace shrinkwrap

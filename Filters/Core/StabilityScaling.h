@@ -9,10 +9,13 @@
 namespace shrinkwrap
 {
 
-// mu_r(V) of eq. (8).
+// mu_r(V) of eq. (8) for a sphere of radius r with N_V vertices (an icosphere of level s has
+// icosphereVertexCount(s), eq. (9)).
+double meanCoVolume(double radius, long long vertexCount);
 double meanCoVolume(double radius, int level);
 
 // phi such that phi^2 mu_r(V) = tau.
+double stabilityScale(double timeStep, double radius, long long vertexCount);
 double stabilityScale(double timeStep, double radius, int level);
 
 } // namespace shrinkwrap

@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <sstream>
 
 vtkStandardNewMacro(vtkShrinkWrapFilter);
@@ -111,19 +112,36 @@ struct vtkShrinkWrapFilter::Session
 {
   vtkMTimeType key = 0;
   DistanceGrid field;
-  SurfaceMesh mesh;
   std::unique_ptr<Evolver> evolver;
+  using Triangles = std::shared_ptr<const std::vector<std::array<int, 3>>>;
   struct Step
   {
     std::vector<Vec3> positions;
     std::vector<Vec3> tangentialVelocity;
+    Triangles triangles; // shared by consecutive steps without flips
   };
+  Triangles evolverTriangles; // the evolver's current connectivity
   std::map<int, Step> cache;
   int newest = 0;
   int lastGood = -1; // set when a step failed: the last step that did not
   std::string failure;
   int computed = 0;
   int stride = 1; // cached steps kept: multiples of stride, and the newest
+
+  double cacheBytes() const
+  {
+    std::set<const void*> lists;
+    double bytes = 0;
+    for (const auto& entry : this->cache)
+    {
+      bytes += 2.0 * sizeof(Vec3) * entry.second.positions.size();
+      if (lists.insert(entry.second.triangles.get()).second)
+      {
+        bytes += sizeof(std::array<int, 3>) * entry.second.triangles->size();
+      }
+    }
+    return bytes;
+  }
 };
 
 vtkShrinkWrapFilter::vtkShrinkWrapFilter()
@@ -252,7 +270,8 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   {
     start = icosphere(this->SubdivisionLevel, targetBox.center(), 0.5 * 1.05 * targetBox.diagonal());
   }
-  if (!SurfaceMesh::build(start.points, start.triangles, session->mesh, error))
+  SurfaceMesh mesh;
+  if (!SurfaceMesh::build(start.points, start.triangles, mesh, error))
   {
     vtkErrorMacro("The starting surface cannot evolve: " << error << ".");
     return false;
@@ -272,7 +291,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   const Vec3 size = targetBox.size();
   const double radius = 0.5 * std::max(size.minCoeff(), 1e-3 * size.maxCoeff());
   const double phi = this->AutomaticScaling
-    ? stabilityScale(this->TimeStep, radius, static_cast<long long>(session->mesh.vertexCount()))
+    ? stabilityScale(this->TimeStep, radius, static_cast<long long>(mesh.vertexCount()))
     : 1.0;
 
   EvolverSettings settings;
@@ -287,15 +306,20 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   settings.omegaAngle = this->OmegaAngle;
   settings.omegaVolume = this->OmegaVolume;
   settings.rhoA = this->RhoA;
+  settings.distanceWeight = this->DistanceWeighting;
+  settings.edgeFlips = this->EdgeFlips;
+  settings.flips.maxDihedral = this->FlipDihedralLimit * M_PI / 180.0;
   settings.solverTolerance = this->SolverTolerance;
   session->evolver =
-    std::make_unique<Evolver>(session->mesh, settings, &session->field, domain, phi, targetBox.center());
+    std::make_unique<Evolver>(mesh, settings, &session->field, domain, phi, targetBox.center());
   if (!session->evolver->error().empty())
   {
     vtkErrorMacro("Cannot wrap: " << session->evolver->error() << ".");
     return false;
   }
-  session->cache[0] = { session->evolver->positions(), std::vector<Vec3>(start.points.size(), Vec3::Zero()) };
+  session->evolverTriangles = std::make_shared<const std::vector<std::array<int, 3>>>(mesh.triangles());
+  session->cache[0] = { session->evolver->positions(), std::vector<Vec3>(start.points.size(), Vec3::Zero()),
+    session->evolverTriangles };
   this->Current = std::move(session);
   return true;
 }
@@ -350,6 +374,11 @@ int vtkShrinkWrapFilter::RequestData(
     if (s.evolver->steps() != base->first)
     {
       s.evolver->restart(base->second.positions, base->first);
+      if (base->second.triangles != s.evolverTriangles)
+      {
+        s.evolver->reconnect(*base->second.triangles);
+        s.evolverTriangles = base->second.triangles;
+      }
     }
     const int first = base->first;
     bool aborted = false;
@@ -364,7 +393,12 @@ int vtkShrinkWrapFilter::RequestData(
           s.failure = report.message;
           break;
         }
-        s.cache[k] = { s.evolver->positions(), s.evolver->tangentialVelocity() };
+        if (report.flips > 0)
+        {
+          s.evolverTriangles =
+            std::make_shared<const std::vector<std::array<int, 3>>>(s.evolver->mesh().triangles());
+        }
+        s.cache[k] = { s.evolver->positions(), s.evolver->tangentialVelocity(), s.evolverTriangles };
         s.newest = std::max(s.newest, k);
         this->UpdateProgress(static_cast<double>(k - first) / (shown - first));
         if (this->GetAbortExecute())
@@ -384,8 +418,7 @@ int vtkShrinkWrapFilter::RequestData(
       vtkWarningMacro("The evolution failed: " << s.failure << "; later times show step " << s.lastGood << ".");
     }
     // Keep the cache under its memory limit: drop every other step, keeping step 0 and the newest.
-    const double bytesPerStep = 2.0 * sizeof(Vec3) * s.mesh.vertexCount();
-    while (s.cache.size() > 2 && s.cache.size() * bytesPerStep > this->CacheMemoryLimit * 1024 * 1024)
+    while (s.cache.size() > 2 && s.cacheBytes() > this->CacheMemoryLimit * 1024 * 1024)
     {
       s.stride *= 2;
       for (auto it = s.cache.begin(); it != s.cache.end();)
@@ -401,8 +434,15 @@ int vtkShrinkWrapFilter::RequestData(
   // The surface and its arrays.
   const std::vector<Vec3>& x = entry.positions;
   const int nv = static_cast<int>(x.size());
+  SurfaceMesh mesh;
+  std::string error;
+  if (!SurfaceMesh::build(x, *entry.triangles, mesh, error))
+  {
+    vtkErrorMacro("Internal error: step " << found->first << " is not a closed surface: " << error << ".");
+    return 1;
+  }
   SurfaceGeometry g;
-  computeGeometry(s.mesh, x, g);
+  computeGeometry(mesh, x, g);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(nv);
@@ -431,7 +471,7 @@ int vtkShrinkWrapFilter::RequestData(
     const Vec3& v = entry.tangentialVelocity[i];
     tangential->SetTuple3(i, v.x(), v.y(), v.z());
   }
-  const int nt = s.mesh.triangleCount();
+  const int nt = mesh.triangleCount();
   vtkNew<vtkCellArray> triangles;
   vtkNew<vtkFloatArray> minAngle, maxAngle, jacobian;
   named(minAngle.Get(), "MinAngle", 1, nt);
@@ -439,7 +479,7 @@ int vtkShrinkWrapFilter::RequestData(
   named(jacobian.Get(), "JacobianCondition", 1, nt);
   for (int t = 0; t < nt; ++t)
   {
-    const auto& tri = s.mesh.triangles()[t];
+    const auto& tri = mesh.triangles()[t];
     const vtkIdType ids[3] = { tri[0], tri[1], tri[2] };
     triangles->InsertNextCell(3, ids);
     const TriangleQuality q = triangleQuality(x[tri[0]], x[tri[1]], x[tri[2]]);
@@ -490,6 +530,9 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OmegaAngle: " << this->OmegaAngle << "\n";
   os << indent << "OmegaVolume: " << this->OmegaVolume << "\n";
   os << indent << "RhoA: " << this->RhoA << "\n";
+  os << indent << "DistanceWeighting: " << this->DistanceWeighting << "\n";
+  os << indent << "EdgeFlips: " << this->EdgeFlips << "\n";
+  os << indent << "FlipDihedralLimit: " << this->FlipDihedralLimit << "\n";
   os << indent << "AutomaticScaling: " << this->AutomaticScaling << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";

@@ -23,7 +23,8 @@
  * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
  * NumberOfSteps N_t = 200, SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 1 and D = 0
  * (eq. (4)), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
- * RhoA = 1 (A of eq. (10)), AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates
+ * DistanceWeighting off (rho(d) of eq. (10)) with RhoA = 1 (its A), EdgeFlips on with FlipDihedralLimit
+ * 60 degrees (flips change the triangles from step to step, never the vertices), AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates
  * scaled so that the mean co-volume of the sphere inscribed in the target's box is tau), SolverTolerance
  * 1e-6, Resolution 120 (of the internal distance field), CacheMemoryLimit 512 MiB.
  */
@@ -96,6 +97,26 @@ public:
   vtkGetMacro(RhoA, double);
   ///@}
   ///@{
+  /// Weight omega_angle by rho(d) of eq. (10). Default off: rho vanishes on the target, where angles
+  /// matter most, and with edge flips the full weight is stable.
+  vtkSetMacro(DistanceWeighting, bool);
+  vtkGetMacro(DistanceWeighting, bool);
+  vtkBooleanMacro(DistanceWeighting, bool);
+  ///@}
+  ///@{
+  /// Flip edges after each step where that raises the smallest angle of the two triangles (the
+  /// connectivity adjustment of the paper's Section 5; the vertices stay). Default on.
+  vtkSetMacro(EdgeFlips, bool);
+  vtkGetMacro(EdgeFlips, bool);
+  vtkBooleanMacro(EdgeFlips, bool);
+  ///@}
+  ///@{
+  /// The largest angle (degrees) between the normals of two triangles whose edge may flip, so that
+  /// flips never cut across a ridge. Default 60.
+  vtkSetClampMacro(FlipDihedralLimit, double, 0.0, 180.0);
+  vtkGetMacro(FlipDihedralLimit, double);
+  ///@}
+  ///@{
   /// Scale the evolution for stability (Section 2.4). Default on.
   vtkSetMacro(AutomaticScaling, bool);
   vtkGetMacro(AutomaticScaling, bool);
@@ -140,6 +161,9 @@ protected:
   double OmegaAngle = 0.5;
   double OmegaVolume = 1.0;
   double RhoA = 1.0;
+  bool DistanceWeighting = false;
+  bool EdgeFlips = true;
+  double FlipDihedralLimit = 60.0;
   bool AutomaticScaling = true;
   double SolverTolerance = 1e-6;
   int Resolution = 120;

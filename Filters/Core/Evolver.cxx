@@ -1,16 +1,31 @@
 #include "Evolver.h"
 
+#include "EdgeFlips.h"
 #include "TangentialRedistribution.h"
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 #include <vtkSMPTools.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace shrinkwrap
 {
+
+namespace
+{
+template <typename Iterative, typename Matrix, typename Column, typename Result>
+bool solveColumn(Iterative& solver, const Matrix& matrix, double tolerance, const Column& rhs, const Column& guess,
+  Result&& solution)
+{
+  solver.setTolerance(tolerance);
+  solver.compute(matrix);
+  solution = solver.solveWithGuess(rhs, guess);
+  return solver.info() == Eigen::Success;
+}
+} // namespace
 
 // The system matrix keeps its sparsity pattern for the whole evolution; only values change.
 struct Evolver::Solver
@@ -19,38 +34,38 @@ struct Evolver::Solver
   Matrix matrix;
   std::vector<int> diagonal; // value index of (i, i)
   std::vector<int> offDiagonal; // value index of (i, ring(p)), per one-ring entry p
-  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper> cg;
-  Eigen::BiCGSTAB<Matrix> bicgstab;
+  std::array<Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper>, 3> cg;
+  std::array<Eigen::BiCGSTAB<Matrix>, 3> bicgstab;
 
+  // The pattern straight from the one-rings (rebuilt after every round of edge flips): row i holds
+  // i and its neighbours, in column order.
   explicit Solver(const SurfaceMesh& mesh)
   {
     const int nv = mesh.vertexCount();
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int i = 0; i < nv; ++i)
-    {
-      entries.emplace_back(i, i, 1.0);
-      for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
-      {
-        entries.emplace_back(i, mesh.ring(p), 1.0);
-      }
-    }
     this->matrix.resize(nv, nv);
-    this->matrix.setFromTriplets(entries.begin(), entries.end());
-    this->matrix.makeCompressed();
+    this->matrix.resizeNonZeros(mesh.ringEnd(nv - 1) + nv);
+    int* outer = this->matrix.outerIndexPtr();
+    int* inner = this->matrix.innerIndexPtr();
+    std::fill(this->matrix.valuePtr(), this->matrix.valuePtr() + this->matrix.nonZeros(), 0.0);
     this->diagonal.resize(nv);
     this->offDiagonal.resize(mesh.ringEnd(nv - 1));
-    const int* outer = this->matrix.outerIndexPtr();
-    const int* inner = this->matrix.innerIndexPtr();
-    auto find = [&](int row, int column) {
-      return static_cast<int>(std::lower_bound(inner + outer[row], inner + outer[row + 1], column) - inner);
-    };
+    std::vector<std::pair<int, int>> row; // (column, ring entry or -1 for the diagonal)
+    outer[0] = 0;
     for (int i = 0; i < nv; ++i)
     {
-      this->diagonal[i] = find(i, i);
+      row.assign(1, { i, -1 });
       for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
       {
-        this->offDiagonal[p] = find(i, mesh.ring(p));
+        row.emplace_back(mesh.ring(p), p);
       }
+      std::sort(row.begin(), row.end());
+      for (std::size_t k = 0; k < row.size(); ++k)
+      {
+        const int at = outer[i] + static_cast<int>(k);
+        inner[at] = row[k].first;
+        (row[k].second < 0 ? this->diagonal[i] : this->offDiagonal[row[k].second]) = at;
+      }
+      outer[i + 1] = outer[i] + static_cast<int>(row.size());
     }
   }
 };
@@ -177,7 +192,7 @@ StepReport Evolver::step()
   if (s.redistribution == Redistribution::Angle)
   {
     std::vector<double> weights(nv, s.omegaAngle);
-    if (this->Field)
+    if (this->Field && s.distanceWeight)
     {
       for (int i = 0; i < nv; ++i)
       {
@@ -223,28 +238,25 @@ StepReport Evolver::step()
     rhs.row(i) = b.transpose();
     guess.row(i) = this->Y[i].transpose();
   }
+  // The three coordinates are independent systems with one matrix: solved side by side, one solver
+  // object each (a solve writes its own iteration counts).
   Eigen::MatrixXd solution(nv, 3);
-  bool converged = true;
-  if (symmetric)
-  {
-    L.cg.setTolerance(s.solverTolerance);
-    L.cg.compute(L.matrix);
-    for (int c = 0; c < 3; ++c)
+  std::array<bool, 3> solved{};
+  vtkSMPTools::For(0, 3, 1, [&](int b, int e) {
+    for (int c = b; c < e; ++c)
     {
-      solution.col(c) = L.cg.solveWithGuess(rhs.col(c), guess.col(c));
-      converged = converged && L.cg.info() == Eigen::Success;
+      if (symmetric)
+      {
+        solved[c] = solveColumn(L.cg[c], L.matrix, s.solverTolerance, rhs.col(c), guess.col(c), solution.col(c));
+      }
+      else
+      {
+        solved[c] =
+          solveColumn(L.bicgstab[c], L.matrix, s.solverTolerance, rhs.col(c), guess.col(c), solution.col(c));
+      }
     }
-  }
-  else
-  {
-    L.bicgstab.setTolerance(s.solverTolerance);
-    L.bicgstab.compute(L.matrix);
-    for (int c = 0; c < 3; ++c)
-    {
-      solution.col(c) = L.bicgstab.solveWithGuess(rhs.col(c), guess.col(c));
-      converged = converged && L.bicgstab.info() == Eigen::Success;
-    }
-  }
+  });
+  const bool converged = solved[0] && solved[1] && solved[2];
   std::vector<Vec3> next(nv);
   for (int i = 0; i < nv; ++i)
   {
@@ -263,6 +275,15 @@ StepReport Evolver::step()
   this->Y.swap(next);
   this->VT.swap(vt);
   ++this->Steps;
+  if (s.edgeFlips)
+  {
+    std::vector<std::array<int, 3>> triangles;
+    report.flips = flipEdges(this->Mesh, this->Y, s.flips, triangles);
+    if (report.flips > 0 && !this->reconnect(triangles))
+    {
+      report.flips = 0;
+    }
+  }
   return report;
 }
 
@@ -286,6 +307,19 @@ void Evolver::restart(const std::vector<Vec3>& x, int steps)
   this->Steps = steps;
   this->Potential.clear();
   std::fill(this->VT.begin(), this->VT.end(), Vec3::Zero());
+}
+
+bool Evolver::reconnect(const std::vector<std::array<int, 3>>& triangles)
+{
+  SurfaceMesh mesh;
+  std::string error;
+  if (!SurfaceMesh::build(this->Y, triangles, mesh, error))
+  {
+    return false;
+  }
+  this->Mesh = std::move(mesh);
+  this->Linear = std::make_unique<Solver>(this->Mesh);
+  return true;
 }
 
 SurfaceGeometry Evolver::geometry() const

@@ -10,6 +10,7 @@
 #define ShrinkWrap_Evolver_h
 
 #include "DistanceGrid.h"
+#include "EdgeFlips.h"
 #include "SurfaceGeometry.h"
 
 #include <memory>
@@ -42,7 +43,12 @@ struct EvolverSettings
   Redistribution redistribution = Redistribution::None;
   double omegaAngle = 0.5;      // omega_angle (paper Fig. 11)
   double omegaVolume = 1.0;     // omega_vol (paper Table 3)
-  double rhoA = 1.0;            // A of rho(d) = A (1 - exp(-d^2)), eq. (10), weighting omega_angle with a field
+  // The paper's scheme by default; the filter turns on edge flips and turns off rho, which vanishes on
+  // the target: with flips the full angle weight is stable and keeps angles good where it matters.
+  bool distanceWeight = true;   // weight omega_angle by rho(d) = A (1 - exp(-d^2)), eq. (10)
+  double rhoA = 1.0;            // A
+  bool edgeFlips = false;       // flip edges after each step (EdgeFlips.h)
+  FlipSettings flips;
   bool volumePerArea = true;    // v_T = (integral of grad psi over V_i) / |V_i|; false: the paper's code
   LinearSolver solver = LinearSolver::ConjugateGradient;
   double solverTolerance = 1e-10; // relative residual
@@ -64,6 +70,7 @@ struct StepReport
   int step = 0;      // the step that failed, counted from 1
   int where = -1;    // the vertex or triangle concerned
   std::string message;
+  int flips = 0;     // edges flipped after the step
   bool ok() const { return this->failure == Failure::None; }
 };
 
@@ -88,6 +95,9 @@ public:
   std::vector<Vec3> positions() const;
   // Continues from earlier positions (caller's units) as the result of step `steps`, e.g. a cached step.
   void restart(const std::vector<Vec3>& positions, int steps);
+  // Takes new triangles on the same vertices (e.g. a cached step's after edge flips); false if they
+  // are not a closed 2-manifold, and then nothing changes.
+  bool reconnect(const std::vector<std::array<int, 3>>& triangles);
   // Geometry of the current positions, in the caller's units (areas, weights and curvatures rescaled).
   SurfaceGeometry geometry() const;
   // The tangential velocity used in the last step, in the caller's units per unit time.

@@ -36,8 +36,9 @@ bool SurfaceMesh::build(const std::vector<Vec3>& points, const std::vector<std::
     }
   }
   // Corners grouped by vertex: at vertex a, triangle (a, b, c) leads from neighbour b to neighbour c.
-  std::vector<Corner> corners;
-  corners.reserve(3 * static_cast<std::size_t>(nt));
+  // Bucketed by a (counting sort), then each small bucket sorted by b: linear time, as this runs
+  // again after every round of edge flips.
+  std::vector<int> bucket(nv + 1, 0);
   for (int t = 0; t < nt; ++t)
   {
     const auto& tri = triangles[t];
@@ -55,11 +56,30 @@ bool SurfaceMesh::build(const std::vector<Vec3>& points, const std::vector<std::
         error = why.str();
         return false;
       }
-      corners.push_back({ a, b, c, t });
+      ++bucket[a + 1];
     }
   }
-  std::sort(corners.begin(), corners.end(),
-    [](const Corner& x, const Corner& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  for (int v = 0; v < nv; ++v)
+  {
+    bucket[v + 1] += bucket[v];
+  }
+  std::vector<Corner> corners(3 * static_cast<std::size_t>(nt));
+  {
+    std::vector<int> fill(bucket.begin(), bucket.end() - 1);
+    for (int t = 0; t < nt; ++t)
+    {
+      const auto& tri = triangles[t];
+      for (int k = 0; k < 3; ++k)
+      {
+        corners[fill[tri[k]]++] = { tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3], t };
+      }
+    }
+  }
+  for (int v = 0; v < nv; ++v)
+  {
+    std::sort(corners.begin() + bucket[v], corners.begin() + bucket[v + 1],
+      [](const Corner& x, const Corner& y) { return x.b < y.b; });
+  }
 
   mesh.Triangles = triangles;
   mesh.InitialPoints = points;

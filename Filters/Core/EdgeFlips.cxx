@@ -1,0 +1,105 @@
+#include "EdgeFlips.h"
+
+#include "SurfaceGeometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+Vec3 unitNormal(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 n = (b - a).cross(c - a);
+  const double length = n.norm();
+  return length > 0 ? Vec3(n / length) : Vec3::Zero();
+}
+
+bool hasEdge(const SurfaceMesh& mesh, int a, int b)
+{
+  for (int p = mesh.ringBegin(a); p < mesh.ringEnd(a); ++p)
+  {
+    if (mesh.ring(p) == b)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// One pass over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j). The rings describe
+// the connectivity before the pass, so a vertex takes part in at most one flip per pass.
+int flipPass(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const FlipSettings& settings,
+  std::vector<std::array<int, 3>>& triangles)
+{
+  const double cosMax = std::cos(settings.maxDihedral);
+  std::vector<char> touched(mesh.vertexCount(), 0);
+  int flips = 0;
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+  {
+    for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
+    {
+      const int j = mesh.ring(p);
+      const int c = mesh.ring(mesh.next(i, p)), d = mesh.ring(mesh.previous(i, p));
+      if (j < i || touched[i] || touched[j] || touched[c] || touched[d] || mesh.valence(i) <= 3 ||
+        mesh.valence(j) <= 3 || c == d || hasEdge(mesh, c, d))
+      {
+        continue;
+      }
+      // Only non-Delaunay edges (angles at c and d summing past pi) can gain; this test is cheap.
+      const Vec3 ci = x[i] - x[c], cj = x[j] - x[c], di = x[i] - x[d], dj = x[j] - x[d];
+      const double sinC = ci.cross(cj).norm(), sinD = di.cross(dj).norm();
+      if (ci.dot(cj) * sinD + di.dot(dj) * sinC >= 0) // sin(C + D) >= 0
+      {
+        continue;
+      }
+      const double before = std::min(smallestAngle(x[i], x[j], x[c]), smallestAngle(x[i], x[d], x[j]));
+      const double after = std::min(smallestAngle(x[i], x[d], x[c]), smallestAngle(x[d], x[j], x[c]));
+      if (after < before + settings.minGain)
+      {
+        continue;
+      }
+      const Vec3 n1 = unitNormal(x[i], x[j], x[c]), n2 = unitNormal(x[i], x[d], x[j]);
+      const Vec3 n3 = unitNormal(x[i], x[d], x[c]), n4 = unitNormal(x[d], x[j], x[c]);
+      if (n1.dot(n2) < cosMax || n3.dot(n4) < cosMax || n3.dot(n1 + n2) <= 0 || n4.dot(n1 + n2) <= 0)
+      {
+        continue;
+      }
+      triangles[mesh.ringTriangle(p)] = { i, d, c };
+      triangles[mesh.ringTriangle(mesh.previous(i, p))] = { d, j, c };
+      touched[i] = touched[j] = touched[c] = touched[d] = 1;
+      ++flips;
+    }
+  }
+  return flips;
+}
+} // namespace
+
+int flipEdges(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const FlipSettings& settings,
+  std::vector<std::array<int, 3>>& triangles)
+{
+  triangles = mesh.triangles();
+  int total = flipPass(mesh, x, settings, triangles);
+  SurfaceMesh current;
+  std::string error;
+  for (int pass = 1; pass < settings.passes && total > 0; ++pass)
+  {
+    if (!SurfaceMesh::build(x, triangles, current, error))
+    {
+      triangles = mesh.triangles(); // cannot happen with the guards above; keep the old surface
+      return 0;
+    }
+    const int flips = flipPass(current, x, settings, triangles);
+    if (flips == 0)
+    {
+      break;
+    }
+    total += flips;
+  }
+  return total;
+}
+
+} // namespace shrinkwrap

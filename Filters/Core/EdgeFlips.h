@@ -1,0 +1,31 @@
+// Edge flips that raise the smallest angle of a triangle pair, for a Lagrangian surface whose fixed
+// connectivity cannot follow large tangential stretching (the paper's Section 5 names connectivity
+// adjustments as the missing piece). A flip keeps the vertices, so the surface stays closed and
+// 2-manifold; it is refused where the two triangles are not nearly coplanar, so the shape is kept.
+#ifndef ShrinkWrap_EdgeFlips_h
+#define ShrinkWrap_EdgeFlips_h
+
+#include "SurfaceMesh.h"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+struct FlipSettings
+{
+  double maxDihedral = M_PI / 3; // radians between the normals of the two triangles, before and after
+  double minGain = 0.01;     // radians the smallest angle of the pair must gain
+  int passes = 1;
+};
+
+// Flips edges of `mesh` at positions `x`; returns the number of flips and, when there were any, the
+// new triangles (same orientation) in `triangles`.
+int flipEdges(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const FlipSettings& settings,
+  std::vector<std::array<int, 3>>& triangles);
+
+} // namespace shrinkwrap
+
+#endif

@@ -116,7 +116,7 @@ struct vtkShrinkWrapFilter::Session
   using Triangles = std::shared_ptr<const std::vector<std::array<int, 3>>>;
   struct Step
   {
-    std::vector<Vec3> positions;
+    std::vector<Vec3> state; // the evolver's, exact (scaled coordinates)
     std::vector<Vec3> tangentialVelocity;
     Triangles triangles; // shared by consecutive steps without flips
   };
@@ -134,7 +134,7 @@ struct vtkShrinkWrapFilter::Session
     double bytes = 0;
     for (const auto& entry : this->cache)
     {
-      bytes += 2.0 * sizeof(Vec3) * entry.second.positions.size();
+      bytes += 2.0 * sizeof(Vec3) * entry.second.state.size();
       if (lists.insert(entry.second.triangles.get()).second)
       {
         bytes += sizeof(std::array<int, 3>) * entry.second.triangles->size();
@@ -318,7 +318,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     return false;
   }
   session->evolverTriangles = std::make_shared<const std::vector<std::array<int, 3>>>(mesh.triangles());
-  session->cache[0] = { session->evolver->positions(), std::vector<Vec3>(start.points.size(), Vec3::Zero()),
+  session->cache[0] = { session->evolver->state(), std::vector<Vec3>(start.points.size(), Vec3::Zero()),
     session->evolverTriangles };
   this->Current = std::move(session);
   return true;
@@ -373,7 +373,7 @@ int vtkShrinkWrapFilter::RequestData(
     auto base = std::prev(s.cache.upper_bound(shown));
     if (s.evolver->steps() != base->first)
     {
-      s.evolver->restart(base->second.positions, base->first);
+      s.evolver->restart(base->second.state, base->first);
       if (base->second.triangles != s.evolverTriangles)
       {
         s.evolver->reconnect(*base->second.triangles);
@@ -398,7 +398,7 @@ int vtkShrinkWrapFilter::RequestData(
           s.evolverTriangles =
             std::make_shared<const std::vector<std::array<int, 3>>>(s.evolver->mesh().triangles());
         }
-        s.cache[k] = { s.evolver->positions(), s.evolver->tangentialVelocity(), s.evolverTriangles };
+        s.cache[k] = { s.evolver->state(), s.evolver->tangentialVelocity(), s.evolverTriangles };
         s.newest = std::max(s.newest, k);
         this->UpdateProgress(static_cast<double>(k - first) / (shown - first));
         if (this->GetAbortExecute())
@@ -417,13 +417,15 @@ int vtkShrinkWrapFilter::RequestData(
     {
       vtkWarningMacro("The evolution failed: " << s.failure << "; later times show step " << s.lastGood << ".");
     }
-    // Keep the cache under its memory limit: drop every other step, keeping step 0 and the newest.
+    // Keep the cache under its memory limit: drop every other step, keeping step 0, the newest and the
+    // one asked for.
     while (s.cache.size() > 2 && s.cacheBytes() > this->CacheMemoryLimit * 1024 * 1024)
     {
       s.stride *= 2;
       for (auto it = s.cache.begin(); it != s.cache.end();)
       {
-        it = (it->first % s.stride != 0 && it->first != s.newest) ? s.cache.erase(it) : std::next(it);
+        const bool kept = it->first % s.stride == 0 || it->first == s.newest || it->first == shown;
+        it = kept ? std::next(it) : s.cache.erase(it);
       }
     }
   }
@@ -432,7 +434,7 @@ int vtkShrinkWrapFilter::RequestData(
   const Session::Step& entry = found->second;
 
   // The surface and its arrays.
-  const std::vector<Vec3>& x = entry.positions;
+  const std::vector<Vec3> x = s.evolver->positionsOf(entry.state);
   const int nv = static_cast<int>(x.size());
   SurfaceMesh mesh;
   std::string error;

@@ -287,22 +287,22 @@ StepReport Evolver::step()
   return report;
 }
 
-std::vector<Vec3> Evolver::positions() const
+std::vector<Vec3> Evolver::positionsOf(const std::vector<Vec3>& state) const
 {
   std::vector<Vec3> x;
-  x.reserve(this->Y.size());
-  for (const Vec3& y : this->Y)
+  x.reserve(state.size());
+  for (const Vec3& y : state)
   {
     x.push_back(this->Center + y / this->Scale);
   }
   return x;
 }
 
-void Evolver::restart(const std::vector<Vec3>& x, int steps)
+void Evolver::restart(const std::vector<Vec3>& state, int steps)
 {
-  for (std::size_t i = 0; i < x.size() && i < this->Y.size(); ++i)
+  if (state.size() == this->Y.size())
   {
-    this->Y[i] = this->Scale * (x[i] - this->Center);
+    this->Y = state;
   }
   this->Steps = steps;
   this->Potential.clear();

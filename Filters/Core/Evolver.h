@@ -92,9 +92,13 @@ public:
   double time() const { return this->Steps * this->Settings.timeStep / (this->Scale * this->Scale); }
 
   // Current positions in the caller's units.
-  std::vector<Vec3> positions() const;
-  // Continues from earlier positions (caller's units) as the result of step `steps`, e.g. a cached step.
-  void restart(const std::vector<Vec3>& positions, int steps);
+  std::vector<Vec3> positions() const { return this->positionsOf(this->Y); }
+  // The exact state (scaled coordinates): what a cache keeps to restart from bit for bit, and the
+  // caller's positions for a state.
+  const std::vector<Vec3>& state() const { return this->Y; }
+  std::vector<Vec3> positionsOf(const std::vector<Vec3>& state) const;
+  // Continues from an earlier state as the result of step `steps`, e.g. a cached step.
+  void restart(const std::vector<Vec3>& state, int steps);
   // Takes new triangles on the same vertices (e.g. a cached step's after edge flips); false if they
   // are not a closed 2-manifold, and then nothing changes.
   bool reconnect(const std::vector<std::array<int, 3>>& triangles);

@@ -167,6 +167,20 @@ int vtkShrinkWrapFilter::FillInputPortInformation(int port, vtkInformation* info
   return 1;
 }
 
+int vtkShrinkWrapFilter::ComputePipelineMTime(vtkInformation* request, vtkInformationVector** inInfoVec,
+  vtkInformationVector* outInfoVec, int requestFromOutputPort, vtkMTimeType* mtime)
+{
+  const int result =
+    this->Superclass::ComputePipelineMTime(request, inInfoVec, outInfoVec, requestFromOutputPort, mtime);
+  if (this->RunAgain)
+  {
+    this->RunAgainTime.Modified();
+    this->RunAgain = false;
+  }
+  *mtime = std::max(*mtime, this->RunAgainTime.GetMTime());
+  return result;
+}
+
 int vtkShrinkWrapFilter::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -332,14 +346,18 @@ int vtkShrinkWrapFilter::RequestData(
   output->Initialize();
 
   // Any change of an input or a property starts a new session (and drops the cache).
-  vtkMTimeType key = this->GetMTime();
-  for (int port = 0; port < 3; ++port)
-  {
-    if (vtkDataObject* data = this->GetInputDataObject(port, 0))
+  auto sessionKey = [this] {
+    vtkMTimeType key = this->GetMTime();
+    for (int port = 0; port < 3; ++port)
     {
-      key = std::max(key, data->GetMTime());
+      if (vtkDataObject* data = this->GetInputDataObject(port, 0))
+      {
+        key = std::max(key, data->GetMTime());
+      }
     }
-  }
+    return key;
+  };
+  const vtkMTimeType key = sessionKey();
   if (!this->Current || this->Current->key != key)
   {
     this->Current.reset();
@@ -408,8 +426,13 @@ int vtkShrinkWrapFilter::RequestData(
         }
       }
     });
+    // The pipeline takes an execution as up to date even when it was aborted or a property changed
+    // while it ran (a panel edit, a script's callback): RunAgain makes the next request run again, to
+    // resume from the cache or start over.
     if (aborted)
     {
+      this->RunAgain = true;
+      this->AbortExecute = 0; // honoured; a set flag keeps the pipeline from running (no Modified)
       vtkWarningMacro("Shrink Wrap was aborted; the output is empty (computed steps stay cached).");
       return 1;
     }
@@ -515,6 +538,11 @@ int vtkShrinkWrapFilter::RequestData(
   output->GetFieldData()->AddArray(time);
   output->GetFieldData()->AddArray(status);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), found->first * this->TimeStep);
+  if (sessionKey() != key)
+  {
+    this->RunAgain = true;
+    vtkWarningMacro("Properties or inputs changed during the run; they apply from the next update.");
+  }
   return 1;
 }
 

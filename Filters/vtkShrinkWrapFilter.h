@@ -146,6 +146,8 @@ protected:
   ~vtkShrinkWrapFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int ComputePipelineMTime(vtkInformation* request, vtkInformationVector** inInfoVec,
+    vtkInformationVector* outInfoVec, int requestFromOutputPort, vtkMTimeType* mtime) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -172,6 +174,11 @@ protected:
 private:
   vtkShrinkWrapFilter(const vtkShrinkWrapFilter&) = delete;
   void operator=(const vtkShrinkWrapFilter&) = delete;
+
+  // Set when a run was aborted or its properties changed while it ran: the next request runs again
+  // (ComputePipelineMTime), without touching the MTime that keys the cache.
+  bool RunAgain = false;
+  vtkTimeStamp RunAgainTime;
 
   struct Session;
   bool StartSession(vtkInformationVector** inputVector);

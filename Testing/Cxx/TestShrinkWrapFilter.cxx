@@ -190,6 +190,52 @@ int TestShrinkWrapFilter(int, char*[])
   SW_CHECK(wrap->GetNumberOfComputedSteps() == 10, "changing C drops the cache (" << wrap->GetNumberOfComputedSteps() << ")");
   wrap->SetC(1.0);
 
+  // While it runs: a property set from a progress callback applies from the next update; an abort
+  // keeps the computed steps, and the next update runs again and resumes from them.
+  {
+    vtkNew<vtkShrinkWrapFilter> running;
+    running->SetInputData(box);
+    running->SetResolution(64);
+    running->SetNumberOfSteps(40);
+    struct Plan
+    {
+      int events = 0, editAt = 0, abortAt = 0;
+    } plan;
+    vtkNew<vtkCallbackCommand> onProgress;
+    onProgress->SetClientData(&plan);
+    onProgress->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+      auto* p = static_cast<Plan*>(data);
+      auto* filter = static_cast<vtkShrinkWrapFilter*>(caller);
+      ++p->events;
+      if (p->events == p->editAt)
+      {
+        filter->SetOmegaAngle(0.6);
+      }
+      if (p->events == p->abortAt)
+      {
+        filter->AbortExecuteOn();
+      }
+    });
+    running->AddObserver(vtkCommand::ProgressEvent, onProgress);
+    plan.editAt = 10;
+    running->UpdateTimeStep(40 * 0.015);
+    SW_CHECK(running->GetNumberOfComputedSteps() == 40 && stepOf(running->GetOutput()) == 40,
+      "a property set during the run: the run ends");
+    const std::vector<double> withOldValue = surfaceOf(running->GetOutput());
+    running->UpdateTimeStep(40 * 0.015);
+    SW_CHECK(running->GetNumberOfComputedSteps() == 40 && surfaceOf(running->GetOutput()) != withOldValue,
+      "the same request runs again, from step 0, with the new value");
+    plan = { 0, 0, 15 };
+    running->SetOmegaAngle(0.5);
+    running->UpdateTimeStep(40 * 0.015);
+    SW_CHECK(running->GetOutput()->GetNumberOfPoints() == 0 && running->GetNumberOfComputedSteps() < 40,
+      "an abort: an empty output");
+    const int before = running->GetNumberOfComputedSteps();
+    running->UpdateTimeStep(40 * 0.015);
+    SW_CHECK(stepOf(running->GetOutput()) == 40 && running->GetNumberOfComputedSteps() == 40 && before < 40,
+      "the same request after an abort runs again and resumes from step " << before);
+  }
+
   // The DistanceField port: the same field from Mesh Signed Distance gives the same wrap.
   vtkNew<vtkMeshSignedDistance> sdf;
   sdf->SetInputData(box);

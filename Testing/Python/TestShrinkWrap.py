@@ -55,5 +55,49 @@ wrap.C = 2.0
 wrap.UpdatePipeline(5 * tau)
 check(computed(wrap) == 5, "changing C drops the cache (5 steps computed again)")
 
+# During a long run: progress per step; a property edited while it runs (the panel, a callback)
+# applies from the next update; an abort leaves the computed steps cached and the next update resumes.
+long_run = ShrinkWrap(Input=reader, NumberOfSteps=60, Resolution=64)
+algorithm = long_run.GetClientSideObject()
+progress = []
+
+
+def edit_while_running(caller, event):
+    progress.append(caller.GetProgress())
+    if len(progress) == 10:
+        long_run.OmegaAngle = 0.6
+
+
+tag = algorithm.AddObserver("ProgressEvent", edit_while_running)
+long_run.UpdatePipeline(60 * tau)
+algorithm.RemoveObserver(tag)
+check(len(progress) >= 60 and progress[-1] == 1.0, "progress is reported every step (%d events)" % len(progress))
+check(computed(long_run) == 60 and algorithm.GetOutputDataObject(0).GetNumberOfPoints() == 642,
+      "a property edited during the run: the run ends with the old values")
+long_run.UpdatePipeline(30 * tau)
+check(computed(long_run) == 30, "and the next update starts over with the new ones (%d steps)" % computed(long_run))
+
+long_run.OmegaAngle = 0.5
+events = []
+
+
+def abort_at_step_25(caller, event):
+    events.append(1)
+    if len(events) == 25:
+        caller.AbortExecuteOn()
+
+
+tag = algorithm.AddObserver("ProgressEvent", abort_at_step_25)
+long_run.UpdatePipeline(60 * tau)
+algorithm.RemoveObserver(tag)
+check(algorithm.GetOutputDataObject(0).GetNumberOfPoints() == 0, "an aborted run gives an empty output")
+aborted_at = computed(long_run)
+long_run.UpdatePipeline(60 * tau)
+_, data = points(long_run)
+check(data.GetNumberOfPoints() == 642 and data.GetFieldData().GetArray("StepIndex").GetValue(0) == 60,
+      "the next update after an abort runs to the end")
+check(computed(long_run) == 60 and aborted_at < 60,
+      "resuming from the %d cached steps, not from zero" % aborted_at)
+
 print("%d passed, %d failed" % (len(checks) - len(failures), len(failures)))
 sys.exit(1 if failures else 0)

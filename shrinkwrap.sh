@@ -15,7 +15,7 @@ packages=(cmake ninja-build g++ paraview paraview-dev python3-paraview libeigen3
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libhdf5-dev libnetcdf-dev libgdal-dev
   libboost-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libgl2ps-dev libglew-dev
   libtheora-dev libtiff-dev libjpeg-dev liblz4-dev liblzma-dev libdouble-conversion-dev libutfcpp-dev
-  libexpat1-dev libfreetype-dev libpng-dev libxml2-dev mpi-default-dev libx11-dev libgl-dev xvfb xauth)
+  libexpat1-dev libfreetype-dev libpng-dev libxml2-dev mpi-default-dev mpi-default-bin libx11-dev libgl-dev xvfb xauth)
 [ "$mode" = bench ] && packages+=(libopenvdb-dev libboost-iostreams-dev libcgal-dev)
 
 install_missing() {

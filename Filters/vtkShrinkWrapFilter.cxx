@@ -345,6 +345,13 @@ int vtkShrinkWrapFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outInfo);
   output->Initialize();
 
+  // One surface, not split: under MPI, piece 0 holds it and the other pieces are empty.
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  {
+    return 1;
+  }
+
   // Any change of an input or a property starts a new session (and drops the cache).
   auto sessionKey = [this] {
     vtkMTimeType key = this->GetMTime();

@@ -7,7 +7,8 @@
  * distance d. Every time step is a time step of the output: the filter advertises the times
  * {0, tau, ..., N_t tau} and returns the surface at the requested time (the last one when no time is
  * requested). Computed steps are cached: going back is instant, going forward resumes from the newest
- * cached step; changing an input or a property drops the cache.
+ * cached step; changing an input or a property drops the cache. An aborted run, or one whose properties
+ * changed while it ran, runs again at the next request (resuming from the cache, or starting over).
  *
  * Inputs: port 0, the target (vtkPolyData with polygons). Port 1 (optional), "DistanceField": a
  * vtkImageData with a point array "SignedDistance", e.g. from Mesh Signed Distance; otherwise one is

@@ -4,6 +4,7 @@
 // (eq. (4)), d the signed distance to the target. One step is semi-implicit finite volumes with
 // barycentric co-volumes and cotangent weights (Section 2.2); per vertex i and coordinate:
 //   (1 + tau eps_i/|V_i| sum_j w_ij) F_i - tau eps_i/|V_i| sum_j w_ij F_j = F_i^old + tau eta_i N_i + tau v_T,i.
+// A step may end with edge flips (EdgeFlips.h), which change the triangles and not the vertices.
 // Positions may be scaled for stability (Section 2.4, StabilityScaling.h): the evolver works in scaled
 // coordinates and callers only ever see their own units.
 #ifndef ShrinkWrap_Evolver_h

@@ -19,7 +19,8 @@
  * (-grad d . N), MeanCurvature (H, positive where convex), CoVolume (|V_i|), Normals, and
  * TangentialVelocity (v_T of the step that produced the surface). Cell data: MinAngle, MaxAngle (degrees)
  * and JacobianCondition (Knupp). Field data: StepIndex, Time and Status ("ok", or the failure and its
- * step; later times then show the last good surface).
+ * step; later times then show the last good surface). Under MPI the surface is piece 0; other pieces
+ * are empty.
  *
  * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
  * NumberOfSteps N_t = 200, SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 1 and D = 0

@@ -3,7 +3,7 @@
 // no failure, a closed 2-manifold in one piece; on bunny00 and armadillo the median |d| within one cell
 // and fewer than 2% of triangles with a minimum angle below 20 degrees (issue #4's bar; CGAL's alpha
 // wrap at similar vertex counts has 5-17%). The 90th percentile of |d| is reported for every mesh, and
-// the other meshes' figures too.
+// the other meshes' figures too. The same with D = 0.5.
 // Argument: the folder holding CGAL's data/meshes/*.off.
 #include "SurfaceMesh.h"
 #include "TestUtilities.h"
@@ -69,11 +69,12 @@ struct Figures
   int pieces = 0;
 };
 
-Figures wrap(vtkPolyData* target, int level)
+Figures wrap(vtkPolyData* target, int level, double D)
 {
   vtkNew<vtkShrinkWrapFilter> filter;
   filter->SetInputData(target);
   filter->SetSubdivisionLevel(level);
+  filter->SetD(D);
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
   Figures f;
@@ -130,7 +131,7 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const std::string folder = argv[1];
-  std::printf("%-22s %-3s %-8s %-12s %-14s %-14s %-8s\n", "mesh", "s", "status", "median |d|", "90th pct |d|",
+  std::printf("%-26s %-3s %-8s %-12s %-14s %-14s %-8s\n", "mesh", "s", "status", "median |d|", "90th pct |d|",
     "min angle<20", "seconds");
   for (const std::string name : { "bunny00", "armadillo", "elephant-with-holes", "knot1", "bent chair" })
   {
@@ -140,17 +141,24 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
     {
       continue;
     }
-    for (int level : { 3, 4 })
+    // D = 0 is the default (paper Fig. 11); D = 0.5, stable with edge flips, is what the README
+    // recommends for closer wraps, so it is held to the same bars.
+    for (const double D : { 0.0, 0.5 })
     {
-      const Figures f = wrap(target, level);
-      std::printf("%-22s %-3d %-8s %6.2f h     %6.2f h       %6.1f %%       %.2f\n", name.c_str(), level,
-        f.ok ? "ok" : "FAILED", f.median, f.p90, f.smallAngles, f.seconds);
-      SW_CHECK(f.ok, name << " s=" << level << ": 200 steps without failure");
-      SW_CHECK(f.closed && f.pieces == 1, name << " s=" << level << ": a closed 2-manifold in one piece");
-      if (name == "bunny00" || name == "armadillo")
+      for (int level : { 3, 4 })
       {
-        SW_CHECK(f.median <= 1.0, name << " s=" << level << ": median |d| within one cell");
-        SW_CHECK(f.smallAngles < 2.0, name << " s=" << level << ": fewer than 2% of triangles with an angle below 20 degrees");
+        const Figures f = wrap(target, level, D);
+        const std::string label = name + (D > 0 ? " D=0.5" : "");
+        std::printf("%-26s %-3d %-8s %6.2f h     %6.2f h       %6.1f %%       %.2f\n", label.c_str(), level,
+          f.ok ? "ok" : "FAILED", f.median, f.p90, f.smallAngles, f.seconds);
+        SW_CHECK(f.ok, label << " s=" << level << ": 200 steps without failure");
+        SW_CHECK(f.closed && f.pieces == 1, label << " s=" << level << ": a closed 2-manifold in one piece");
+        if (name == "bunny00" || name == "armadillo")
+        {
+          SW_CHECK(f.median <= 1.0, label << " s=" << level << ": median |d| within one cell");
+          SW_CHECK(f.smallAngles < 2.0,
+            label << " s=" << level << ": fewer than 2% of triangles with an angle below 20 degrees");
+        }
       }
     }
   }

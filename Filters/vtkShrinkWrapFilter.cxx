@@ -399,9 +399,9 @@ int vtkShrinkWrapFilter::RequestData(
     if (s.evolver->steps() != base->first)
     {
       s.evolver->restart(base->second.state, base->first);
-      if (base->second.triangles != s.evolverTriangles)
+      // Cached triangles were the evolver's own, so they always form a closed surface again.
+      if (base->second.triangles != s.evolverTriangles && s.evolver->reconnect(*base->second.triangles))
       {
-        s.evolver->reconnect(*base->second.triangles);
         s.evolverTriangles = base->second.triangles;
       }
     }

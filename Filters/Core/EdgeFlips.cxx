@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 namespace shrinkwrap
 {
@@ -30,11 +29,14 @@ bool hasEdge(const SurfaceMesh& mesh, int a, int b)
   return false;
 }
 
-// One pass over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j). The rings describe
-// the connectivity before the pass, so a vertex takes part in at most one flip per pass.
-int flipPass(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const FlipSettings& settings,
+} // namespace
+
+// Over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j). The rings describe the
+// connectivity before the pass, hence one flip per vertex.
+int flipEdges(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const FlipSettings& settings,
   std::vector<std::array<int, 3>>& triangles)
 {
+  triangles = mesh.triangles();
   const double cosMax = std::cos(settings.maxDihedral);
   std::vector<char> touched(mesh.vertexCount(), 0);
   int flips = 0;
@@ -75,31 +77,6 @@ int flipPass(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const FlipSett
     }
   }
   return flips;
-}
-} // namespace
-
-int flipEdges(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const FlipSettings& settings,
-  std::vector<std::array<int, 3>>& triangles)
-{
-  triangles = mesh.triangles();
-  int total = flipPass(mesh, x, settings, triangles);
-  SurfaceMesh current;
-  std::string error;
-  for (int pass = 1; pass < settings.passes && total > 0; ++pass)
-  {
-    if (!SurfaceMesh::build(x, triangles, current, error))
-    {
-      triangles = mesh.triangles(); // cannot happen with the guards above; keep the old surface
-      return 0;
-    }
-    const int flips = flipPass(current, x, settings, triangles);
-    if (flips == 0)
-    {
-      break;
-    }
-    total += flips;
-  }
-  return total;
 }
 
 } // namespace shrinkwrap

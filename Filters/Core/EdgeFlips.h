@@ -17,12 +17,12 @@ namespace shrinkwrap
 struct FlipSettings
 {
   double maxDihedral = M_PI / 3; // radians between the normals of the two triangles, before and after
-  double minGain = 0.01;     // radians the smallest angle of the pair must gain
-  int passes = 1;
+  double minGain = 0.01;         // radians the smallest angle of the pair must gain
 };
 
-// Flips edges of `mesh` at positions `x`; returns the number of flips and, when there were any, the
-// new triangles (same orientation) in `triangles`.
+// One pass of flips over the edges of `mesh` at positions `x` (a vertex takes part in at most one
+// flip; the evolver runs a pass after every step). Returns the number of flips and the triangles
+// after them (same orientation) in `triangles`.
 int flipEdges(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const FlipSettings& settings,
   std::vector<std::array<int, 3>>& triangles);
 

@@ -58,7 +58,7 @@ plugin="$build/lib/paraview-5.11/plugins/ShrinkWrap/ShrinkWrap.so"
 case "$mode" in
   demo)
     configure_and_build "$build"
-    xvfb-run -a pvbatch Examples/demo.py "$plugin" Data/trefoil.obj out
+    Testing/run-with-x.sh pvbatch Examples/demo.py "$plugin" Data/trefoil.obj out
     ;;
   test)
     fetch_cgal_meshes

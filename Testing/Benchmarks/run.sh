@@ -43,5 +43,5 @@ echo "Distances: the largest from the wrap's vertices to the target and from the
 echo "the wrap, in percent of the target's diagonal. Wraps at s = 4 are written to $build/wraps."
 mkdir -p "$build/wraps"
 "$build/bin/BenchShrinkWrap" "$build/cgal/data/meshes" "$build/wraps" 2>/dev/null
-xvfb-run -a pvbatch "$(dirname "$0")/render_wraps.py" "$build/wraps" bunny00 "$build/wraps/wraps_bunny00.png" >/dev/null 2>&1 &&
+"$(dirname "$0")/../run-with-x.sh" pvbatch "$(dirname "$0")/render_wraps.py" "$build/wraps" bunny00 "$build/wraps/wraps_bunny00.png" >/dev/null 2>&1 &&
   echo "Picture of both wraps of bunny00: $build/wraps/wraps_bunny00.png"

@@ -4,7 +4,9 @@
 #include "Evolver.h"
 #include "Icosphere.h"
 #include "MeshQuality.h"
+#include "SignedDistance.h"
 #include "StabilityScaling.h"
+#include "StartingSurface.h"
 #include "vtkMeshSignedDistance.h"
 
 #include "vtkCellArray.h"
@@ -13,6 +15,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFlyingEdges3D.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -104,6 +107,78 @@ bool trianglesOf(vtkPolyData* mesh, TriangleSurface& surface)
     surface.triangles.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
   }
   return !surface.triangles.empty() && mesh->GetNumberOfStrips() == 0;
+}
+
+// Marching cubes of an image's point array at one value.
+TriangleSurface contourOf(vtkImageData* image, const char* array, double value)
+{
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputData(image);
+  contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, array);
+  contour->SetValue(0, value);
+  contour->ComputeNormalsOff();
+  contour->ComputeGradientsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  TriangleSurface surface;
+  trianglesOf(contour->GetOutput(), surface);
+  return surface;
+}
+
+// The paper's Section 5 start, a contour of d near the target, taken as a morphological closing: the
+// target dilated by offset + closing, then eroded by closing. A plain contour nearly touches itself
+// where two parts are about twice the offset apart, and the thin necks marching cubes leaves there
+// pinch off under curvature at once; the closing fills gaps narrower than 2 (offset + closing) and
+// fills cavities (the flood-fill sign of the dilated surface's distance).
+bool offsetSurface(vtkImageData* field, const GridLattice& lattice, double offset, double closing,
+  TriangleSurface& surface, std::string& error)
+{
+  const TriangleSurface dilated = contourOf(field, "SignedDistance", offset + closing);
+  if (dilated.triangles.empty())
+  {
+    error = "the distance field has no contour at Start Offset + Start Closing";
+    return false;
+  }
+  TriangleSoup soup;
+  soup.points = dilated.points;
+  soup.triangles = dilated.triangles;
+  vtkNew<vtkFloatArray> distance;
+  distance->SetName("Erosion");
+  distance->SetNumberOfTuples(lattice.nodeCount());
+  const SignedDistanceResult result =
+    computeSignedDistance(soup, lattice, SignedDistanceSettings(), distance->GetPointer(0));
+  if (!result.isSigned)
+  {
+    error = "the surface at Start Offset + Start Closing is not closed inside the distance field; lower "
+            "them or enlarge the field";
+    return false;
+  }
+  vtkNew<vtkImageData> eroded;
+  eroded->CopyStructure(field);
+  eroded->GetPointData()->AddArray(distance);
+  surface = contourOf(eroded, "Erosion", -closing);
+  if (surface.triangles.empty())
+  {
+    error = "nothing is left of the offset surface after the closing";
+    return false;
+  }
+  return true;
+}
+
+// Outward orientation, which eta N with D > 0 and the output's normals and curvatures rely on.
+bool orientOutwards(SurfaceMesh& mesh, std::string& error)
+{
+  if (enclosedVolume(mesh, mesh.initialPoints()) >= 0)
+  {
+    return true;
+  }
+  std::vector<std::array<int, 3>> flipped = mesh.triangles();
+  for (auto& t : flipped)
+  {
+    std::swap(t[1], t[2]);
+  }
+  const std::vector<Vec3> points = mesh.initialPoints();
+  return SurfaceMesh::build(points, flipped, mesh, error);
 }
 } // namespace
 
@@ -246,11 +321,8 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
 
   // The distance field: the DistanceField input, or computed here with the same algorithm.
   std::string error;
-  if (fieldImage)
-  {
-    session->field = gridOf(fieldImage, error);
-  }
-  else
+  vtkSmartPointer<vtkImageData> image = fieldImage;
+  if (!fieldImage)
   {
     vtkNew<vtkMeshSignedDistance> sdf;
     vtkNew<vtkPolyData> copy;
@@ -258,37 +330,60 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     sdf->SetInputData(copy);
     sdf->SetResolution(this->Resolution);
     sdf->Update();
-    session->field = gridOf(sdf->GetOutput(), error);
-    if (session->field.empty())
-    {
-      error = "the target's distance field could not be computed (see the message above)";
-    }
+    image = sdf->GetOutput();
   }
+  session->field = gridOf(image, error);
   if (session->field.empty())
   {
-    vtkErrorMacro("Cannot wrap: " << error << ".");
+    vtkErrorMacro("Cannot wrap: " << (fieldImage ? error
+      : "the target's distance field could not be computed (see the message above)") << ".");
     return false;
   }
 
-  // The starting surface.
+  // The starting surface: the InitialSurface, the offset surface or the icosphere; outward oriented.
   TriangleSurface start;
-  if (initial)
+  const double h = session->field.lattice().spacing.maxCoeff();
+  if (initial && !trianglesOf(initial, start))
   {
-    if (!trianglesOf(initial, start))
-    {
-      vtkErrorMacro("The InitialSurface must be made of triangles only.");
-      return false;
-    }
+    vtkErrorMacro("The InitialSurface must be made of triangles only.");
+    return false;
   }
-  else
+  if (!initial && this->StartingShape == OFFSET_SURFACE &&
+    !offsetSurface(image, session->field.lattice(), this->StartOffset * h, this->StartClosing * h, start, error))
+  {
+    vtkErrorMacro("Cannot start from the offset surface: " << error << ".");
+    return false;
+  }
+  if (!initial && this->StartingShape == ICOSPHERE)
   {
     start = icosphere(this->SubdivisionLevel, targetBox.center(), 0.5 * 1.05 * targetBox.diagonal());
   }
+  // Specks smaller than two cells are noise the field cannot hold (curvature shrinks them away).
+  if (const int specks = removeSpecks(start, 2 * h))
+  {
+    vtkWarningMacro("Left out " << specks << " piece(s) of the starting surface smaller than two cells "
+                                "of the distance field.");
+  }
   SurfaceMesh mesh;
-  if (!SurfaceMesh::build(start.points, start.triangles, mesh, error))
+  if (!SurfaceMesh::build(start.points, start.triangles, mesh, error) || !orientOutwards(mesh, error))
   {
     vtkErrorMacro("The starting surface cannot evolve: " << error << ".");
     return false;
+  }
+  // A contour's slivers would fail the first step (the icosphere needs no relaxation).
+  if (this->StartingShape != ICOSPHERE || initial)
+  {
+    RelaxSettings relax;
+    relax.iterations = this->InitialRelaxation;
+    relax.flips.maxDihedral = this->FlipDihedralLimit * M_PI / 180.0;
+    SurfaceMesh relaxed;
+    if (!relaxTangentially(mesh, relax, relaxed, error))
+    {
+      vtkErrorMacro("Relaxing the starting surface failed: " << error << ".");
+      return false;
+    }
+    mesh = std::move(relaxed);
+    start.points = mesh.initialPoints();
   }
   const Box domain = session->field.lattice().bounds();
   for (const Vec3& p : start.points)
@@ -570,6 +665,10 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DistanceWeighting: " << this->DistanceWeighting << "\n";
   os << indent << "EdgeFlips: " << this->EdgeFlips << "\n";
   os << indent << "FlipDihedralLimit: " << this->FlipDihedralLimit << "\n";
+  os << indent << "StartingShape: " << (this->StartingShape == ICOSPHERE ? "Icosphere" : "Offset Surface") << "\n";
+  os << indent << "StartOffset: " << this->StartOffset << "\n";
+  os << indent << "StartClosing: " << this->StartClosing << "\n";
+  os << indent << "InitialRelaxation: " << this->InitialRelaxation << "\n";
   os << indent << "AutomaticScaling: " << this->AutomaticScaling << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";

@@ -13,7 +13,9 @@
  * Inputs: port 0, the target (vtkPolyData with polygons). Port 1 (optional), "DistanceField": a
  * vtkImageData with a point array "SignedDistance", e.g. from Mesh Signed Distance; otherwise one is
  * computed with Resolution. Port 2 (optional), "InitialSurface": a closed 2-manifold triangle surface to
- * start from; otherwise a geodesic icosphere of SubdivisionLevel around the target.
+ * start from (e.g. a contour of the distance field), first relaxed tangentially for InitialRelaxation
+ * iterations; otherwise the StartingShape: a geodesic icosphere of SubdivisionLevel around the target,
+ * or an offset surface of the target (the paper's Section 5).
  *
  * Output: the surface in the target's coordinates. Point data: Distance (d), AdvectionAlignment
  * (-grad d . N), MeanCurvature (H, positive where convex), CoVolume (|V_i|), Normals, and
@@ -26,9 +28,11 @@
  * NumberOfSteps N_t = 200, SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 1 and D = 0
  * (eq. (4)), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
  * DistanceWeighting off (rho(d) of eq. (10)) with RhoA = 1 (its A), EdgeFlips on with FlipDihedralLimit
- * 60 degrees (flips change the triangles from step to step, never the vertices), AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates
- * scaled so that the mean co-volume of the sphere inscribed in the target's box is tau), SolverTolerance
- * 1e-6, Resolution 120 (of the internal distance field), CacheMemoryLimit 512 MiB.
+ * 60 degrees (flips change the triangles from step to step, never the vertices), StartingShape
+ * ICOSPHERE (or OFFSET_SURFACE, StartOffset 3 and StartClosing 3 cells), InitialRelaxation 10,
+ * AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates scaled so that the mean
+ * co-volume of the sphere inscribed in the target's box is tau), SolverTolerance 1e-6, Resolution 120
+ * (of the internal distance field), CacheMemoryLimit 512 MiB.
  */
 #ifndef vtkShrinkWrapFilter_h
 #define vtkShrinkWrapFilter_h
@@ -50,6 +54,12 @@ public:
     NONE = 0,
     ANGLE = 1,
     VOLUME = 2
+  };
+
+  enum StartingShapes
+  {
+    ICOSPHERE = 0,
+    OFFSET_SURFACE = 1
   };
 
   /// Port 1: an image with "SignedDistance" (optional).
@@ -119,6 +129,27 @@ public:
   vtkGetMacro(FlipDihedralLimit, double);
   ///@}
   ///@{
+  /// The starting surface when no InitialSurface is connected: ICOSPHERE (default), or OFFSET_SURFACE,
+  /// a contour of d near the target (the paper's Section 5), which starts close, wraps concave parts
+  /// and keeps holes wider than 2 (StartOffset + StartClosing) open. It is the target dilated by
+  /// StartOffset + StartClosing and eroded by StartClosing (a morphological closing), both in cells of
+  /// the distance field (defaults 3 and 3): the closing fills the narrow gaps where a plain contour
+  /// nearly touches itself and would pinch.
+  vtkSetClampMacro(StartingShape, int, ICOSPHERE, OFFSET_SURFACE);
+  vtkGetMacro(StartingShape, int);
+  vtkSetClampMacro(StartOffset, double, 0.5, 1000.0);
+  vtkGetMacro(StartOffset, double);
+  vtkSetClampMacro(StartClosing, double, 0.0, 1000.0);
+  vtkGetMacro(StartClosing, double);
+  ///@}
+  ///@{
+  /// Iterations of tangential relaxation (with edge flips) applied to an InitialSurface or the offset
+  /// surface before it evolves: a contour's slivers would otherwise fail the first step. Default 10;
+  /// 0 keeps it as given.
+  vtkSetClampMacro(InitialRelaxation, int, 0, 1000);
+  vtkGetMacro(InitialRelaxation, int);
+  ///@}
+  ///@{
   /// Scale the evolution for stability (Section 2.4). Default on.
   vtkSetMacro(AutomaticScaling, bool);
   vtkGetMacro(AutomaticScaling, bool);
@@ -168,6 +199,10 @@ protected:
   bool DistanceWeighting = false;
   bool EdgeFlips = true;
   double FlipDihedralLimit = 60.0;
+  int StartingShape = ICOSPHERE;
+  double StartOffset = 3.0;
+  double StartClosing = 3.0;
+  int InitialRelaxation = 10;
   bool AutomaticScaling = true;
   double SolverTolerance = 1e-6;
   int Resolution = 120;

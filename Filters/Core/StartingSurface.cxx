@@ -1,0 +1,129 @@
+#include "StartingSurface.h"
+
+#include <numeric>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+// Area-weighted vertex normals (unnormalised sums of triangle cross products).
+std::vector<Vec3> vertexNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x)
+{
+  std::vector<Vec3> normals(mesh.vertexCount(), Vec3::Zero());
+  for (const auto& t : mesh.triangles())
+  {
+    const Vec3 n = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
+    for (int v : t)
+    {
+      normals[v] += n;
+    }
+  }
+  return normals;
+}
+
+// One Jacobi sweep: every vertex towards the mean of its neighbours, without the normal component.
+std::vector<Vec3> smoothTangentially(const SurfaceMesh& mesh, const std::vector<Vec3>& x, double weight)
+{
+  const std::vector<Vec3> normals = vertexNormals(mesh, x);
+  std::vector<Vec3> moved(x);
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+  {
+    Vec3 centroid = Vec3::Zero();
+    for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
+    {
+      centroid += x[mesh.ring(p)];
+    }
+    const Vec3 step = centroid / mesh.valence(i) - x[i];
+    const double length = normals[i].norm();
+    const Vec3 n = length > 0 ? Vec3(normals[i] / length) : Vec3::Zero();
+    moved[i] += weight * (step - step.dot(n) * n);
+  }
+  return moved;
+}
+
+// Union-find over vertices joined by triangles; the root of each vertex's component.
+std::vector<int> componentRoots(const TriangleSurface& surface)
+{
+  std::vector<int> parent(surface.points.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int v) {
+    while (parent[v] != v)
+    {
+      v = parent[v] = parent[parent[v]];
+    }
+    return v;
+  };
+  for (const auto& t : surface.triangles)
+  {
+    parent[find(t[1])] = find(t[0]);
+    parent[find(t[2])] = find(t[0]);
+  }
+  for (size_t v = 0; v < parent.size(); ++v)
+  {
+    parent[v] = find(static_cast<int>(v));
+  }
+  return parent;
+}
+
+} // namespace
+
+int removeSpecks(TriangleSurface& surface, double size)
+{
+  const std::vector<int> root = componentRoots(surface);
+  std::vector<Box> boxes(surface.points.size());
+  for (size_t v = 0; v < surface.points.size(); ++v)
+  {
+    boxes[root[v]].extend(surface.points[v]);
+  }
+  auto speck = [&](int r) { return (boxes[r].max - boxes[r].min).maxCoeff() < size; };
+  int specks = 0;
+  for (size_t v = 0; v < surface.points.size(); ++v)
+  {
+    specks += root[v] == static_cast<int>(v) && speck(root[v]);
+  }
+  if (specks == 0)
+  {
+    return 0;
+  }
+  // Keep the other components' triangles, with their vertices renumbered in order.
+  std::vector<int> index(surface.points.size(), -1);
+  TriangleSurface kept;
+  for (size_t v = 0; v < surface.points.size(); ++v)
+  {
+    if (!speck(root[v]))
+    {
+      index[v] = static_cast<int>(kept.points.size());
+      kept.points.push_back(surface.points[v]);
+    }
+  }
+  for (const auto& t : surface.triangles)
+  {
+    if (index[t[0]] >= 0)
+    {
+      kept.triangles.push_back({ index[t[0]], index[t[1]], index[t[2]] });
+    }
+  }
+  surface = std::move(kept);
+  return specks;
+}
+
+bool relaxTangentially(
+  const SurfaceMesh& mesh, const RelaxSettings& settings, SurfaceMesh& relaxed, std::string& error)
+{
+  std::vector<Vec3> x = mesh.initialPoints();
+  SurfaceMesh current = mesh;
+  std::vector<std::array<int, 3>> triangles;
+  for (int k = 0; k < settings.iterations; ++k)
+  {
+    x = smoothTangentially(current, x, settings.weight);
+    if (flipEdges(current, x, settings.flips, triangles) > 0 &&
+      !SurfaceMesh::build(x, triangles, current, error))
+    {
+      return false;
+    }
+  }
+  return SurfaceMesh::build(x, current.triangles(), relaxed, error);
+}
+
+} // namespace shrinkwrap

@@ -128,8 +128,8 @@ TriangleSurface contourOf(vtkImageData* image, const char* array, double value)
 // The paper's Section 5 start, a contour of d near the target, taken as a morphological closing: the
 // target dilated by offset + closing, then eroded by closing. A plain contour nearly touches itself
 // where two parts are about twice the offset apart, and the thin necks marching cubes leaves there
-// pinch off under curvature at once; the closing fills gaps narrower than 2 (offset + closing) and
-// fills cavities (the flood-fill sign of the dilated surface's distance).
+// pinch off under curvature at once; the closing fills gaps narrower than 2 (offset + closing). Walls
+// of cavities (an unsigned field's contour has them inside an open target) are left out.
 bool offsetSurface(vtkImageData* field, const GridLattice& lattice, double offset, double closing,
   TriangleSurface& surface, std::string& error)
 {
@@ -157,6 +157,7 @@ bool offsetSurface(vtkImageData* field, const GridLattice& lattice, double offse
   eroded->CopyStructure(field);
   eroded->GetPointData()->AddArray(distance);
   surface = contourOf(eroded, "Erosion", -closing);
+  removeCavities(surface);
   if (surface.triangles.empty())
   {
     error = "nothing is left of the offset surface after the closing";
@@ -417,6 +418,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   settings.rhoA = this->RhoA;
   settings.distanceWeight = this->DistanceWeighting;
   settings.edgeFlips = this->EdgeFlips;
+  settings.edgeCollapses = this->EdgeCollapses;
   settings.flips.maxDihedral = this->FlipDihedralLimit * M_PI / 180.0;
   settings.solverTolerance = this->SolverTolerance;
   session->evolver =
@@ -493,9 +495,10 @@ int vtkShrinkWrapFilter::RequestData(
     auto base = std::prev(s.cache.upper_bound(shown));
     if (s.evolver->steps() != base->first)
     {
-      s.evolver->restart(base->second.state, base->first);
       // Cached triangles were the evolver's own, so they always form a closed surface again.
-      if (base->second.triangles != s.evolverTriangles && s.evolver->reconnect(*base->second.triangles))
+      const bool reconnect = base->second.triangles != s.evolverTriangles;
+      if (s.evolver->restart(base->second.state, reconnect ? base->second.triangles.get() : nullptr, base->first) &&
+        reconnect)
       {
         s.evolverTriangles = base->second.triangles;
       }
@@ -513,7 +516,7 @@ int vtkShrinkWrapFilter::RequestData(
           s.failure = report.message;
           break;
         }
-        if (report.flips > 0)
+        if (report.flips > 0 || report.collapses > 0)
         {
           s.evolverTriangles =
             std::make_shared<const std::vector<std::array<int, 3>>>(s.evolver->mesh().triangles());
@@ -664,6 +667,7 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RhoA: " << this->RhoA << "\n";
   os << indent << "DistanceWeighting: " << this->DistanceWeighting << "\n";
   os << indent << "EdgeFlips: " << this->EdgeFlips << "\n";
+  os << indent << "EdgeCollapses: " << this->EdgeCollapses << "\n";
   os << indent << "FlipDihedralLimit: " << this->FlipDihedralLimit << "\n";
   os << indent << "StartingShape: " << (this->StartingShape == ICOSPHERE ? "Icosphere" : "Offset Surface") << "\n";
   os << indent << "StartOffset: " << this->StartOffset << "\n";

@@ -28,7 +28,8 @@
  * NumberOfSteps N_t = 200, SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 1 and D = 0
  * (eq. (4)), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
  * DistanceWeighting off (rho(d) of eq. (10)) with RhoA = 1 (its A), EdgeFlips on with FlipDihedralLimit
- * 60 degrees (flips change the triangles from step to step, never the vertices), StartingShape
+ * 60 degrees (flips change the triangles from step to step, never the vertices), EdgeCollapses on
+ * (a collapse removes a vertex), StartingShape
  * ICOSPHERE (or OFFSET_SURFACE, StartOffset 3 and StartClosing 3 cells), InitialRelaxation 10,
  * AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates scaled so that the mean
  * co-volume of the sphere inscribed in the target's box is tau), SolverTolerance 1e-6, Resolution 120
@@ -123,6 +124,14 @@ public:
   vtkBooleanMacro(EdgeFlips, bool);
   ///@}
   ///@{
+  /// Collapse the shortest edge of a triangle whose smallest angle falls below about 6 degrees (where
+  /// flips cannot help: the surface is compressed, e.g. sinking into a pocket). A collapse removes a
+  /// vertex, so the vertex count may drop from step to step. Default on.
+  vtkSetMacro(EdgeCollapses, bool);
+  vtkGetMacro(EdgeCollapses, bool);
+  vtkBooleanMacro(EdgeCollapses, bool);
+  ///@}
+  ///@{
   /// The largest angle (degrees) between the normals of two triangles whose edge may flip, so that
   /// flips never cut across a ridge. Default 60.
   vtkSetClampMacro(FlipDihedralLimit, double, 0.0, 180.0);
@@ -198,6 +207,7 @@ protected:
   double RhoA = 1.0;
   bool DistanceWeighting = false;
   bool EdgeFlips = true;
+  bool EdgeCollapses = true;
   double FlipDihedralLimit = 60.0;
   int StartingShape = ICOSPHERE;
   double StartOffset = 3.0;

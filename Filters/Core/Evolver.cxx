@@ -268,13 +268,43 @@ StepReport Evolver::step()
     report.failure = Failure::SolverFailed;
     report.message = "the linear solver did not converge at step " + std::to_string(report.step);
   }
-  if (!report.ok())
+  // A triangle that degenerated within the step may still be mended by flips and collapses: the step
+  // fails only if they cannot mend it, and then the last good surface is restored.
+  const bool mendable =
+    report.failure == Failure::DegenerateTriangle && converged && (s.edgeFlips || s.edgeCollapses);
+  if (!report.ok() && !mendable)
   {
     return report;
   }
+  std::vector<Vec3> goodY, goodVT;
+  std::vector<std::array<int, 3>> goodTriangles;
+  if (mendable)
+  {
+    goodY = this->Y;
+    goodVT = this->VT;
+    goodTriangles = this->Mesh.triangles();
+  }
   this->Y.swap(next);
   this->VT.swap(vt);
+  this->adjustConnectivity(report);
+  if (mendable)
+  {
+    const StepReport mended = this->check(this->Y);
+    if (!mended.ok())
+    {
+      this->reset(goodY, goodTriangles);
+      this->VT.swap(goodVT);
+      return mended;
+    }
+    report = StepReport{ Failure::None, mended.step, -1, {}, report.flips, report.collapses };
+  }
   ++this->Steps;
+  return report;
+}
+
+void Evolver::adjustConnectivity(StepReport& report)
+{
+  const EvolverSettings& s = this->Settings;
   if (s.edgeFlips)
   {
     std::vector<std::array<int, 3>> triangles;
@@ -284,7 +314,26 @@ StepReport Evolver::step()
       report.flips = 0;
     }
   }
-  return report;
+  // Degenerating triangles cluster where the surface folds, and a pass collapses one edge per
+  // neighbourhood: passes repeat while they find edges to collapse.
+  for (int pass = 0; s.edgeCollapses && pass < s.collapses.maxPasses; ++pass)
+  {
+    std::vector<Vec3> points;
+    std::vector<std::array<int, 3>> triangles;
+    std::vector<int> kept;
+    const int collapses = collapseEdges(this->Mesh, this->Y, s.collapses, points, triangles, kept);
+    std::vector<Vec3> velocity;
+    for (int v : kept)
+    {
+      velocity.push_back(this->VT[v]);
+    }
+    if (collapses == 0 || !this->reset(points, triangles))
+    {
+      break;
+    }
+    this->VT.swap(velocity);
+    report.collapses += collapses;
+  }
 }
 
 std::vector<Vec3> Evolver::positionsOf(const std::vector<Vec3>& state) const
@@ -298,28 +347,40 @@ std::vector<Vec3> Evolver::positionsOf(const std::vector<Vec3>& state) const
   return x;
 }
 
-void Evolver::restart(const std::vector<Vec3>& state, int steps)
+bool Evolver::restart(const std::vector<Vec3>& state, const std::vector<std::array<int, 3>>* triangles, int steps)
 {
-  if (state.size() == this->Y.size())
+  if (triangles ? !this->reset(state, *triangles) : state.size() != this->Y.size())
   {
-    this->Y = state;
+    return false;
   }
+  this->Y = state;
   this->Steps = steps;
   this->Potential.clear();
-  std::fill(this->VT.begin(), this->VT.end(), Vec3::Zero());
+  this->VT.assign(this->Y.size(), Vec3::Zero());
+  return true;
+}
+
+bool Evolver::reset(const std::vector<Vec3>& y, const std::vector<std::array<int, 3>>& triangles)
+{
+  SurfaceMesh mesh;
+  std::string error;
+  if (!SurfaceMesh::build(y, triangles, mesh, error))
+  {
+    return false;
+  }
+  if (y.size() != this->Y.size())
+  {
+    this->Potential.clear(); // a warm start for the same vertices only
+  }
+  this->Y = y;
+  this->Mesh = std::move(mesh);
+  this->Linear = std::make_unique<Solver>(this->Mesh);
+  return true;
 }
 
 bool Evolver::reconnect(const std::vector<std::array<int, 3>>& triangles)
 {
-  SurfaceMesh mesh;
-  std::string error;
-  if (!SurfaceMesh::build(this->Y, triangles, mesh, error))
-  {
-    return false;
-  }
-  this->Mesh = std::move(mesh);
-  this->Linear = std::make_unique<Solver>(this->Mesh);
-  return true;
+  return this->reset(this->Y, triangles);
 }
 
 SurfaceGeometry Evolver::geometry() const

@@ -4,13 +4,15 @@
 // (eq. (4)), d the signed distance to the target. One step is semi-implicit finite volumes with
 // barycentric co-volumes and cotangent weights (Section 2.2); per vertex i and coordinate:
 //   (1 + tau eps_i/|V_i| sum_j w_ij) F_i - tau eps_i/|V_i| sum_j w_ij F_j = F_i^old + tau eta_i N_i + tau v_T,i.
-// A step may end with edge flips (EdgeFlips.h), which change the triangles and not the vertices.
+// A step may end with edge flips (EdgeFlips.h), which change the triangles and not the vertices, and
+// edge collapses (EdgeCollapses.h), which merge the ends of the short edges of degenerating triangles.
 // Positions may be scaled for stability (Section 2.4, StabilityScaling.h): the evolver works in scaled
 // coordinates and callers only ever see their own units.
 #ifndef ShrinkWrap_Evolver_h
 #define ShrinkWrap_Evolver_h
 
 #include "DistanceGrid.h"
+#include "EdgeCollapses.h"
 #include "EdgeFlips.h"
 #include "SurfaceGeometry.h"
 
@@ -50,6 +52,8 @@ struct EvolverSettings
   double rhoA = 1.0;            // A
   bool edgeFlips = false;       // flip edges after each step (EdgeFlips.h)
   FlipSettings flips;
+  bool edgeCollapses = false;   // collapse the short edges of degenerating triangles (EdgeCollapses.h)
+  CollapseSettings collapses;
   bool volumePerArea = true;    // v_T = (integral of grad psi over V_i) / |V_i|; false: the paper's code
   LinearSolver solver = LinearSolver::ConjugateGradient;
   double solverTolerance = 1e-10; // relative residual
@@ -72,6 +76,7 @@ struct StepReport
   int where = -1;    // the vertex or triangle concerned
   std::string message;
   int flips = 0;     // edges flipped after the step
+  int collapses = 0; // edges collapsed after the step (vertices removed)
   bool ok() const { return this->failure == Failure::None; }
 };
 
@@ -98,8 +103,10 @@ public:
   // caller's positions for a state.
   const std::vector<Vec3>& state() const { return this->Y; }
   std::vector<Vec3> positionsOf(const std::vector<Vec3>& state) const;
-  // Continues from an earlier state as the result of step `steps`, e.g. a cached step.
-  void restart(const std::vector<Vec3>& state, int steps);
+  // Continues from an earlier state as the result of step `steps`, e.g. a cached step, with its
+  // triangles when they differ from the current ones (always when the vertex count differs); false if
+  // they do not form a closed 2-manifold, and then nothing changes.
+  bool restart(const std::vector<Vec3>& state, const std::vector<std::array<int, 3>>* triangles, int steps);
   // Takes new triangles on the same vertices (e.g. a cached step's after edge flips); false if they
   // are not a closed 2-manifold, and then nothing changes.
   bool reconnect(const std::vector<std::array<int, 3>>& triangles);
@@ -113,6 +120,8 @@ private:
   struct Solver;
   void sampleField(std::vector<double>& d, std::vector<Vec3>& grad) const;
   StepReport check(const std::vector<Vec3>& y) const;
+  bool reset(const std::vector<Vec3>& y, const std::vector<std::array<int, 3>>& triangles);
+  void adjustConnectivity(StepReport& report); // flips, then collapses, as the settings ask
 
   SurfaceMesh Mesh;
   EvolverSettings Settings;

@@ -1,5 +1,6 @@
 #include "StartingSurface.h"
 
+#include <algorithm>
 #include <numeric>
 
 namespace shrinkwrap
@@ -66,23 +67,16 @@ std::vector<int> componentRoots(const TriangleSurface& surface)
   return parent;
 }
 
-} // namespace
-
-int removeSpecks(TriangleSurface& surface, double size)
+// Removes the components for which `drop(root)` holds; returns how many were removed.
+template <typename Drop>
+int removeComponents(TriangleSurface& surface, const std::vector<int>& root, Drop drop)
 {
-  const std::vector<int> root = componentRoots(surface);
-  std::vector<Box> boxes(surface.points.size());
+  int removed = 0;
   for (size_t v = 0; v < surface.points.size(); ++v)
   {
-    boxes[root[v]].extend(surface.points[v]);
+    removed += root[v] == static_cast<int>(v) && drop(root[v]);
   }
-  auto speck = [&](int r) { return (boxes[r].max - boxes[r].min).maxCoeff() < size; };
-  int specks = 0;
-  for (size_t v = 0; v < surface.points.size(); ++v)
-  {
-    specks += root[v] == static_cast<int>(v) && speck(root[v]);
-  }
-  if (specks == 0)
+  if (removed == 0)
   {
     return 0;
   }
@@ -91,7 +85,7 @@ int removeSpecks(TriangleSurface& surface, double size)
   TriangleSurface kept;
   for (size_t v = 0; v < surface.points.size(); ++v)
   {
-    if (!speck(root[v]))
+    if (!drop(root[v]))
     {
       index[v] = static_cast<int>(kept.points.size());
       kept.points.push_back(surface.points[v]);
@@ -105,7 +99,36 @@ int removeSpecks(TriangleSurface& surface, double size)
     }
   }
   surface = std::move(kept);
-  return specks;
+  return removed;
+}
+
+} // namespace
+
+int removeSpecks(TriangleSurface& surface, double size)
+{
+  const std::vector<int> root = componentRoots(surface);
+  std::vector<Box> boxes(surface.points.size());
+  for (size_t v = 0; v < surface.points.size(); ++v)
+  {
+    boxes[root[v]].extend(surface.points[v]);
+  }
+  return removeComponents(
+    surface, root, [&](int r) { return (boxes[r].max - boxes[r].min).maxCoeff() < size; });
+}
+
+int removeCavities(TriangleSurface& surface)
+{
+  const std::vector<int> root = componentRoots(surface);
+  std::vector<double> volume(surface.points.size(), 0.0);
+  for (const auto& t : surface.triangles)
+  {
+    const Vec3& p = surface.points[t[0]];
+    volume[root[t[0]]] += p.dot(surface.points[t[1]].cross(surface.points[t[2]])) / 6;
+  }
+  // The largest piece is an outer one, whichever way the triangles face.
+  const double outer = *std::max_element(volume.begin(), volume.end(),
+    [](double u, double w) { return std::abs(u) < std::abs(w); });
+  return removeComponents(surface, root, [&](int r) { return volume[r] * outer < 0; });
 }
 
 bool relaxTangentially(

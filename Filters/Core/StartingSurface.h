@@ -19,6 +19,10 @@ namespace shrinkwrap
 // returns how many were removed.
 int removeSpecks(TriangleSurface& surface, double size);
 
+// Removes the components that face the other way from the largest one: the walls of cavities, which
+// a contour of an unsigned field has inside the target. Returns how many were removed.
+int removeCavities(TriangleSurface& surface);
+
 struct RelaxSettings
 {
   int iterations = 10;

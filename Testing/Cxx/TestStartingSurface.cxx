@@ -101,6 +101,16 @@ void removesSpecks()
   std::string error;
   SW_CHECK(shrinkwrap::SurfaceMesh::build(s.points, s.triangles, mesh, error), "still closed: " << error);
   SW_CHECK(shrinkwrap::removeSpecks(s, 0.1) == 0, "nothing more to remove");
+
+  // A cavity: a smaller sphere inside, facing inwards. A second object beside it faces outwards.
+  shrinkwrap::TriangleSurface cavity = shrinkwrap::icosphere(1, Vec3(0, 0, 0), 0.5);
+  for (auto& t : cavity.triangles)
+  {
+    std::swap(t[1], t[2]);
+  }
+  append(cavity);
+  SW_CHECK(shrinkwrap::removeCavities(s) == 1 && s.points.size() == 162 + 42 && s.triangles.size() == 400,
+    "the cavity's wall is removed, the two outer pieces kept");
 }
 
 // The level set d = 0.1 of the torus, sampled on a 0.05 grid, by marching cubes.

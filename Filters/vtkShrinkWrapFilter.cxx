@@ -134,9 +134,11 @@ bool offsetSurface(vtkImageData* field, const GridLattice& lattice, double offse
   TriangleSurface& surface, std::string& error)
 {
   const TriangleSurface dilated = contourOf(field, "SignedDistance", offset + closing);
-  if (dilated.triangles.empty())
+  SurfaceMesh closed;
+  if (dilated.triangles.empty() || !SurfaceMesh::build(dilated.points, dilated.triangles, closed, error))
   {
-    error = "the distance field has no contour at Start Offset + Start Closing";
+    error = "the contour at Start Offset + Start Closing is empty or reaches the border of the distance "
+            "field; lower them, or enlarge the field";
     return false;
   }
   TriangleSoup soup;
@@ -149,8 +151,7 @@ bool offsetSurface(vtkImageData* field, const GridLattice& lattice, double offse
     computeSignedDistance(soup, lattice, SignedDistanceSettings(), distance->GetPointer(0));
   if (!result.isSigned)
   {
-    error = "the surface at Start Offset + Start Closing is not closed inside the distance field; lower "
-            "them or enlarge the field";
+    error = "the distance to the contour at Start Offset + Start Closing has no sign";
     return false;
   }
   vtkNew<vtkImageData> eroded;

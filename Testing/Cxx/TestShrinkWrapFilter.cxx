@@ -12,6 +12,7 @@
 #include <vtkInformation.h>
 #include <vtkPlane.h>
 #include <vtkPolyDataConnectivityFilter.h>
+#include <vtkReverseSense.h>
 #include <vtkSphereSource.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkStringArray.h>
@@ -295,5 +296,33 @@ int TestShrinkWrapFilter(int, char*[])
   bad->SetInitialSurfaceConnection(sphere->GetOutputPort());
   bad->Update();
   SW_CHECK(stepOf(bad->GetOutput()) == 5 && statusOf(bad->GetOutput()) == "ok", "a closed initial surface wraps");
+
+  // The same sphere facing inwards is turned outwards: with D > 0 (not symmetric in N) it wraps the same.
+  bad->SetD(0.5);
+  bad->Update();
+  const std::vector<double> outwards = pointsOf(bad->GetOutput());
+  vtkNew<vtkReverseSense> inwards;
+  inwards->SetInputConnection(sphere->GetOutputPort());
+  bad->SetInitialSurfaceConnection(inwards->GetOutputPort());
+  bad->Update();
+  const std::vector<double> turned = pointsOf(bad->GetOutput());
+  double largest = outwards.size() == turned.size() ? 0 : 1e9;
+  for (size_t i = 0; i < turned.size() && i < outwards.size(); ++i)
+  {
+    largest = std::max(largest, std::abs(turned[i] - outwards[i]));
+  }
+  SW_CHECK(largest < 1e-9, "an inward-facing initial surface wraps like the outward one (" << largest << ")");
+
+  // The offset start asked to reach beyond the field: an error and an empty output; a sane one wraps.
+  bad->SetInitialSurfaceConnection(nullptr);
+  bad->SetD(0);
+  bad->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
+  bad->SetStartOffset(1000);
+  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
+    "an offset surface beyond the distance field: error");
+  bad->SetStartOffset(3);
+  bad->Update();
+  SW_CHECK(statusOf(bad->GetOutput()) == "ok" && bad->GetOutput()->GetNumberOfPoints() > 0,
+    "then a sane offset wraps");
   return testing::finish("TestShrinkWrapFilter");
 }

@@ -99,5 +99,19 @@ check(data.GetNumberOfPoints() == 642 and data.GetFieldData().GetArray("StepInde
 check(computed(long_run) == 60 and aborted_at < 60,
       "resuming from the %d cached steps, not from zero" % aborted_at)
 
+# The Offset Surface start, by its panel names; its own properties show only with it.
+offset = ShrinkWrap(Input=reader, StartingShape="Offset Surface", StartOffset=3, StartClosing=3, NumberOfSteps=40)
+offset.UpdatePipeline(40 * tau)
+_, data = points(offset)
+check(data.GetNumberOfPoints() > 642 and data.GetFieldData().GetAbstractArray("Status").GetValue(0) == "ok",
+      "the Offset Surface start wraps (%d vertices)" % data.GetNumberOfPoints())
+distance = data.GetPointData().GetArray("Distance")
+icosphere_run = ShrinkWrap(Input=reader, NumberOfSteps=40)
+icosphere_run.UpdatePipeline(40 * tau)
+_, near = points(icosphere_run)
+largest = lambda d: max(abs(d.GetPointData().GetArray("Distance").GetValue(i)) for i in range(d.GetNumberOfPoints()))
+check(largest(data) < largest(near), "and ends closer to the target than the icosphere (largest |d| %.4f < %.4f)"
+      % (largest(data), largest(near)))
+
 print("%d passed, %d failed" % (len(checks) - len(failures), len(failures)))
 sys.exit(1 if failures else 0)

@@ -154,6 +154,7 @@ StepReport Evolver::check(const std::vector<Vec3>& y) const
     }
   }
   const SmallestAngle smallest = smallestAngle(this->Mesh, y);
+  report.smallestAngle = smallest.angle;
   if (!(smallest.angle >= this->Settings.minAngle))
   {
     message << "triangle " << smallest.triangle << " degenerated (smallest angle " << smallest.angle
@@ -296,7 +297,7 @@ StepReport Evolver::step()
       this->VT.swap(goodVT);
       return mended;
     }
-    report = StepReport{ Failure::None, mended.step, -1, {}, report.flips, report.collapses };
+    report = StepReport{ Failure::None, mended.step, -1, {}, report.flips, report.collapses, mended.smallestAngle };
   }
   ++this->Steps;
   return report;
@@ -316,7 +317,8 @@ void Evolver::adjustConnectivity(StepReport& report)
   }
   // Degenerating triangles cluster where the surface folds, and a pass collapses one edge per
   // neighbourhood: passes repeat while they find edges to collapse.
-  for (int pass = 0; s.edgeCollapses && pass < s.collapses.maxPasses; ++pass)
+  const bool degenerating = !(report.smallestAngle >= s.collapses.maxAngle);
+  for (int pass = 0; s.edgeCollapses && degenerating && pass < s.collapses.maxPasses; ++pass)
   {
     std::vector<Vec3> points;
     std::vector<std::array<int, 3>> triangles;

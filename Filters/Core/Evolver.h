@@ -77,6 +77,7 @@ struct StepReport
   std::string message;
   int flips = 0;     // edges flipped after the step
   int collapses = 0; // edges collapsed after the step (vertices removed)
+  double smallestAngle = M_PI; // radians, over the triangles at the end of the step (before any repair)
   bool ok() const { return this->failure == Failure::None; }
 };
 

@@ -1,6 +1,7 @@
 // Shrink Wrap beside CGAL's alpha_wrap_3 in one run, on CGAL's bunny00 and armadillo.
 //   BenchShrinkWrap <CGAL data/meshes folder> [output folder for the wraps]
-// Ours: default parameters, 200 steps, subdivision levels 3..6; the time of the distance field
+// Ours: default parameters, 200 steps, subdivision levels 3..6 (D = 0 and 0.5), and from the offset
+// surface (D = 0 and 0.5); the time of the distance field
 // (Resolution 120) is shown apart and included in the total. CGAL: alpha = diagonal / 20, / 50, / 100,
 // offset = alpha / 30 (CGAL's examples). For each wrap: vertices, one-sided distances from the wrap's
 // vertices to the target and from the target's vertices to the wrap (max, as a Hausdorff estimate, in
@@ -140,6 +141,27 @@ int main(int argc, char* argv[])
         {
           write(testing::triangulated(result), out + "/" + name + "_shrinkwrap_s4" + (D > 0 ? "_D05" : "") + ".vtp");
         }
+      }
+    }
+
+    // The Offset Surface start (StartOffset 3, StartClosing 3 cells; vertices follow the field), with
+    // D = 0 and D = 0.5.
+    for (const double D : { 0.0, 0.5 })
+    {
+      vtkNew<vtkShrinkWrapFilter> wrap;
+      wrap->SetInputData(mesh);
+      wrap->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
+      wrap->SetD(D);
+      start = Clock::now();
+      wrap->Update();
+      const double total = seconds(start);
+      vtkPolyData* result = wrap->GetOutput();
+      auto* status = vtkStringArray::SafeDownCast(result->GetFieldData()->GetAbstractArray("Status"));
+      row(std::string("Shrink Wrap, offset start") + (D > 0 ? ", D=0.5" : ""), sdfSeconds, total,
+        testing::triangulated(result), target, status ? status->GetValue(0) : "none");
+      if (!out.empty())
+      {
+        write(testing::triangulated(result), out + "/" + name + "_shrinkwrap_offset" + (D > 0 ? "_D05" : "") + ".vtp");
       }
     }
 

@@ -1,6 +1,6 @@
-"""Renders Shrink Wrap (s = 4, with D = 0 and, when written, D = 0.5) and CGAL's alpha wrap (diag/50) of
-a mesh side by side, edges shown.
-Usage: xvfb-run -a pvbatch render_wraps.py <folder with the benchmark's .vtp files> <name> <out.png>"""
+"""Renders Shrink Wrap (s = 4, with D = 0 and, when written, D = 0.5; from the offset surface with D = 0.5) and CGAL's
+alpha wrap (diag/50) of a mesh side by side, edges shown.
+Usage: Testing/run-with-x.sh pvbatch render_wraps.py <folder with the benchmark's .vtp files> <name> <out.png>"""
 import os
 import sys
 
@@ -9,6 +9,7 @@ from paraview.simple import *  # noqa: F401,F403
 folder, name, png = sys.argv[1], sys.argv[2], sys.argv[3]
 panels = [(name + "_shrinkwrap_s4.vtp", "Shrink Wrap, s = 4 (2562 vertices), D = 0"),
           (name + "_shrinkwrap_s4_D05.vtp", "Shrink Wrap, s = 4, D = 0.5"),
+          (name + "_shrinkwrap_offset_D05.vtp", "Shrink Wrap, offset start, D = 0.5"),
           (name + "_alphawrap_50.vtp", "CGAL alpha_wrap_3, alpha = diag/50")]
 panels = [p for p in panels if os.path.exists(os.path.join(folder, p[0]))]
 layout = CreateLayout("wraps")
@@ -36,7 +37,7 @@ for i, (file, title) in enumerate(panels):
     view.CameraViewUp = [0.0, 1.0, 0.0]
     ResetCamera(view)
     views.append(view)
-width = 700 * len(panels)
+width = 600 * len(panels)
 layout.SetSize(width, 650)
 SaveScreenshot(png, layout, ImageResolution=[width, 650])
 print("wrote", png)

@@ -324,14 +324,14 @@ void Evolver::adjustConnectivity(StepReport& report)
     std::vector<std::array<int, 3>> triangles;
     std::vector<int> kept;
     const int collapses = collapseEdges(this->Mesh, this->Y, s.collapses, points, triangles, kept);
+    if (collapses == 0 || !this->reset(points, triangles))
+    {
+      break;
+    }
     std::vector<Vec3> velocity;
     for (int v : kept)
     {
       velocity.push_back(this->VT[v]);
-    }
-    if (collapses == 0 || !this->reset(points, triangles))
-    {
-      break;
     }
     this->VT.swap(velocity);
     report.collapses += collapses;

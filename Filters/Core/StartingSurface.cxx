@@ -1,5 +1,7 @@
 #include "StartingSurface.h"
 
+#include "SurfaceGeometry.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -8,25 +10,11 @@ namespace shrinkwrap
 
 namespace
 {
-// Area-weighted vertex normals (unnormalised sums of triangle cross products).
-std::vector<Vec3> vertexNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x)
-{
-  std::vector<Vec3> normals(mesh.vertexCount(), Vec3::Zero());
-  for (const auto& t : mesh.triangles())
-  {
-    const Vec3 n = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
-    for (int v : t)
-    {
-      normals[v] += n;
-    }
-  }
-  return normals;
-}
-
 // One Jacobi sweep: every vertex towards the mean of its neighbours, without the normal component.
 std::vector<Vec3> smoothTangentially(const SurfaceMesh& mesh, const std::vector<Vec3>& x, double weight)
 {
-  const std::vector<Vec3> normals = vertexNormals(mesh, x);
+  SurfaceGeometry g;
+  computeGeometry(mesh, x, g);
   std::vector<Vec3> moved(x);
   for (int i = 0; i < mesh.vertexCount(); ++i)
   {
@@ -36,8 +24,7 @@ std::vector<Vec3> smoothTangentially(const SurfaceMesh& mesh, const std::vector<
       centroid += x[mesh.ring(p)];
     }
     const Vec3 step = centroid / mesh.valence(i) - x[i];
-    const double length = normals[i].norm();
-    const Vec3 n = length > 0 ? Vec3(normals[i] / length) : Vec3::Zero();
+    const Vec3& n = g.normal[i];
     moved[i] += weight * (step - step.dot(n) * n);
   }
   return moved;
@@ -118,6 +105,10 @@ int removeSpecks(TriangleSurface& surface, double size)
 
 int removeCavities(TriangleSurface& surface)
 {
+  if (surface.points.empty())
+  {
+    return 0;
+  }
   const std::vector<int> root = componentRoots(surface);
   std::vector<double> volume(surface.points.size(), 0.0);
   for (const auto& t : surface.triangles)

@@ -2,26 +2,11 @@
 
 #include "SurfaceGeometry.h"
 
-#include <algorithm>
-
 namespace shrinkwrap
 {
 
 namespace
 {
-// The ring entry of b around a, or -1.
-int ringEntry(const SurfaceMesh& mesh, int a, int b)
-{
-  for (int p = mesh.ringBegin(a); p < mesh.ringEnd(a); ++p)
-  {
-    if (mesh.ring(p) == b)
-    {
-      return p;
-    }
-  }
-  return -1;
-}
-
 // Only the two vertices opposite the edge (a, b) are neighbours of both; otherwise merging a and b
 // would pinch the surface.
 bool linkCondition(const SurfaceMesh& mesh, int a, int b)
@@ -29,7 +14,7 @@ bool linkCondition(const SurfaceMesh& mesh, int a, int b)
   int common = 0;
   for (int p = mesh.ringBegin(a); p < mesh.ringEnd(a); ++p)
   {
-    common += ringEntry(mesh, b, mesh.ring(p)) >= 0;
+    common += mesh.ringEntry(b, mesh.ring(p)) >= 0;
   }
   return common == 2;
 }
@@ -78,13 +63,13 @@ int collapseEdges(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const Col
   // orientations kept; the neighbours of both then wait for the next pass, so that every ring read
   // here is current.
   auto collapse = [&](int keep, int gone, const Vec3& m) {
-    const int p = ringEntry(mesh, keep, gone);
+    const int p = mesh.ringEntry(keep, gone);
     const int c = mesh.ring(mesh.next(keep, p)), d = mesh.ring(mesh.previous(keep, p));
     if (touched[keep] || touched[gone] || mesh.valence(c) <= 3 || mesh.valence(d) <= 3 ||
       mesh.valence(keep) + mesh.valence(gone) - 4 < 3 || !linkCondition(mesh, keep, gone) ||
       !keepsNormals(mesh, x, keep, gone, m, settings))
     {
-      return false;
+      return;
     }
     moved[keep] = m;
     mergedInto[gone] = keep;
@@ -97,7 +82,6 @@ int collapseEdges(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const Col
       }
     }
     ++collapses;
-    return true;
   };
   for (const auto& t : mesh.triangles())
   {
@@ -117,12 +101,16 @@ int collapseEdges(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const Col
         b = w;
       }
     }
-    const int p = ringEntry(mesh, a, b);
+    const int p = mesh.ringEntry(a, b);
     const int c = mesh.ring(mesh.next(a, p)), d = mesh.ring(mesh.previous(a, p));
     const int lone = mesh.valence(c) == 3 ? c : (mesh.valence(d) == 3 ? d : -1);
-    if (lone >= 0 ? !collapse(a, lone, x[a]) : !collapse(a, b, 0.5 * (x[a] + x[b])))
+    if (lone >= 0)
     {
-      continue;
+      collapse(a, lone, x[a]);
+    }
+    else
+    {
+      collapse(a, b, 0.5 * (x[a] + x[b]));
     }
   }
   if (collapses == 0)

@@ -17,18 +17,6 @@ Vec3 unitNormal(const Vec3& a, const Vec3& b, const Vec3& c)
   return length > 0 ? Vec3(n / length) : Vec3::Zero();
 }
 
-bool hasEdge(const SurfaceMesh& mesh, int a, int b)
-{
-  for (int p = mesh.ringBegin(a); p < mesh.ringEnd(a); ++p)
-  {
-    if (mesh.ring(p) == b)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 } // namespace
 
 // Over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j). The rings describe the
@@ -47,7 +35,7 @@ int flipEdges(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const FlipSet
       const int j = mesh.ring(p);
       const int c = mesh.ring(mesh.next(i, p)), d = mesh.ring(mesh.previous(i, p));
       if (j < i || touched[i] || touched[j] || touched[c] || touched[d] || mesh.valence(i) <= 3 ||
-        mesh.valence(j) <= 3 || c == d || hasEdge(mesh, c, d))
+        mesh.valence(j) <= 3 || c == d || mesh.ringEntry(c, d) >= 0)
       {
         continue;
       }

@@ -355,7 +355,7 @@ bool Evolver::restart(const std::vector<Vec3>& state, const std::vector<std::arr
   {
     return false;
   }
-  this->Y = state;
+  this->Y = state; // reset has set it already when the triangles came along
   this->Steps = steps;
   this->Potential.clear();
   this->VT.assign(this->Y.size(), Vec3::Zero());

@@ -38,6 +38,18 @@ public:
   // The entry after p in its vertex's ring, cyclically.
   int next(int i, int p) const { return p + 1 < this->RingStart[i + 1] ? p + 1 : this->RingStart[i]; }
   int previous(int i, int p) const { return p > this->RingStart[i] ? p - 1 : this->RingStart[i + 1] - 1; }
+  // The entry of j in i's ring, or -1 when (i, j) is not an edge.
+  int ringEntry(int i, int j) const
+  {
+    for (int p = this->RingStart[i]; p < this->RingStart[i + 1]; ++p)
+    {
+      if (this->Ring[p] == j)
+      {
+        return p;
+      }
+    }
+    return -1;
+  }
 
 private:
   std::vector<std::array<int, 3>> Triangles;

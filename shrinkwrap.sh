@@ -4,6 +4,7 @@
 #   demo   the main job on the default data (Data/trefoil.obj): out/trefoil_sdf.vti and .png
 #   test   the whole test suite through ctest, then the C++ tests again under AddressSanitizer
 #   bench  the benchmarks of Testing/Benchmarks (peers: OpenVDB, vtkImplicitPolyDataDistance)
+#   packages  prints the Debian packages it installs
 # Every step is idempotent: a second run only rebuilds what changed.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -11,11 +12,26 @@ mode="${1:-demo}"
 build="${SHRINKWRAP_BUILD:-$PWD/build}"
 jobs="$(nproc)"
 
-packages=(cmake ninja-build g++ paraview paraview-dev python3-paraview libeigen3-dev
-  qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libhdf5-dev libnetcdf-dev libgdal-dev
-  libboost-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libgl2ps-dev libglew-dev
-  libtheora-dev libtiff-dev libjpeg-dev liblz4-dev liblzma-dev libdouble-conversion-dev libutfcpp-dev
-  libexpat1-dev libfreetype-dev libpng-dev libxml2-dev mpi-default-dev mpi-default-bin libx11-dev libgl-dev xvfb xauth)
+# Debian packages, by what needs them. Testing/check_packages.py (run by `test`) fails when the build
+# resolves a file from a package this list does not bring: a machine that has one by chance hides it.
+packages=(
+  cmake ninja-build g++                       # the build
+  paraview paraview-dev python3-paraview      # ParaView 5.11 and its VTK: headers, CMake config, pvpython, GUI
+  libeigen3-dev                               # the evolver's sparse solvers
+  # find_package(ParaView) asks for these Qt5 modules (ParaView's Qt components)
+  qtbase5-dev libqt5opengl5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools
+  # ParaView's VTK config finds its third-party libraries through these
+  libhdf5-dev libnetcdf-dev libgdal-dev libboost-dev libavcodec-dev libavformat-dev libavutil-dev
+  libswscale-dev libgl2ps-dev libglew-dev libtheora-dev libtiff-dev libjpeg-dev liblz4-dev liblzma-dev
+  libdouble-conversion-dev libutfcpp-dev libexpat1-dev libfreetype-dev libfontconfig-dev libpng-dev
+  libxml2-dev libxml2-utils
+  mpi-default-dev mpi-default-bin             # VTK's config finds MPI; mpiexec runs the MPI test
+  # X11 and OpenGL for rendering; FindX11 also takes the optional X libraries it finds, so they are
+  # listed for a fresh machine to configure as CI's does
+  libx11-dev libgl-dev libice-dev libsm-dev libxcomposite-dev libxfixes-dev libxft-dev libxrender-dev
+  libxss-dev libxt-dev
+  xvfb xauth                                  # an X server for the rendering and GUI tests, the demo's picture
+)
 [ "$mode" = bench ] && packages+=(libopenvdb-dev libboost-iostreams-dev libcgal-dev)
 
 install_missing() {
@@ -53,6 +69,7 @@ configure_and_build() { # folder, extra cmake arguments...
   cmake --build "$dir" -j "$jobs"
 }
 
+[ "$mode" = packages ] && { printf '%s\n' "${packages[@]}"; exit 0; }
 install_missing
 plugin="$build/lib/paraview-5.11/plugins/ShrinkWrap/ShrinkWrap.so"
 case "$mode" in
@@ -63,6 +80,7 @@ case "$mode" in
   test)
     fetch_cgal_meshes
     configure_and_build "$build"
+    python3 Testing/check_packages.py "$build/CMakeCache.txt" "${packages[@]}"
     (cd "$build" && ctest --output-on-failure -j 2)
     # Bad input and the pipeline once more under AddressSanitizer and UBSan: bad input must not
     # corrupt memory. (The accuracy tests' brute-force references are too slow instrumented.)

@@ -84,9 +84,10 @@ case "$mode" in
     (cd "$build" && ctest --output-on-failure -j 2)
     # Bad input and the pipeline once more under AddressSanitizer and UBSan: bad input must not
     # corrupt memory. (The accuracy tests' brute-force references are too slow instrumented.)
-    configure_and_build "$build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHRINKWRAP_SANITIZE=ON
+    configure_and_build "$build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHRINKWRAP_SANITIZE=ON \
+      -DSHRINKWRAP_FUZZ_SECONDS=90
     (cd "$build-asan" && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-      ctest --output-on-failure -R "BadInput|Filter|StartingSurface")
+      ctest --output-on-failure -j 2 -R "BadInput|Filter|StartingSurface|Fuzz")
     ;;
   bench)
     fetch_cgal_meshes

@@ -7,6 +7,7 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
@@ -26,6 +27,7 @@
 #include "vtkTriangleStrip.h"
 
 #include <algorithm>
+#include <new>
 #include <cstdlib>
 #include <sstream>
 
@@ -35,21 +37,42 @@ namespace
 {
 using shrinkwrap::TriangleSoup;
 
-// The paper's triangle soup: polygons of any size (ear-cut by vtkPolygon when n > 3) and strips.
-// Cells naming points that do not exist are counted in badCells and left out.
-TriangleSoup soupFromPolyData(vtkPolyData* input, vtkIdType& badCells)
+// The polygon meshes of the input: itself, or the leaves of a composite dataset (one field of them
+// all). A leaf with cells that are not polygons is an error: Extract Surface makes polygons of it.
+bool polygonMeshes(vtkDataObject* input, std::vector<vtkPolyData*>& meshes, std::string& error)
 {
-  TriangleSoup soup;
-  badCells = 0;
+  meshes.clear();
+  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
+  {
+    if (auto* mesh = vtkPolyData::SafeDownCast(leaf))
+    {
+      meshes.push_back(mesh);
+    }
+    else if (leaf->GetNumberOfCells() > 0)
+    {
+      error = std::string("a block of the input is a ") + leaf->GetClassName() +
+        ", not a polygon mesh; apply Extract Surface to it first";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Appends a mesh to the paper's triangle soup: polygons of any size (ear-cut by vtkPolygon when
+// n > 3) and strips. Cells naming points that do not exist are counted in badCells and left out.
+void appendToSoup(vtkPolyData* input, TriangleSoup& soup, vtkIdType& badCells)
+{
   vtkPoints* points = input->GetPoints();
   const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
-  soup.points.resize(np);
+  const vtkIdType first = static_cast<vtkIdType>(soup.points.size());
+  soup.points.resize(first + np);
   for (vtkIdType i = 0; i < np; ++i)
   {
-    points->GetPoint(i, soup.points[i].data());
+    points->GetPoint(i, soup.points[first + i].data());
   }
   auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
-    soup.triangles.push_back({ static_cast<int>(a), static_cast<int>(b), static_cast<int>(c) });
+    soup.triangles.push_back(
+      { static_cast<int>(first + a), static_cast<int>(first + b), static_cast<int>(first + c) });
   };
   auto valid = [&](vtkIdType n, const vtkIdType* ids) {
     const bool ok = std::all_of(ids, ids + n, [np](vtkIdType id) { return id >= 0 && id < np; });
@@ -111,17 +134,15 @@ TriangleSoup soupFromPolyData(vtkPolyData* input, vtkIdType& badCells)
       k % 2 == 0 ? addTriangle(ids[k], ids[k + 1], ids[k + 2]) : addTriangle(ids[k + 1], ids[k], ids[k + 2]);
     }
   }
-  return soup;
 }
 
 // Bounds of the points that polygons and strips use: the surface, without stray points or lines.
-shrinkwrap::Box surfaceBounds(vtkPolyData* input)
+void extendBySurface(vtkPolyData* input, shrinkwrap::Box& box)
 {
-  shrinkwrap::Box box;
-  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  vtkPoints* points = input->GetPoints();
   if (!points)
   {
-    return box;
+    return;
   }
   const vtkIdType np = points->GetNumberOfPoints();
   for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
@@ -142,6 +163,15 @@ shrinkwrap::Box surfaceBounds(vtkPolyData* input)
         }
       }
     }
+  }
+}
+
+shrinkwrap::Box surfaceBounds(const std::vector<vtkPolyData*>& meshes)
+{
+  shrinkwrap::Box box;
+  for (vtkPolyData* mesh : meshes)
+  {
+    extendBySurface(mesh, box);
   }
   return box;
 }
@@ -164,7 +194,11 @@ vtkMeshSignedDistance::vtkMeshSignedDistance()
 
 int vtkMeshSignedDistance::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  // Composite inputs are taken whole (one field of all their meshes): left to the composite pipeline,
+  // they would run once per block.
+  info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
 
@@ -197,7 +231,12 @@ int vtkMeshSignedDistance::RequestInformation(
     vtkAlgorithm* producer = this->GetInputAlgorithm(0, 0);
     const int port = this->GetInputConnection(0, 0)->GetIndex();
     producer->UpdatePiece(0, 1, 0);
-    bounds = surfaceBounds(vtkPolyData::SafeDownCast(producer->GetOutputDataObject(port)));
+    std::vector<vtkPolyData*> meshes;
+    std::string ignored; // RequestData reports it
+    if (polygonMeshes(producer->GetOutputDataObject(port), meshes, ignored))
+    {
+      bounds = surfaceBounds(meshes);
+    }
   }
   shrinkwrap::GridLattice lattice;
   std::string error;
@@ -226,24 +265,31 @@ int vtkMeshSignedDistance::RequestUpdateExtent(
 int vtkMeshSignedDistance::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
-  if (!input)
+  std::vector<vtkPolyData*> meshes;
+  std::string error;
+  if (!polygonMeshes(vtkDataObject::GetData(inputVector[0], 0), meshes, error))
   {
-    vtkErrorMacro("Mesh Signed Distance needs a vtkPolyData input.");
+    vtkErrorMacro("Mesh Signed Distance needs polygon meshes: " << error << ".");
     return 1;
   }
 
   // Input checks: each leaves an empty output and the pipeline usable.
-  if (input->GetNumberOfLines() > 0 || input->GetNumberOfVerts() > 0)
+  vtkIdType lines = 0, verts = 0, badCells = 0;
+  TriangleSoup soup;
+  for (vtkPolyData* mesh : meshes)
   {
-    vtkWarningMacro("Ignoring " << input->GetNumberOfLines() << " lines and " << input->GetNumberOfVerts()
+    lines += mesh->GetNumberOfLines();
+    verts += mesh->GetNumberOfVerts();
+    appendToSoup(mesh, soup, badCells);
+  }
+  if (lines > 0 || verts > 0)
+  {
+    vtkWarningMacro("Ignoring " << lines << " lines and " << verts
                                 << " vertices: only polygons and triangle strips have an inside.");
   }
-  vtkIdType badCells;
-  const TriangleSoup soup = soupFromPolyData(input, badCells);
   if (badCells > 0)
   {
     vtkErrorMacro("The input has " << badCells << " cells whose point ids are out of range: it is corrupt.");
@@ -259,6 +305,12 @@ int vtkMeshSignedDistance::RequestData(
     vtkErrorMacro("The input has NaN or infinite point coordinates; fix or remove those points first.");
     return 1;
   }
+  if (!shrinkwrap::withinCoordinateRange(soup.bounds()))
+  {
+    vtkErrorMacro("The input has coordinates beyond +-1e30, which distances in float cannot hold; "
+                  "scale or translate it first.");
+    return 1;
+  }
   if (!(soup.maxTriangleArea() > 0))
   {
     vtkErrorMacro("Every triangle of the input is degenerate (zero area): there is no surface.");
@@ -266,8 +318,7 @@ int vtkMeshSignedDistance::RequestData(
   }
 
   shrinkwrap::GridLattice lattice;
-  std::string error;
-  if (!this->ComputeLattice(surfaceBounds(input), lattice, error))
+  if (!this->ComputeLattice(surfaceBounds(meshes), lattice, error))
   {
     vtkErrorMacro("Cannot place the grid: " << error << ".");
     return 1;
@@ -294,17 +345,32 @@ int vtkMeshSignedDistance::RequestData(
 
   vtkNew<vtkFloatArray> values;
   values->SetName("SignedDistance");
-  values->SetNumberOfValues(lattice.nodeCount());
   shrinkwrap::SignedDistanceResult result;
   const shrinkwrap::Progress progress([this](double fraction) {
     this->UpdateProgress(fraction);
     return !this->GetAbortExecute();
   });
-  shrinkwrap::onAllCores([&] {
-    result = shrinkwrap::computeSignedDistance(soup, lattice, settings, values->GetPointer(0), progress);
-  });
+  try // the memory estimate can be beaten by a process limit (ulimit -v, a job's cap)
+  {
+    if (!values->SetNumberOfValues(lattice.nodeCount()))
+    {
+      throw std::bad_alloc();
+    }
+    shrinkwrap::onAllCores([&] {
+      result = shrinkwrap::computeSignedDistance(soup, lattice, settings, values->GetPointer(0), progress);
+    });
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Out of memory for a " << lattice.dims[0] << " x " << lattice.dims[1] << " x "
+                                         << lattice.dims[2] << " grid (" << gibibytes(needed)
+                                         << " estimated): the process may not allocate it; lower Resolution "
+                                            "or raise CellSize.");
+    return 1;
+  }
   if (!result.completed)
   {
+    this->AbortExecute = 0; // the abort ends this run; the next update after a change runs normally
     vtkWarningMacro("Mesh Signed Distance was aborted; the output is empty.");
     return 1;
   }

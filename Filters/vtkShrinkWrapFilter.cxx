@@ -78,21 +78,38 @@ DistanceGrid gridOf(vtkImageData* image, std::string& error)
     error = "the distance field needs at least 2 nodes and a positive spacing on every axis";
     return {};
   }
+  if (values->GetNumberOfTuples() != lattice.nodeCount())
+  {
+    error = "the distance field's SignedDistance array has " + std::to_string(values->GetNumberOfTuples()) +
+      " values for " + std::to_string(lattice.nodeCount()) + " nodes";
+    return {};
+  }
   std::vector<float> v(values->GetNumberOfTuples());
   for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
   {
     v[i] = static_cast<float>(values->GetTuple1(i));
+    if (!std::isfinite(v[i]))
+    {
+      error = "the distance field has NaN or infinite values (node " + std::to_string(i) + ")";
+      return {};
+    }
   }
   return DistanceGrid(lattice, std::move(v));
 }
 
-// A polydata's triangles as a surface; false if it has other polygons (or none).
+// A polydata's triangles as a surface; false if it has other polygons (or none), triangles naming
+// points that do not exist, or points that are not finite.
 bool trianglesOf(vtkPolyData* mesh, TriangleSurface& surface)
 {
-  surface.points.resize(mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  const vtkIdType np = mesh->GetNumberOfPoints();
+  surface.points.resize(np);
+  for (vtkIdType i = 0; i < np; ++i)
   {
     mesh->GetPoint(i, surface.points[i].data());
+    if (!surface.points[i].allFinite())
+    {
+      return false;
+    }
   }
   auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
@@ -100,7 +117,7 @@ bool trianglesOf(vtkPolyData* mesh, TriangleSurface& surface)
     vtkIdType n;
     const vtkIdType* ids;
     it->GetCurrentCell(n, ids);
-    if (n != 3)
+    if (n != 3 || !std::all_of(ids, ids + 3, [np](vtkIdType id) { return id >= 0 && id < np; }))
     {
       return false;
     }
@@ -263,7 +280,7 @@ int vtkShrinkWrapFilter::RequestInformation(
 {
   // Every evolution step is a time step of the output.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  const int n = std::max(0, this->NumberOfSteps);
+  const int n = this->NumberOfSteps; // clamped by its setter: at most kMaxSteps
   const double tau = this->TimeStep > 0 ? this->TimeStep : 1.0;
   std::vector<double> times(n + 1);
   for (int k = 0; k <= n; ++k)
@@ -347,7 +364,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   const double h = session->field.lattice().spacing.maxCoeff();
   if (initial && !trianglesOf(initial, start))
   {
-    vtkErrorMacro("The InitialSurface must be made of triangles only.");
+    vtkErrorMacro("The InitialSurface must be made of triangles only, with finite points and valid point ids.");
     return false;
   }
   if (!initial && this->StartingShape == OFFSET_SURFACE &&
@@ -442,12 +459,26 @@ int vtkShrinkWrapFilter::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkPolyData* output = vtkPolyData::GetData(outInfo);
   output->Initialize();
+  try // memory can run out below any estimate (a process limit, a job's cap)
+  {
+    this->Execute(inputVector, outInfo, output);
+  }
+  catch (const std::bad_alloc&)
+  {
+    output->Initialize();
+    this->Current.reset(); // a half-made step is not kept; the next update starts over
+    vtkErrorMacro("Out of memory: lower Subdivision Level, Resolution or Cache Memory Limit.");
+  }
+  return 1;
+}
 
+void vtkShrinkWrapFilter::Execute(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output)
+{
   // One surface, not split: under MPI, piece 0 holds it and the other pieces are empty.
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
   {
-    return 1;
+    return;
   }
 
   // Any change of an input or a property starts a new session (and drops the cache).
@@ -470,23 +501,26 @@ int vtkShrinkWrapFilter::RequestData(
     onAllCores([&] { started = this->StartSession(inputVector); });
     if (!started)
     {
-      return 1;
+      return;
     }
     this->Current->key = key;
   }
   Session& s = *this->Current;
 
-  // The step asked for: the requested time snapped to a step, else the last step.
-  const int last = std::max(0, this->NumberOfSteps);
-  if (this->NumberOfSteps <= 0)
+  // The step asked for: the requested time snapped to a step (clamped to the steps there are, before
+  // rounding: a time far past the end is the last step), else the last step; NaN asks for no time.
+  const int last = this->NumberOfSteps;
+  if (last == 0)
   {
-    vtkWarningMacro("NumberOfSteps is " << this->NumberOfSteps << ": showing the starting surface.");
+    vtkWarningMacro("NumberOfSteps is 0: showing the starting surface.");
   }
   int wanted = last;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  const double asked = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) / this->TimeStep
+    : std::nan("");
+  if (!std::isnan(asked))
   {
-    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    wanted = std::clamp(static_cast<int>(std::lround(t / this->TimeStep)), 0, last);
+    wanted = asked <= 0 ? 0 : (asked >= last ? last : static_cast<int>(std::lround(asked)));
   }
   const int shown = s.lastGood >= 0 ? std::min(wanted, s.lastGood) : wanted;
 
@@ -532,23 +566,22 @@ int vtkShrinkWrapFilter::RequestData(
         }
       }
     });
-    // The pipeline takes an execution as up to date even when it was aborted or a property changed
-    // while it ran (a panel edit, a script's callback): RunAgain makes the next request run again, to
-    // resume from the cache or start over.
+    // An abort ends this run: the empty output stands until a property, an input or the time asked
+    // for changes (then the run resumes from the cache, or starts over).
     if (aborted)
     {
-      this->RunAgain = true;
-      this->AbortExecute = 0; // honoured; a set flag keeps the pipeline from running (no Modified)
+      this->AbortExecute = 0; // honoured; a set flag would stop every later run at its first step
       vtkWarningMacro("Shrink Wrap was aborted; the output is empty (computed steps stay cached).");
-      return 1;
+      return;
     }
     if (s.lastGood >= 0)
     {
       vtkWarningMacro("The evolution failed: " << s.failure << "; later times show step " << s.lastGood << ".");
     }
     // Keep the cache under its memory limit: drop every other step, keeping step 0, the newest and the
-    // one asked for.
-    while (s.cache.size() > 2 && s.cacheBytes() > this->CacheMemoryLimit * 1024 * 1024)
+    // one asked for. Once the stride passes the newest step only those three are left, however little
+    // memory is allowed.
+    while (s.stride <= s.newest && s.cacheBytes() > this->CacheMemoryLimit * 1024 * 1024)
     {
       s.stride *= 2;
       for (auto it = s.cache.begin(); it != s.cache.end();)
@@ -570,7 +603,7 @@ int vtkShrinkWrapFilter::RequestData(
   if (!SurfaceMesh::build(x, *entry.triangles, mesh, error))
   {
     vtkErrorMacro("Internal error: step " << found->first << " is not a closed surface: " << error << ".");
-    return 1;
+    return;
   }
   SurfaceGeometry g;
   computeGeometry(mesh, x, g);
@@ -649,7 +682,6 @@ int vtkShrinkWrapFilter::RequestData(
     this->RunAgain = true;
     vtkWarningMacro("Properties or inputs changed during the run; they apply from the next update.");
   }
-  return 1;
 }
 
 void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -75,7 +75,10 @@ public:
   ///@}
   ///@{
   /// N_t, the number of time steps. Default 200.
-  vtkSetMacro(NumberOfSteps, int);
+  // N_t, at most kMaxSteps: more steps than the paper's 200-600 by far, and an animation of 10,001
+  // frames is still one a timeline can hold.
+  static constexpr int kMaxSteps = 10000;
+  vtkSetClampMacro(NumberOfSteps, int, 0, kMaxSteps);
   vtkGetMacro(NumberOfSteps, int);
   ///@}
   ///@{
@@ -183,6 +186,10 @@ public:
   /// Evolution steps computed since the cache was last dropped (for tests and diagnostics).
   int GetNumberOfComputedSteps() const;
 
+  // An abort is no change of the wrap: unlike vtkAlgorithm's setter it leaves the modification time
+  // alone, so the computed steps stay cached and the next request resumes from them.
+  void SetAbortExecute(vtkTypeBool abort) override { this->AbortExecute = abort; }
+
 protected:
   vtkShrinkWrapFilter();
   ~vtkShrinkWrapFilter() override;
@@ -193,6 +200,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void Execute(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
 
   double TimeStep = 0.015;
   int NumberOfSteps = 200;

@@ -12,6 +12,11 @@ namespace
 constexpr double kMaxNodesPerAxis = 1 << 30;
 } // namespace
 
+bool withinCoordinateRange(const Box& box)
+{
+  return box.min.cwiseAbs().maxCoeff() <= kLargestCoordinate && box.max.cwiseAbs().maxCoeff() <= kLargestCoordinate;
+}
+
 bool placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLattice& lattice, std::string& error)
 {
   if (meshBounds.empty() || !meshBounds.min.allFinite() || !meshBounds.max.allFinite())
@@ -63,14 +68,19 @@ bool placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLattic
     span[a] = cells * h;
   }
   lattice.origin = meshBounds.center() - 0.5 * span;
+  if (!withinCoordinateRange(lattice.bounds()))
+  {
+    error = "the grid would reach beyond coordinates of +-1e30; lower OffsetFactor or BoxScale";
+    return false;
+  }
   return true;
 }
 
 bool explicitGrid(const Box& bounds, const std::array<int, 3>& dims, GridLattice& lattice, std::string& error)
 {
-  if (!bounds.min.allFinite() || !bounds.max.allFinite())
+  if (!bounds.min.allFinite() || !bounds.max.allFinite() || !withinCoordinateRange(bounds))
   {
-    error = "the output bounds are not finite";
+    error = "the output bounds are not finite or beyond +-1e30";
     return false;
   }
   for (int a = 0; a < 3; ++a)

@@ -77,6 +77,11 @@ struct GridPlacement
   double cellSize = 0;       // > 0 overrides resolution
 };
 
+// Coordinates beyond +-1e30 are refused: distances are stored as float (largest 3.4e38) and their
+// squares are formed in double (largest 1.8e308).
+constexpr double kLargestCoordinate = 1e30;
+bool withinCoordinateRange(const Box& box);
+
 // The lattice for a mesh with the given bounds; equal spacing on all axes. Returns false with a
 // message for bounds that are empty or not finite, or settings that make no grid.
 bool placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLattice& lattice, std::string& error);

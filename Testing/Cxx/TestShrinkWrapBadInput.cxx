@@ -1,0 +1,408 @@
+// Shrink Wrap and Mesh Signed Distance fed what crashed them (issue #8): composite inputs on every
+// port, a starved step cache, corrupt starting surfaces, absurd step counts and request times, short or
+// non-finite distance fields, coordinates too large for the field, aborts. Each gets a correct result
+// or a clear error and an empty output, and the filter computes a good input afterwards. Run under
+// AddressSanitizer and UBSan in CI.
+#include "TestUtilities.h"
+#include "vtkMeshSignedDistance.h"
+#include "vtkShrinkWrapFilter.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkDataObjectTypes.h>
+#include <vtkInformation.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPartitionedDataSet.h>
+#include <vtkPartitionedDataSetCollection.h>
+#include <vtkSphereSource.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkStringArray.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <functional>
+#include <limits>
+
+namespace
+{
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kInf = std::numeric_limits<double>::infinity();
+
+vtkSmartPointer<vtkPolyData> sphere(double x = 0, double radius = 1)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetCenter(x, 0, 0);
+  source->SetRadius(radius);
+  source->SetThetaResolution(16);
+  source->SetPhiResolution(16);
+  source->Update();
+  return source->GetOutput();
+}
+
+struct Said
+{
+  int errors = 0;
+  std::string text;
+};
+
+// Runs `run` and returns what the algorithm said through error and warning events.
+Said whileSaying(vtkAlgorithm* algorithm, const std::function<void()>& run)
+{
+  Said said;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&said);
+  observer->SetCallback([](vtkObject*, unsigned long id, void* data, void* message) {
+    auto* s = static_cast<Said*>(data);
+    s->errors += id == vtkCommand::ErrorEvent;
+    s->text += static_cast<const char*>(message);
+  });
+  const unsigned long e = algorithm->AddObserver(vtkCommand::ErrorEvent, observer);
+  const unsigned long w = algorithm->AddObserver(vtkCommand::WarningEvent, observer);
+  run();
+  algorithm->RemoveObserver(e);
+  algorithm->RemoveObserver(w);
+  return said;
+}
+
+int stepOf(vtkDataObject* data)
+{
+  vtkDataArray* a = data->GetFieldData()->GetArray("StepIndex");
+  return a ? static_cast<int>(a->GetTuple1(0)) : -1;
+}
+
+std::vector<double> pointsOf(vtkDataObject* data)
+{
+  std::vector<double> p;
+  auto* mesh = vtkPolyData::SafeDownCast(data);
+  for (vtkIdType i = 0; mesh && i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    mesh->GetPoint(i, x);
+    p.insert(p.end(), x, x + 3);
+  }
+  return p;
+}
+
+vtkSmartPointer<vtkShrinkWrapFilter> wrapOf(vtkDataObject* target, int steps = 5)
+{
+  auto wrap = vtkSmartPointer<vtkShrinkWrapFilter>::New();
+  wrap->SetInputData(target);
+  wrap->SetResolution(24);
+  wrap->SetSubdivisionLevel(2);
+  wrap->SetNumberOfSteps(steps);
+  return wrap;
+}
+
+// The filter still wraps a good target after whatever came before.
+void livesOn(vtkShrinkWrapFilter* wrap, const std::string& name)
+{
+  wrap->SetInputData(0, sphere());
+  wrap->SetInputConnection(1, nullptr);
+  wrap->SetInputConnection(2, nullptr);
+  wrap->Update();
+  SW_CHECK(pointsOf(wrap->GetOutputDataObject(0)).size() == 3 * 162, name << ": the pipeline lives on");
+}
+
+// Composite targets: the composite pipeline runs Shrink Wrap once per block; each block's wrap equals
+// the wrap of that mesh alone. Mesh Signed Distance takes the composite whole: one field of all meshes.
+void compositeInputs()
+{
+  vtkSmartPointer<vtkPolyData> a = sphere(0), b = sphere(3, 0.5);
+  auto lone = wrapOf(a);
+  lone->Update();
+  const std::vector<double> wrapA = pointsOf(lone->GetOutput());
+
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, a);
+  blocks->SetBlock(1, b);
+  vtkNew<vtkPartitionedDataSet> parts;
+  parts->SetPartition(0, a);
+  parts->SetPartition(1, b);
+  vtkNew<vtkPartitionedDataSetCollection> collection;
+  collection->SetPartitionedDataSet(0, parts);
+  for (vtkDataObject* input : std::initializer_list<vtkDataObject*>{ blocks, parts, collection })
+  {
+    const std::string name = input->GetClassName();
+    auto wrap = wrapOf(input);
+    const Said said = whileSaying(wrap, [&] { wrap->Update(); });
+    auto* out = vtkCompositeDataSet::SafeDownCast(wrap->GetOutputDataObject(0));
+    const auto leaves = vtkCompositeDataSet::GetDataSets<vtkPolyData>(out);
+    SW_CHECK(said.errors == 0 && leaves.size() == 2, name << " target: a wrap per mesh (" << leaves.size() << ")");
+    SW_CHECK(!leaves.empty() && pointsOf(leaves[0]) == wrapA, name << " target: the first wrap is that of its mesh alone");
+
+    vtkNew<vtkMeshSignedDistance> sdf;
+    sdf->SetInputData(input);
+    sdf->SetResolution(24);
+    sdf->Update();
+    vtkImageData* field = sdf->GetOutput();
+    double origin[3];
+    field->GetOrigin(origin);
+    // The field of both meshes: negative at both centres.
+    auto valueAt = [&](double x) {
+      const int i = static_cast<int>(std::lround((x - origin[0]) / field->GetSpacing()[0]));
+      const int j = static_cast<int>(std::lround(-origin[1] / field->GetSpacing()[1]));
+      const int k = static_cast<int>(std::lround(-origin[2] / field->GetSpacing()[2]));
+      return field->GetScalarComponentAsDouble(i, j, k, 0);
+    };
+    SW_CHECK(field->GetNumberOfPoints() > 0 && valueAt(0) < 0 && valueAt(3) < 0,
+      name << " into Mesh Signed Distance: one field, inside both meshes (" << valueAt(0) << ", " << valueAt(3) << ")");
+
+    // A composite where an image or a starting surface belongs: the executive refuses the type (its
+    // own error names it), never a crash.
+    for (int port : { 1, 2 })
+    {
+      auto withPort = wrapOf(a);
+      withPort->SetInputData(port, input);
+      withPort->Update();
+      SW_CHECK(pointsOf(withPort->GetOutputDataObject(0)).empty(), name << " on port " << port << ": no output");
+      livesOn(withPort, name + " on port " + std::to_string(port));
+    }
+  }
+
+  // A block that is not a polygon mesh: Mesh Signed Distance says so.
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < 4; ++i)
+  {
+    points->InsertNextPoint(i == 1, i == 2, i == 3);
+  }
+  grid->SetPoints(points);
+  const vtkIdType tet[4] = { 0, 1, 2, 3 };
+  grid->InsertNextCell(VTK_TETRA, 4, tet);
+  vtkNew<vtkMultiBlockDataSet> mixed;
+  mixed->SetBlock(0, a);
+  mixed->SetBlock(1, grid);
+  vtkNew<vtkMeshSignedDistance> sdf;
+  sdf->SetInputData(mixed);
+  sdf->SetResolution(24);
+  const Said said = whileSaying(sdf, [&] { sdf->Update(); });
+  SW_CHECK(said.errors > 0 && said.text.find("Extract Surface") != std::string::npos &&
+      sdf->GetOutput()->GetNumberOfPoints() == 0,
+    "a block of tetrahedra into Mesh Signed Distance: an error naming Extract Surface");
+  auto wrap = wrapOf(mixed);
+  whileSaying(wrap, [&] { wrap->Update(); });
+  const auto leaves = vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0));
+  SW_CHECK(!leaves.empty() && pointsOf(leaves[0]) == wrapA, "a block of tetrahedra beside a mesh: the mesh is wrapped");
+}
+
+// Cache Memory Limit below three steps (0, or 1 MiB with a large surface): the thinning stops at step
+// 0, the newest and the one shown. Asked for step 7 after the end, it recomputes step 7 exactly.
+void starvedCache()
+{
+  for (double limit : { 0.0, 1e-9, 1.0 })
+  {
+    auto wrap = wrapOf(sphere(), 40);
+    wrap->SetSubdivisionLevel(5);
+    wrap->SetCacheMemoryLimit(limit);
+    wrap->Update();
+    wrap->UpdateTimeStep(7 * 0.015);
+    auto fresh = wrapOf(sphere(), 7);
+    fresh->SetSubdivisionLevel(5);
+    fresh->Update();
+    SW_CHECK(stepOf(wrap->GetOutput()) == 7 && pointsOf(wrap->GetOutput()) == pointsOf(fresh->GetOutput()),
+      "Cache Memory Limit " << limit << " MiB: back to step 7, the same surface as a fresh run");
+  }
+}
+
+// A closed sphere around the target, spoiled: an id out of range or negative, a point not finite.
+void corruptStartingSurfaces()
+{
+  struct Case
+  {
+    const char* name;
+    std::function<void(std::vector<vtkIdType>&, vtkPoints*)> spoil;
+  };
+  const std::vector<Case> cases = {
+    { "a triangle naming point 100000", [](std::vector<vtkIdType>& ids, vtkPoints*) { ids[4] = 100000; } },
+    { "a negative point id", [](std::vector<vtkIdType>& ids, vtkPoints*) { ids[5] = -5; } },
+    { "a NaN point", [](std::vector<vtkIdType>&, vtkPoints* p) { p->SetPoint(3, kNaN, 0, 0); } },
+    { "an infinite point", [](std::vector<vtkIdType>&, vtkPoints* p) { p->SetPoint(3, 0, kInf, 0); } },
+  };
+  for (const Case& c : cases)
+  {
+    vtkSmartPointer<vtkPolyData> good = sphere(0, 1.5);
+    std::vector<vtkIdType> ids;
+    for (const auto& t : testing::triangulated(good).triangles)
+    {
+      ids.insert(ids.end(), t.begin(), t.end());
+    }
+    vtkNew<vtkPoints> points;
+    points->DeepCopy(good->GetPoints());
+    c.spoil(ids, points);
+    vtkNew<vtkCellArray> triangles;
+    for (size_t k = 0; k < ids.size(); k += 3)
+    {
+      triangles->InsertNextCell(3, &ids[k]);
+    }
+    vtkNew<vtkPolyData> start;
+    start->SetPoints(points);
+    start->SetPolys(triangles);
+    auto wrap = wrapOf(sphere(0, 0.5));
+    wrap->SetInputData(2, start);
+    const Said said = whileSaying(wrap, [&] { wrap->Update(); });
+    SW_CHECK(said.errors > 0 && wrap->GetOutput()->GetNumberOfPoints() == 0,
+      "InitialSurface with " << c.name << ": an error and an empty output");
+    livesOn(wrap, c.name);
+  }
+}
+
+void absurdStepsAndTimes()
+{
+  auto wrap = wrapOf(sphere());
+  for (int steps : { std::numeric_limits<int>::max(), 1000000000, -7 })
+  {
+    wrap->SetNumberOfSteps(steps);
+    wrap->UpdateInformation();
+    const int n = wrap->GetOutputInformation(0)->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    SW_CHECK(n == (steps < 0 ? 1 : vtkShrinkWrapFilter::kMaxSteps + 1),
+      "NumberOfSteps " << steps << ": " << n << " time steps advertised");
+  }
+  wrap->SetNumberOfSteps(5);
+  for (double t : { 5e7, 1e9, kInf, 1e300, kNaN })
+  {
+    wrap->UpdateTimeStep(t);
+    SW_CHECK(stepOf(wrap->GetOutput()) == 5, "time " << t << ": the last step (" << stepOf(wrap->GetOutput()) << ")");
+  }
+  for (double t : { -1.0, -kInf, -1e300 })
+  {
+    wrap->UpdateTimeStep(t);
+    SW_CHECK(stepOf(wrap->GetOutput()) == 0, "time " << t << ": step 0 (" << stepOf(wrap->GetOutput()) << ")");
+  }
+}
+
+void badDistanceFields()
+{
+  vtkNew<vtkMeshSignedDistance> sdf;
+  sdf->SetInputData(sphere());
+  sdf->SetResolution(24);
+  sdf->Update();
+  struct Case
+  {
+    const char* name;
+    std::function<void(vtkFloatArray*)> spoil;
+  };
+  const std::vector<Case> cases = {
+    { "shorter than the image", [](vtkFloatArray* a) { a->SetNumberOfTuples(a->GetNumberOfTuples() / 3); } },
+    { "empty", [](vtkFloatArray* a) { a->SetNumberOfTuples(0); } },
+    { "with a NaN", [](vtkFloatArray* a) { a->SetValue(a->GetNumberOfTuples() / 2, static_cast<float>(kNaN)); } },
+    { "with an infinity", [](vtkFloatArray* a) { a->SetValue(0, static_cast<float>(kInf)); } },
+  };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkImageData> field;
+    field->DeepCopy(sdf->GetOutput());
+    c.spoil(vtkFloatArray::SafeDownCast(field->GetPointData()->GetArray("SignedDistance")));
+    auto wrap = wrapOf(sphere());
+    wrap->SetInputData(1, field);
+    const Said said = whileSaying(wrap, [&] { wrap->Update(); });
+    std::cout << "DistanceField " << c.name << ": " << said.text.substr(said.text.find("): ") + 3) << std::endl;
+    SW_CHECK(said.errors > 0 && wrap->GetOutput()->GetNumberOfPoints() == 0,
+      "a DistanceField " << c.name << ": an error and an empty output");
+    livesOn(wrap, c.name);
+  }
+}
+
+void coordinatesTooLarge()
+{
+  for (double scale : { 1e160, 1e200, 1e300 })
+  {
+    vtkNew<vtkTransform> transform;
+    transform->Scale(scale, scale, scale);
+    vtkNew<vtkTransformPolyDataFilter> far;
+    far->SetInputData(sphere());
+    far->SetTransform(transform);
+    far->Update();
+    vtkNew<vtkMeshSignedDistance> sdf;
+    sdf->SetInputData(far->GetOutput());
+    sdf->SetResolution(24);
+    Said said = whileSaying(sdf, [&] { sdf->Update(); });
+    SW_CHECK(said.errors > 0 && sdf->GetOutput()->GetNumberOfPoints() == 0,
+      "a mesh scaled by " << scale << ": Mesh Signed Distance refuses it");
+    auto wrap = wrapOf(far->GetOutput());
+    said = whileSaying(wrap, [&] { wrap->Update(); });
+    SW_CHECK(said.errors > 0 && wrap->GetOutput()->GetNumberOfPoints() == 0,
+      "a mesh scaled by " << scale << ": Shrink Wrap refuses it");
+    livesOn(wrap, "scaled by " + std::to_string(scale));
+
+    // A mesh far away from an explicit grid at the origin: refused, not a heap overflow.
+    sdf->UseExplicitGridOn();
+    sdf->SetOutputBounds(-1, 1, -1, 1, -1, 1);
+    sdf->SetOutputDimensions(8, 8, 8);
+    said = whileSaying(sdf, [&] { sdf->Update(); });
+    SW_CHECK(said.errors > 0 && sdf->GetOutput()->GetNumberOfPoints() == 0,
+      "a mesh scaled by " << scale << " and an explicit grid at the origin: refused");
+  }
+  for (double offset : { 1e30, 1e300 })
+  {
+    vtkNew<vtkMeshSignedDistance> sdf;
+    sdf->SetInputData(sphere());
+    sdf->SetResolution(24);
+    sdf->SetOffsetFactor(offset);
+    const Said said = whileSaying(sdf, [&] { sdf->Update(); });
+    SW_CHECK(said.errors > 0 && sdf->GetOutput()->GetNumberOfPoints() == 0, "Offset Factor " << offset << ": refused");
+  }
+}
+
+// An abort ends that run only: Mesh Signed Distance computes again after a change; Shrink Wrap does not
+// run again by itself, and resumes from its cache when another time is asked for.
+void aborts()
+{
+  // Aborted once, as a user would (the executive's closing progress event must not abort again).
+  struct Count
+  {
+    int events = 0, abortAt = 1;
+  } count;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&count);
+  onProgress->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    auto* c = static_cast<Count*>(data);
+    if (++c->events == c->abortAt)
+    {
+      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+    }
+  });
+  vtkNew<vtkMeshSignedDistance> sdf;
+  sdf->SetInputData(sphere());
+  sdf->SetResolution(24);
+  sdf->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  whileSaying(sdf, [&] { sdf->Update(); });
+  SW_CHECK(sdf->GetOutput()->GetNumberOfPoints() == 0, "Mesh Signed Distance aborted: an empty output");
+  sdf->SetResolution(20);
+  sdf->Update();
+  SW_CHECK(sdf->GetOutput()->GetNumberOfPoints() == 21 * 21 * 21, "after a change it computes again");
+
+  auto wrap = wrapOf(sphere(), 30);
+  count = { 0, 10 };
+  wrap->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  whileSaying(wrap, [&] { wrap->UpdateTimeStep(30 * 0.015); });
+  const int aborted = wrap->GetNumberOfComputedSteps();
+  SW_CHECK(wrap->GetOutput()->GetNumberOfPoints() == 0 && aborted > 0 && aborted < 30,
+    "Shrink Wrap aborted after " << aborted << " steps: an empty output");
+  wrap->UpdateTimeStep(30 * 0.015);
+  wrap->Update();
+  SW_CHECK(wrap->GetNumberOfComputedSteps() == aborted && wrap->GetOutput()->GetNumberOfPoints() == 0,
+    "the same request again (a render) does not run the rest (" << wrap->GetNumberOfComputedSteps() << " steps)");
+  wrap->UpdateTimeStep((aborted - 1) * 0.015);
+  SW_CHECK(stepOf(wrap->GetOutput()) == aborted - 1 && wrap->GetNumberOfComputedSteps() == aborted,
+    "a step before the abort comes from the cache (" << wrap->GetNumberOfComputedSteps() << " computed)");
+  wrap->UpdateTimeStep(25 * 0.015);
+  SW_CHECK(stepOf(wrap->GetOutput()) == 25 && wrap->GetNumberOfComputedSteps() == 25,
+    "a later one resumes from the cached steps (" << wrap->GetNumberOfComputedSteps() << " computed)");
+  wrap->SetC(1.5);
+  wrap->UpdateTimeStep(30 * 0.015);
+  SW_CHECK(stepOf(wrap->GetOutput()) == 30 && wrap->GetNumberOfComputedSteps() == 30, "a change runs normally");
+}
+} // namespace
+
+int TestShrinkWrapBadInput(int, char*[])
+{
+  compositeInputs();
+  starvedCache();
+  corruptStartingSurfaces();
+  absurdStepsAndTimes();
+  badDistanceFields();
+  coordinatesTooLarge();
+  aborts();
+  return testing::finish("TestShrinkWrapBadInput");
+}

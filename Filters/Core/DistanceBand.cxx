@@ -76,8 +76,11 @@ bool outlineCells(const TriangleSoup& soup, const GridLattice& lattice, const Pr
   for (int a = 0; a < 3; ++a)
   {
     const double h = lattice.spacing[a];
-    lo[a] = std::clamp(static_cast<int>(std::floor((bounds.min[a] - lattice.origin[a]) / h)) - 1, 0, last[a]);
-    hi[a] = std::clamp(static_cast<int>(std::floor((bounds.max[a] - lattice.origin[a]) / h)) + 1, 0, last[a]);
+    // Clamped before the cast: a mesh far outside an explicit grid is beyond the range of int.
+    const double first = std::floor((bounds.min[a] - lattice.origin[a]) / h) - 1;
+    const double end = std::floor((bounds.max[a] - lattice.origin[a]) / h) + 1;
+    lo[a] = static_cast<int>(std::clamp(first, 0.0, static_cast<double>(last[a])));
+    hi[a] = static_cast<int>(std::clamp(end, 0.0, static_cast<double>(last[a])));
   }
   int size = 1;
   while (size < std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] }) + 1)

@@ -13,7 +13,8 @@ DistanceSample DistanceGrid::sample(const Vec3& x) const
   double f[3];
   for (int a = 0; a < 3; ++a)
   {
-    const double u = std::clamp((x[a] - this->Lattice.origin[a]) / this->Lattice.spacing[a], 0.0, d[a] - 1.0);
+    const double t = (x[a] - this->Lattice.origin[a]) / this->Lattice.spacing[a];
+    const double u = std::isnan(t) ? 0.0 : std::clamp(t, 0.0, d[a] - 1.0); // a NaN point: the evolver reports it
     c[a] = std::min(static_cast<int>(u), d[a] - 2);
     f[a] = u - c[a];
   }

@@ -9,8 +9,10 @@
  * distances on a band of nodes around the surface, fast sweeping for the rest, and a flood fill for
  * the sign. Band nodes are signed by angle-weighted pseudonormals.
  *
- * Input: vtkPolyData. Polygons of any size and triangle strips are triangulated; non-manifold meshes
- * and duplicated points are accepted. Lines and vertices are ignored (with a warning).
+ * Input: vtkPolyData, or a composite dataset of them (one field of all its meshes; a block with other
+ * cells is an error). Polygons of any size and triangle strips are triangulated; non-manifold meshes
+ * and duplicated points are accepted. Lines and vertices are ignored (with a warning). Coordinates
+ * beyond +-1e30 are refused: a float field cannot hold their distances.
  *
  * Output: vtkImageData with the point array "SignedDistance" (float). Field data: "Signed" (1 when the
  * field is signed, 0 when it is unsigned) and "DistanceStatus" (a sentence saying why). A mesh with

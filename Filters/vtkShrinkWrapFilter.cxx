@@ -677,6 +677,8 @@ void vtkShrinkWrapFilter::Execute(vtkInformationVector** inputVector, vtkInforma
   output->GetFieldData()->AddArray(time);
   output->GetFieldData()->AddArray(status);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), found->first * this->TimeStep);
+  // The pipeline takes an execution as up to date even when a property changed while it ran (a panel
+  // edit, a script's callback): RunAgain makes the next request run again, with the new values.
   if (sessionKey() != key)
   {
     this->RunAgain = true;

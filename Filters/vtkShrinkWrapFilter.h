@@ -6,9 +6,11 @@
  * evolves by eq. (2), dF/dt = eps(d) Laplace-Beltrami(F) + eta(d) N + v_T, towards the target's signed
  * distance d. Every time step is a time step of the output: the filter advertises the times
  * {0, tau, ..., N_t tau} and returns the surface at the requested time (the last one when no time is
- * requested). Computed steps are cached: going back is instant, going forward resumes from the newest
- * cached step; changing an input or a property drops the cache. An aborted run, or one whose properties
- * changed while it ran, runs again at the next request (resuming from the cache, or starting over).
+ * requested or the time is past the end). Computed steps are cached: going back is instant, going
+ * forward resumes from the newest cached step; changing an input or a property drops the cache. A run
+ * whose properties changed while it ran runs again at the next request. An aborted run leaves an empty
+ * output and its steps cached; it does not run again by itself, and a request for another time
+ * resumes from the cache.
  *
  * Inputs: port 0, the target (vtkPolyData with polygons). Port 1 (optional), "DistanceField": a
  * vtkImageData with a point array "SignedDistance", e.g. from Mesh Signed Distance; otherwise one is
@@ -74,9 +76,8 @@ public:
   vtkGetMacro(TimeStep, double);
   ///@}
   ///@{
-  /// N_t, the number of time steps. Default 200.
-  // N_t, at most kMaxSteps: more steps than the paper's 200-600 by far, and an animation of 10,001
-  // frames is still one a timeline can hold.
+  /// N_t, the number of time steps. Default 200, at most kMaxSteps: far more than the paper's
+  /// 200-600, and 10,001 frames are still an animation a timeline can hold.
   static constexpr int kMaxSteps = 10000;
   vtkSetClampMacro(NumberOfSteps, int, 0, kMaxSteps);
   vtkGetMacro(NumberOfSteps, int);
@@ -230,7 +231,7 @@ private:
   vtkShrinkWrapFilter(const vtkShrinkWrapFilter&) = delete;
   void operator=(const vtkShrinkWrapFilter&) = delete;
 
-  // Set when a run was aborted or its properties changed while it ran: the next request runs again
+  // Set when a run's properties changed while it ran: the next request runs again
   // (ComputePipelineMTime), without touching the MTime that keys the cache.
   bool RunAgain = false;
   vtkTimeStamp RunAgainTime;

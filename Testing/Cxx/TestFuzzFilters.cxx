@@ -149,7 +149,8 @@ vtkSmartPointer<vtkDataObject> randomTarget(Dice& dice)
 void randomizeDistance(vtkMeshSignedDistance* f, Dice& dice)
 {
   f->SetResolution(dice.chance(0.9) ? dice.between(1, 40) : dice.pick({ -5, 0, 1 << 20 }));
-  f->SetCellSize(dice.chance(0.8) ? 0 : dice.value(0.1));
+  // A sane cell size for a mesh of unknown scale can mean a billion nodes: only absurd ones here.
+  f->SetCellSize(dice.chance(0.8) ? 0 : dice.pick({ -1.0, 1e-12, 1e300, kNaN, kInf }));
   f->SetBoxScale(dice.value(1.1));
   f->SetOffsetFactor(dice.value(1.0));
   f->SetUseExplicitGrid(dice.chance(0.15));

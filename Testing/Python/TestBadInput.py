@@ -11,15 +11,10 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 
+from checks import abort_at, check, finish
+
 plugin = sys.argv[1]
-checks, failures = [], []
 
-
-def check(condition, message):
-    checks.append(message)
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
 
 
 def fetched(proxy, time=None):
@@ -149,21 +144,11 @@ check(fetched(MeshSignedDistance(Input=sphere, Resolution=16, OffsetFactor=1e300
 # An aborted Mesh Signed Distance computes again after a change.
 aborting = MeshSignedDistance(Input=sphere, Resolution=24)
 algorithm = aborting.GetClientSideObject()
-events = []
-
-
-def abort_once(caller, event):
-    events.append(1)
-    if len(events) == 1:
-        caller.AbortExecuteOn()
-
-
-tag = algorithm.AddObserver("ProgressEvent", abort_once)
+tag = abort_at(algorithm, 1)
 aborting.UpdatePipeline()  # (Fetch would ask again, with a request of its own)
 check(algorithm.GetOutputDataObject(0).GetNumberOfPoints() == 0, "Mesh Signed Distance aborted: empty output")
 algorithm.RemoveObserver(tag)
 aborting.Resolution = 20
 check(fetched(aborting).GetNumberOfPoints() == 21 ** 3, "after a change it computes again")
 
-print("%d passed, %d failed" % (len(checks) - len(failures), len(failures)))
-sys.exit(1 if failures else 0)
+finish()

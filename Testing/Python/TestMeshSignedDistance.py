@@ -8,16 +8,10 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 
+from checks import check, finish
+
 plugin, mesh = sys.argv[1], sys.argv[2]
-failures = []
-checks = []
 
-
-def check(condition, message):
-    checks.append(message)
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
 
 
 LoadPlugin(plugin, ns=globals())
@@ -67,5 +61,4 @@ sdf.Resolution = 32
 sdf.UpdatePipeline()
 check(sdf.GetDataInformation().GetNumberOfPoints() > 0, "the filter recovers with a valid Resolution")
 
-print("%d passed, %d failed" % (len(checks) - len(failures), len(failures)))
-sys.exit(1 if failures else 0)
+finish()

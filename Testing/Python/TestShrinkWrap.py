@@ -7,15 +7,10 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 
+from checks import abort_at, check, finish
+
 plugin, mesh = sys.argv[1], sys.argv[2]
-checks, failures = [], []
 
-
-def check(condition, message):
-    checks.append(message)
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
 
 
 def computed(proxy):
@@ -78,16 +73,7 @@ long_run.UpdatePipeline(30 * tau)
 check(computed(long_run) == 30, "and the next update starts over with the new ones (%d steps)" % computed(long_run))
 
 long_run.OmegaAngle = 0.5
-events = []
-
-
-def abort_at_step_25(caller, event):
-    events.append(1)
-    if len(events) == 25:
-        caller.AbortExecuteOn()
-
-
-tag = algorithm.AddObserver("ProgressEvent", abort_at_step_25)
+tag = abort_at(algorithm, 25)
 long_run.UpdatePipeline(60 * tau)
 algorithm.RemoveObserver(tag)
 check(algorithm.GetOutputDataObject(0).GetNumberOfPoints() == 0, "an aborted run gives an empty output")
@@ -118,5 +104,4 @@ largest = lambda d: max(abs(d.GetPointData().GetArray("Distance").GetValue(i)) f
 check(largest(data) < largest(near), "and ends closer to the target than the icosphere (largest |d| %.4f < %.4f)"
       % (largest(data), largest(near)))
 
-print("%d passed, %d failed" % (len(checks) - len(failures), len(failures)))
-sys.exit(1 if failures else 0)
+finish()

@@ -1,0 +1,29 @@
+"""Helpers of the pvpython tests: checks that are counted and reported, and an abort on cue."""
+import sys
+
+_checks, _failures = [], []
+
+
+def check(condition, message):
+    _checks.append(message)
+    print(("ok   " if condition else "FAIL ") + message)
+    if not condition:
+        _failures.append(message)
+
+
+def finish():
+    """The closing 'N passed, N failed' line (read by CI), and the exit code."""
+    print("%d passed, %d failed" % (len(_checks) - len(_failures), len(_failures)))
+    sys.exit(1 if _failures else 0)
+
+
+def abort_at(algorithm, event):
+    """Aborts the algorithm at its event-th progress event, once; returns the observer's tag."""
+    seen = [0]
+
+    def on_progress(caller, _):
+        seen[0] += 1
+        if seen[0] == event:
+            caller.AbortExecuteOn()
+
+    return algorithm.AddObserver("ProgressEvent", on_progress)

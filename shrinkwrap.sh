@@ -4,7 +4,7 @@
 #   demo   the main job on the default data (Data/trefoil.obj): out/trefoil_sdf.vti and .png
 #   test   the whole test suite through ctest, then the C++ tests again under AddressSanitizer
 #   bench  the benchmarks of Testing/Benchmarks (peers: OpenVDB, vtkImplicitPolyDataDistance)
-#   packages  prints the Debian packages it installs
+#   packages  prints the Debian packages that the build folder's configuration may use
 # Every step is idempotent: a second run only rebuilds what changed.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -32,7 +32,14 @@ packages=(
   libxss-dev libxt-dev
   xvfb xauth                                  # an X server for the rendering and GUI tests, the demo's picture
 )
-[ "$mode" = bench ] && packages+=(libopenvdb-dev libboost-iostreams-dev libcgal-dev)
+bench_packages=(libopenvdb-dev libboost-iostreams-dev libcgal-dev) # the benchmarks' peers: OpenVDB, CGAL
+[ "$mode" = bench ] && packages+=("${bench_packages[@]}")
+# The packages a build folder's configuration may resolve: with the benchmarks (once `bench` ran in
+# it), their peers' too.
+checked=("${packages[@]}")
+if [ "$mode" != bench ] && grep -qs '^SHRINKWRAP_BENCHMARKS:BOOL=ON' "$build/CMakeCache.txt"; then
+  checked+=("${bench_packages[@]}")
+fi
 
 install_missing() {
   local missing=()
@@ -69,7 +76,7 @@ configure_and_build() { # folder, extra cmake arguments...
   cmake --build "$dir" -j "$jobs"
 }
 
-[ "$mode" = packages ] && { printf '%s\n' "${packages[@]}"; exit 0; }
+[ "$mode" = packages ] && { printf '%s\n' "${checked[@]}"; exit 0; }
 install_missing
 plugin="$build/lib/paraview-5.11/plugins/ShrinkWrap/ShrinkWrap.so"
 case "$mode" in
@@ -80,7 +87,7 @@ case "$mode" in
   test)
     fetch_cgal_meshes
     configure_and_build "$build"
-    python3 Testing/check_packages.py "$build/CMakeCache.txt" "${packages[@]}"
+    python3 Testing/check_packages.py "$build/CMakeCache.txt" "${checked[@]}"
     (cd "$build" && ctest --output-on-failure -j 2)
     # Bad input and the pipeline once more under AddressSanitizer and UBSan: bad input must not
     # corrupt memory. (The accuracy tests' brute-force references are too slow instrumented.)

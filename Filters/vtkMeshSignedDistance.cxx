@@ -368,6 +368,11 @@ int vtkMeshSignedDistance::RequestData(
                                             "or raise CellSize.");
     return 1;
   }
+  catch (const std::exception& e) // e.g. threads that cannot start under the same limits
+  {
+    vtkErrorMacro("Mesh Signed Distance failed: " << e.what() << ".");
+    return 1;
+  }
   if (!result.completed)
   {
     this->AbortExecute = 0; // the abort ends this run; the next update after a change runs normally

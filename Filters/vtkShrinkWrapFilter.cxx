@@ -469,6 +469,12 @@ int vtkShrinkWrapFilter::RequestData(
     this->Current.reset(); // a half-made step is not kept; the next update starts over
     vtkErrorMacro("Out of memory: lower Subdivision Level, Resolution or Cache Memory Limit.");
   }
+  catch (const std::exception& e) // e.g. threads that cannot start under the same limits
+  {
+    output->Initialize();
+    this->Current.reset();
+    vtkErrorMacro("Shrink Wrap failed: " << e.what() << ".");
+  }
   return 1;
 }
 

@@ -1,4 +1,5 @@
 #include "AABBTree.h"
+#include "Parallel.h"
 
 #include <vtkSMPTools.h>
 
@@ -126,7 +127,7 @@ void AABBTree::buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings&
   SplitScratch scratch;
   this->build(this->Nodes, prims, 0, 0, static_cast<int>(prims.size()), 1, s, scratch, &subtrees);
   std::vector<std::vector<Node>> parts(subtrees.size());
-  vtkSMPTools::For(0, static_cast<int>(subtrees.size()), 1, [&](int b, int e) {
+  parallelFor(0, static_cast<int>(subtrees.size()), 1, [&](int b, int e) {
     for (int t = b; t < e; ++t)
     {
       AABBTree local;

@@ -1,4 +1,5 @@
 #include "DistanceBand.h"
+#include "Parallel.h"
 
 #include "TriangleBoxOverlap.h"
 
@@ -99,7 +100,7 @@ bool outlineCells(const TriangleSoup& soup, const GridLattice& lattice, const Pr
   for (int depth = 0; size > 1; ++depth, size /= 2)
   {
     vtkSMPThreadLocal<std::vector<OctreeNode>> next;
-    vtkSMPTools::For(0, static_cast<long long>(level.size()), 1, [&](long long b, long long e) {
+    parallelFor(0, static_cast<long long>(level.size()), 1, [&](long long b, long long e) {
       auto& out = next.Local();
       for (long long n = b; n < e; ++n)
       {

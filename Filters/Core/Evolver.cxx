@@ -1,4 +1,5 @@
 #include "Evolver.h"
+#include "Parallel.h"
 
 #include "EdgeFlips.h"
 #include "TangentialRedistribution.h"
@@ -119,7 +120,7 @@ void Evolver::sampleField(std::vector<double>& d, std::vector<Vec3>& grad) const
   {
     return;
   }
-  vtkSMPTools::For(0, nv, [&](int b, int e) {
+  parallelFor(0, nv, [&](int b, int e) {
     for (int i = b; i < e; ++i)
     {
       const DistanceSample s = this->Field->sample(this->Center + this->Y[i] / this->Scale);
@@ -243,7 +244,7 @@ StepReport Evolver::step()
   // object each (a solve writes its own iteration counts).
   Eigen::MatrixXd solution(nv, 3);
   std::array<bool, 3> solved{};
-  vtkSMPTools::For(0, 3, 1, [&](int b, int e) {
+  parallelFor(0, 3, 1, [&](int b, int e) {
     for (int c = b; c < e; ++c)
     {
       if (symmetric)

@@ -1,4 +1,5 @@
 #include "FastSweeping.h"
+#include "Parallel.h"
 
 #include <vtkSMPThreadLocal.h>
 #include <vtkSMPTools.h>
@@ -134,7 +135,7 @@ void envelopePass(
   const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2; // the two other axes, u varying fastest
   const std::int64_t strides[3] = { 1, d[0], static_cast<std::int64_t>(d[0]) * d[1] };
   vtkSMPThreadLocal<Envelope> scratch;
-  vtkSMPTools::For(0, static_cast<long long>(d[w]), [&](long long b, long long e) {
+  parallelFor(0, static_cast<long long>(d[w]), [&](long long b, long long e) {
     Envelope& envelope = scratch.Local();
     for (long long lw = b; lw < e; ++lw)
     {

@@ -48,7 +48,7 @@ bool forChunks(long long n, int chunks, const Progress& progress, Body&& body);
 
 } // namespace shrinkwrap
 
-#include <vtkSMPTools.h>
+#include "Parallel.h"
 
 template <typename Body>
 bool shrinkwrap::forChunks(long long n, int chunks, const Progress& progress, Body&& body)
@@ -57,7 +57,7 @@ bool shrinkwrap::forChunks(long long n, int chunks, const Progress& progress, Bo
   for (int c = 0; c < chunks; ++c)
   {
     const long long first = n * c / chunks, last = n * (c + 1) / chunks;
-    vtkSMPTools::For(first, last, [&](long long b, long long e) { body(b, e); });
+    parallelFor(first, last, [&](vtkIdType b, vtkIdType e) { body(b, e); });
     if (!progress.report(static_cast<double>(c + 1) / chunks))
     {
       return false;

@@ -1,4 +1,5 @@
 #include "SignFill.h"
+#include "Parallel.h"
 
 #include <vtkSMPTools.h>
 
@@ -93,7 +94,7 @@ std::vector<std::int64_t> labelShell(
   const GridLattice& lattice, const std::array<int, 6>& inner, std::uint8_t* state)
 {
   const auto& d = lattice.dims;
-  vtkSMPTools::For(0, d[2], [&](int b, int e) {
+  parallelFor(0, d[2], [&](int b, int e) {
     for (int k = b; k < e; ++k)
     {
       for (int j = 0; j < d[1]; ++j)
@@ -188,7 +189,7 @@ SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const st
   }
   if (votes.inverted)
   {
-    vtkSMPTools::For(0, total, [&](std::int64_t b, std::int64_t e) {
+    parallelFor(0, total, [&](std::int64_t b, std::int64_t e) {
       for (std::int64_t n = b; n < e; ++n)
       {
         state[n] = state[n] == BandInside ? BandOutside : (state[n] == BandOutside ? BandInside : state[n]);

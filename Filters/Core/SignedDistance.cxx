@@ -1,4 +1,5 @@
 #include "SignedDistance.h"
+#include "Parallel.h"
 
 #include "AABBTree.h"
 #include "DistanceBand.h"
@@ -67,7 +68,7 @@ void applySigns(const GridLattice& lattice, const std::uint8_t* state, bool isSi
   {
     return;
   }
-  vtkSMPTools::For(0, lattice.nodeCount(), [&](std::int64_t b, std::int64_t e) {
+  parallelFor(0, lattice.nodeCount(), [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t n = b; n < e; ++n)
     {
       if (state[n] == Inside || state[n] == BandInside)

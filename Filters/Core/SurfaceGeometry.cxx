@@ -1,4 +1,5 @@
 #include "SurfaceGeometry.h"
+#include "Parallel.h"
 
 #include <vtkSMPTools.h>
 
@@ -52,7 +53,7 @@ void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& x, Surfac
   g.weight.resize(mesh.ringEnd(nv - 1));
   g.curvature.resize(nv);
   std::vector<TriangleTerms> terms(nt);
-  vtkSMPTools::For(0, nt, [&](int b, int e) {
+  parallelFor(0, nt, [&](int b, int e) {
     for (int t = b; t < e; ++t)
     {
       const auto& v = tris[t];
@@ -68,7 +69,7 @@ void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& x, Surfac
       }
     }
   });
-  vtkSMPTools::For(0, nv, [&](int b, int e) {
+  parallelFor(0, nv, [&](int b, int e) {
     for (int i = b; i < e; ++i)
     {
       double coVolume = 0;
@@ -131,7 +132,7 @@ SmallestAngle smallestAngle(const SurfaceMesh& mesh, const std::vector<Vec3>& x)
   };
   std::vector<Part> parts(std::max(1, mesh.triangleCount() / 4096 + 1));
   const int n = mesh.triangleCount(), chunk = (n + static_cast<int>(parts.size()) - 1) / static_cast<int>(parts.size());
-  vtkSMPTools::For(0, static_cast<int>(parts.size()), [&](int b, int e) {
+  parallelFor(0, static_cast<int>(parts.size()), [&](int b, int e) {
     for (int p = b; p < e; ++p)
     {
       for (int t = p * chunk; t < std::min(n, (p + 1) * chunk); ++t)

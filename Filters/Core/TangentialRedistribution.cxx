@@ -1,4 +1,5 @@
 #include "TangentialRedistribution.h"
+#include "Parallel.h"
 
 #include <Eigen/IterativeLinearSolvers>
 #include <vtkSMPTools.h>
@@ -19,7 +20,7 @@ void angleVelocities(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const 
 {
   const int nv = mesh.vertexCount();
   velocity.resize(nv);
-  vtkSMPTools::For(0, nv, [&](int b, int e) {
+  parallelFor(0, nv, [&](int b, int e) {
     for (int i = b; i < e; ++i)
     {
       Vec3 sum = Vec3::Zero();

@@ -1,193 +1,40 @@
 #include "vtkMeshSignedDistance.h"
 
-#include "AllCores.h"
+#include "Parallel.h"
 #include "SignedDistance.h"
-#include "SystemMemory.h"
+#include "VTKConversions.h"
 
 #include "vtkAlgorithmOutput.h"
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
-#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolygon.h"
-#include "vtkSMPTools.h"
-#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
-#include "vtkTriangleStrip.h"
 
-#include <algorithm>
 #include <new>
-#include <cstdlib>
 #include <sstream>
 
 vtkStandardNewMacro(vtkMeshSignedDistance);
 
-namespace
-{
-using shrinkwrap::TriangleSoup;
-
-// The polygon meshes of the input: itself, or the leaves of a composite dataset (one field of them
-// all). A leaf with cells that are not polygons is an error: Extract Surface makes polygons of it.
-bool polygonMeshes(vtkDataObject* input, std::vector<vtkPolyData*>& meshes, std::string& error)
-{
-  meshes.clear();
-  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
-  {
-    if (auto* mesh = vtkPolyData::SafeDownCast(leaf))
-    {
-      meshes.push_back(mesh);
-    }
-    else if (leaf->GetNumberOfCells() > 0)
-    {
-      error = std::string("a block of the input is a ") + leaf->GetClassName() +
-        ", not a polygon mesh; apply Extract Surface to it first";
-      return false;
-    }
-  }
-  return true;
-}
-
-// Appends a mesh to the paper's triangle soup: polygons of any size (ear-cut by vtkPolygon when
-// n > 3) and strips. Cells naming points that do not exist are counted in badCells and left out.
-void appendToSoup(vtkPolyData* input, TriangleSoup& soup, vtkIdType& badCells)
-{
-  vtkPoints* points = input->GetPoints();
-  const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
-  const vtkIdType first = static_cast<vtkIdType>(soup.points.size());
-  soup.points.resize(first + np);
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    points->GetPoint(i, soup.points[first + i].data());
-  }
-  auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
-    soup.triangles.push_back(
-      { static_cast<int>(first + a), static_cast<int>(first + b), static_cast<int>(first + c) });
-  };
-  auto valid = [&](vtkIdType n, const vtkIdType* ids) {
-    const bool ok = std::all_of(ids, ids + n, [np](vtkIdType id) { return id >= 0 && id < np; });
-    badCells += !ok;
-    return ok;
-  };
-  vtkNew<vtkPolygon> polygon;
-  vtkNew<vtkIdList> corners;
-  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    polys->GetCurrentCell(n, ids);
-    if (!valid(n, ids))
-    {
-      continue;
-    }
-    if (n == 3)
-    {
-      addTriangle(ids[0], ids[1], ids[2]);
-      continue;
-    }
-    if (n < 3)
-    {
-      continue;
-    }
-    polygon->Initialize(n, ids, points);
-    if (polygon->Triangulate(corners) && corners->GetNumberOfIds() > 0)
-    {
-      for (vtkIdType k = 0; k + 2 < corners->GetNumberOfIds(); k += 3)
-      {
-        addTriangle(ids[corners->GetId(k)], ids[corners->GetId(k + 1)], ids[corners->GetId(k + 2)]);
-      }
-    }
-    else
-    {
-      // Ear cutting fails on degenerate polygons; a fan still has their distances.
-      for (vtkIdType k = 1; k + 1 < n; ++k)
-      {
-        addTriangle(ids[0], ids[k], ids[k + 1]);
-      }
-    }
-  }
-  vtkNew<vtkCellArray> stripTriangles;
-  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
-  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    strips->GetCurrentCell(n, ids);
-    if (!valid(n, ids))
-    {
-      continue;
-    }
-    for (vtkIdType k = 0; k + 2 < n; ++k)
-    {
-      // Strips alternate orientation.
-      k % 2 == 0 ? addTriangle(ids[k], ids[k + 1], ids[k + 2]) : addTriangle(ids[k + 1], ids[k], ids[k + 2]);
-    }
-  }
-}
-
-// Bounds of the points that polygons and strips use: the surface, without stray points or lines.
-void extendBySurface(vtkPolyData* input, shrinkwrap::Box& box)
-{
-  vtkPoints* points = input->GetPoints();
-  if (!points)
-  {
-    return;
-  }
-  const vtkIdType np = points->GetNumberOfPoints();
-  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
-  {
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      for (vtkIdType k = 0; k < n; ++k)
-      {
-        if (ids[k] >= 0 && ids[k] < np)
-        {
-          shrinkwrap::Vec3 p;
-          points->GetPoint(ids[k], p.data());
-          box.extend(p);
-        }
-      }
-    }
-  }
-}
-
-shrinkwrap::Box surfaceBounds(const std::vector<vtkPolyData*>& meshes)
-{
-  shrinkwrap::Box box;
-  for (vtkPolyData* mesh : meshes)
-  {
-    extendBySurface(mesh, box);
-  }
-  return box;
-}
-
-std::string gibibytes(double bytes)
-{
-  std::ostringstream s;
-  s.precision(3);
-  s << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
-  return s.str();
-}
-
-} // namespace
+namespace convert = shrinkwrap::convert;
 
 vtkMeshSignedDistance::vtkMeshSignedDistance()
 {
+  const shrinkwrap::GridPlacement placement;
+  this->BoxScale = placement.boxScale;
+  this->OffsetFactor = placement.offsetFactor;
+  this->Resolution = placement.resolution;
+  this->CellSize = placement.cellSize;
+  const shrinkwrap::SignedDistanceSettings distance;
+  this->SweepMethod = distance.sweep == shrinkwrap::SweepMethod::Eikonal ? EIKONAL : CLOSEST_POINT;
+  this->BandLayers = distance.bandLayers;
+  this->ComputeSign = distance.computeSign;
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
 }
@@ -202,8 +49,8 @@ int vtkMeshSignedDistance::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-bool vtkMeshSignedDistance::ComputeLattice(
-  const shrinkwrap::Box& surfaceBounds, shrinkwrap::GridLattice& lattice, std::string& error) const
+shrinkwrap::Status vtkMeshSignedDistance::ComputeLattice(
+  const shrinkwrap::Box& surfaceBounds, shrinkwrap::GridLattice& lattice) const
 {
   if (this->UseExplicitGrid)
   {
@@ -211,10 +58,10 @@ bool vtkMeshSignedDistance::ComputeLattice(
     box.min = shrinkwrap::Vec3(this->OutputBounds[0], this->OutputBounds[2], this->OutputBounds[4]);
     box.max = shrinkwrap::Vec3(this->OutputBounds[1], this->OutputBounds[3], this->OutputBounds[5]);
     return shrinkwrap::explicitGrid(
-      box, { this->OutputDimensions[0], this->OutputDimensions[1], this->OutputDimensions[2] }, lattice, error);
+      box, { this->OutputDimensions[0], this->OutputDimensions[1], this->OutputDimensions[2] }, lattice);
   }
   const shrinkwrap::GridPlacement placement{ this->BoxScale, this->OffsetFactor, this->Resolution, this->CellSize };
-  return shrinkwrap::placeGrid(surfaceBounds, placement, lattice, error);
+  return shrinkwrap::placeGrid(surfaceBounds, placement, lattice);
 }
 
 int vtkMeshSignedDistance::RequestInformation(
@@ -232,15 +79,13 @@ int vtkMeshSignedDistance::RequestInformation(
     const int port = this->GetInputConnection(0, 0)->GetIndex();
     producer->UpdatePiece(0, 1, 0);
     std::vector<vtkPolyData*> meshes;
-    std::string ignored; // RequestData reports it
-    if (polygonMeshes(producer->GetOutputDataObject(port), meshes, ignored))
+    if (convert::polygonMeshes(producer->GetOutputDataObject(port), meshes)) // else RequestData reports it
     {
-      bounds = surfaceBounds(meshes);
+      bounds = convert::surfaceBounds(meshes);
     }
   }
   shrinkwrap::GridLattice lattice;
-  std::string error;
-  if (this->ComputeLattice(bounds, lattice, error))
+  if (this->ComputeLattice(bounds, lattice))
   {
     const int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
     outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
@@ -268,84 +113,88 @@ int vtkMeshSignedDistance::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
-  std::vector<vtkPolyData*> meshes;
-  std::string error;
-  if (!polygonMeshes(vtkDataObject::GetData(inputVector[0], 0), meshes, error))
+  shrinkwrap::TriangleSoup soup;
+  shrinkwrap::Box bounds;
+  shrinkwrap::GridLattice lattice;
+  if (!this->ReadInput(vtkDataObject::GetData(inputVector[0], 0), soup, bounds))
   {
-    vtkErrorMacro("Mesh Signed Distance needs polygon meshes: " << error << ".");
     return 1;
   }
-
-  // Input checks: each leaves an empty output and the pipeline usable.
-  vtkIdType lines = 0, verts = 0, badCells = 0;
-  TriangleSoup soup;
-  for (vtkPolyData* mesh : meshes)
+  if (const shrinkwrap::Status placed = this->ComputeLattice(bounds, lattice); !placed)
   {
-    lines += mesh->GetNumberOfLines();
-    verts += mesh->GetNumberOfVerts();
-    appendToSoup(mesh, soup, badCells);
+    vtkErrorMacro("Cannot place the grid: " << placed.message() << ".");
+    return 1;
   }
-  if (lines > 0 || verts > 0)
+  vtkNew<vtkFloatArray> values;
+  shrinkwrap::SignedDistanceResult result;
+  if (!this->Compute(soup, lattice, values, result))
   {
-    vtkWarningMacro("Ignoring " << lines << " lines and " << verts
+    return 1;
+  }
+  int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+  output->SetExtent(extent);
+  output->SetOrigin(lattice.origin.data());
+  output->SetSpacing(lattice.spacing.data());
+  output->GetPointData()->SetScalars(values);
+  // A downstream request for part of the grid (streaming, or a piece per MPI rank) gets that part.
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+    output->Crop(extent);
+  }
+  this->AddStatus(result, output);
+  return 1;
+}
+
+bool vtkMeshSignedDistance::ReadInput(vtkDataObject* input, shrinkwrap::TriangleSoup& soup, shrinkwrap::Box& bounds)
+{
+  std::vector<vtkPolyData*> meshes;
+  if (const shrinkwrap::Status status = convert::polygonMeshes(input, meshes); !status)
+  {
+    vtkErrorMacro("Mesh Signed Distance needs polygon meshes: " << status.message() << ".");
+    return false;
+  }
+  convert::SoupCounts counts;
+  soup = convert::soupOf(meshes, counts);
+  if (counts.lines > 0 || counts.vertices > 0)
+  {
+    vtkWarningMacro("Ignoring " << counts.lines << " lines and " << counts.vertices
                                 << " vertices: only polygons and triangle strips have an inside.");
   }
-  if (badCells > 0)
+  if (counts.badCells > 0)
   {
-    vtkErrorMacro("The input has " << badCells << " cells whose point ids are out of range: it is corrupt.");
-    return 1;
+    vtkErrorMacro("The input has " << counts.badCells << " cells whose point ids are out of range: it is corrupt.");
+    return false;
   }
-  if (soup.triangles.empty())
+  if (const shrinkwrap::Status status = shrinkwrap::checkSoup(soup); !status)
   {
-    vtkErrorMacro("The input has no polygons or triangle strips: there is no surface to measure from.");
-    return 1;
+    vtkErrorMacro("The input has no distance field: " << status.message() << ".");
+    return false;
   }
-  if (!soup.allFinite())
-  {
-    vtkErrorMacro("The input has NaN or infinite point coordinates; fix or remove those points first.");
-    return 1;
-  }
-  if (!shrinkwrap::withinCoordinateRange(soup.bounds()))
-  {
-    vtkErrorMacro("The input has coordinates beyond +-1e30, which distances in float cannot hold; "
-                  "scale or translate it first.");
-    return 1;
-  }
-  if (!(soup.maxTriangleArea() > 0))
-  {
-    vtkErrorMacro("Every triangle of the input is degenerate (zero area): there is no surface.");
-    return 1;
-  }
+  bounds = convert::surfaceBounds(meshes);
+  return true;
+}
 
-  shrinkwrap::GridLattice lattice;
-  if (!this->ComputeLattice(surfaceBounds(meshes), lattice, error))
-  {
-    vtkErrorMacro("Cannot place the grid: " << error << ".");
-    return 1;
-  }
-
+shrinkwrap::SignedDistanceSettings vtkMeshSignedDistance::DistanceSettings() const
+{
   shrinkwrap::SignedDistanceSettings settings;
   settings.sweep =
     this->SweepMethod == EIKONAL ? shrinkwrap::SweepMethod::Eikonal : shrinkwrap::SweepMethod::ClosestPoint;
   settings.bandLayers = this->BandLayers;
   settings.computeSign = this->ComputeSign;
+  return settings;
+}
 
-  // Refuse a grid that cannot fit before allocating anything for it.
-  // In floating point: the node count of an absurd grid overflows 64-bit integers.
-  const double nodes = static_cast<double>(lattice.dims[0]) * lattice.dims[1] * lattice.dims[2];
-  const double needed = nodes * (sizeof(float) + shrinkwrap::workingBytesPerNode(settings));
-  const double available = static_cast<double>(shrinkwrap::availableMemoryBytes());
-  if (needed > 0.8 * available)
+bool vtkMeshSignedDistance::Compute(const shrinkwrap::TriangleSoup& soup, const shrinkwrap::GridLattice& lattice,
+  vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result)
+{
+  const shrinkwrap::SignedDistanceSettings settings = this->DistanceSettings();
+  if (const shrinkwrap::Status fits = shrinkwrap::checkMemory(lattice, settings); !fits)
   {
-    vtkErrorMacro("A " << lattice.dims[0] << " x " << lattice.dims[1] << " x " << lattice.dims[2]
-                       << " grid would need " << gibibytes(needed) << " but only " << gibibytes(available)
-                       << " of memory is available; lower Resolution or raise CellSize.");
-    return 1;
+    vtkErrorMacro("Cannot compute the field: " << fits.message() << "; lower Resolution or raise CellSize.");
+    return false;
   }
-
-  vtkNew<vtkFloatArray> values;
   values->SetName("SignedDistance");
-  shrinkwrap::SignedDistanceResult result;
   const shrinkwrap::Progress progress([this](double fraction) {
     this->UpdateProgress(fraction);
     return !this->GetAbortExecute();
@@ -363,35 +212,26 @@ int vtkMeshSignedDistance::RequestData(
   catch (const std::bad_alloc&)
   {
     vtkErrorMacro("Out of memory for a " << lattice.dims[0] << " x " << lattice.dims[1] << " x "
-                                         << lattice.dims[2] << " grid (" << gibibytes(needed)
-                                         << " estimated): the process may not allocate it; lower Resolution "
-                                            "or raise CellSize.");
-    return 1;
+                                         << lattice.dims[2] << " grid: the process may not allocate it; lower "
+                                            "Resolution or raise CellSize.");
+    return false;
   }
   catch (const std::exception& e) // e.g. threads that cannot start under the same limits
   {
     vtkErrorMacro("Mesh Signed Distance failed: " << e.what() << ".");
-    return 1;
+    return false;
   }
   if (!result.completed)
   {
     this->AbortExecute = 0; // the abort ends this run; the next update after a change runs normally
     vtkWarningMacro("Mesh Signed Distance was aborted; the output is empty.");
-    return 1;
+    return false;
   }
+  return true;
+}
 
-  int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
-  output->SetExtent(extent);
-  output->SetOrigin(lattice.origin.data());
-  output->SetSpacing(lattice.spacing.data());
-  output->GetPointData()->SetScalars(values);
-  // A downstream request for part of the grid (streaming, or a piece per MPI rank) gets that part.
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
-  {
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
-    output->Crop(extent);
-  }
-
+void vtkMeshSignedDistance::AddStatus(const shrinkwrap::SignedDistanceResult& result, vtkImageData* output)
+{
   std::ostringstream status;
   if (result.isSigned)
   {
@@ -421,7 +261,6 @@ int vtkMeshSignedDistance::RequestData(
   statusArray->InsertNextValue(status.str());
   output->GetFieldData()->AddArray(isSigned);
   output->GetFieldData()->AddArray(statusArray);
-  return 1;
 }
 
 void vtkMeshSignedDistance::PrintSelf(ostream& os, vtkIndent indent)

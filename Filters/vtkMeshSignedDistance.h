@@ -34,12 +34,15 @@
 #include "ShrinkWrapFiltersModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
-#include <string> // for ExplicitLattice
-
+class vtkFloatArray;
 namespace shrinkwrap
 {
 struct Box;
 struct GridLattice;
+struct IndexedTriangles;
+struct SignedDistanceResult;
+struct SignedDistanceSettings;
+class Status;
 }
 
 class SHRINKWRAPFILTERS_EXPORT vtkMeshSignedDistance : public vtkImageAlgorithm
@@ -136,21 +139,28 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double BoxScale = 1.1;
-  double OffsetFactor = 1.0;
-  int Resolution = 120;
-  double CellSize = 0.0;
+  // Defaults: the constructor takes them from the core's settings structs, where they are stated once.
+  double BoxScale;
+  double OffsetFactor;
+  int Resolution;
+  double CellSize;
   bool UseExplicitGrid = false;
   double OutputBounds[6] = { -1, 1, -1, 1, -1, 1 };
   int OutputDimensions[3] = { 64, 64, 64 };
-  int SweepMethod = CLOSEST_POINT;
-  int BandLayers = 1;
-  bool ComputeSign = true;
+  int SweepMethod;
+  int BandLayers;
+  bool ComputeSign;
 
 private:
   // The output lattice: explicit, or placed around the bounds of the input's surface.
-  bool ComputeLattice(
-    const shrinkwrap::Box& surfaceBounds, shrinkwrap::GridLattice& lattice, std::string& error) const;
+  shrinkwrap::Status ComputeLattice(const shrinkwrap::Box& surfaceBounds, shrinkwrap::GridLattice& lattice) const;
+  shrinkwrap::SignedDistanceSettings DistanceSettings() const;
+  // The input as a triangle soup, with the bounds of its surface; false (reported) if it has none.
+  bool ReadInput(vtkDataObject* input, shrinkwrap::IndexedTriangles& soup, shrinkwrap::Box& bounds);
+  // The distances, threaded; false (reported) when memory ran out or the run was aborted.
+  bool Compute(const shrinkwrap::IndexedTriangles& soup, const shrinkwrap::GridLattice& lattice,
+    vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
+  void AddStatus(const shrinkwrap::SignedDistanceResult& result, vtkImageData* output);
 
   vtkMeshSignedDistance(const vtkMeshSignedDistance&) = delete;
   void operator=(const vtkMeshSignedDistance&) = delete;

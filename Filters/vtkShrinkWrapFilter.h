@@ -43,7 +43,15 @@
 #include "ShrinkWrapFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // for the cache
+#include <memory> // for the session
+
+class vtkImageData;
+namespace shrinkwrap
+{
+class DistanceGrid;
+class WrapSession;
+struct WrapSettings;
+}
 
 class SHRINKWRAPFILTERS_EXPORT vtkShrinkWrapFilter : public vtkPolyDataAlgorithm
 {
@@ -202,30 +210,33 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   void Execute(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
+  // The properties as the core's settings.
+  shrinkwrap::WrapSettings CoreSettings() const;
 
-  double TimeStep = 0.015;
-  int NumberOfSteps = 200;
-  int SubdivisionLevel = 3;
-  double C1 = 1.0;
-  double C2 = 1.0;
-  double C = 1.0;
-  double D = 0.0;
-  int TangentialRedistribution = ANGLE;
-  double OmegaAngle = 0.5;
-  double OmegaVolume = 1.0;
-  double RhoA = 1.0;
-  bool DistanceWeighting = false;
-  bool EdgeFlips = true;
-  bool EdgeCollapses = true;
-  double FlipDihedralLimit = 60.0;
-  int StartingShape = ICOSPHERE;
-  double StartOffset = 3.0;
-  double StartClosing = 3.0;
-  int InitialRelaxation = 10;
-  bool AutomaticScaling = true;
-  double SolverTolerance = 1e-6;
-  int Resolution = 120;
-  double CacheMemoryLimit = 512;
+  // Defaults: the constructor takes them from shrinkwrap::WrapSettings, where they are stated once.
+  double TimeStep;
+  int NumberOfSteps;
+  int SubdivisionLevel;
+  double C1;
+  double C2;
+  double C;
+  double D;
+  int TangentialRedistribution;
+  double OmegaAngle;
+  double OmegaVolume;
+  double RhoA;
+  bool DistanceWeighting;
+  bool EdgeFlips;
+  bool EdgeCollapses;
+  double FlipDihedralLimit;
+  int StartingShape;
+  double StartOffset;
+  double StartClosing;
+  int InitialRelaxation;
+  bool AutomaticScaling;
+  double SolverTolerance;
+  int Resolution;
+  double CacheMemoryLimit;
 
 private:
   vtkShrinkWrapFilter(const vtkShrinkWrapFilter&) = delete;
@@ -236,9 +247,17 @@ private:
   bool RunAgain = false;
   vtkTimeStamp RunAgainTime;
 
-  struct Session;
+  vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
   bool StartSession(vtkInformationVector** inputVector);
-  std::unique_ptr<Session> Current;
+  bool DistanceFieldOf(vtkPolyData* target, vtkImageData* image, const shrinkwrap::WrapSettings& settings,
+    shrinkwrap::DistanceGrid& field);
+  int StepAsked(vtkInformation* outInfo) const;
+  bool Advance(int step);
+  void WriteOutput(int wanted, vtkPolyData* output);
+
+  // Everything derived from the inputs and properties, dropped when either changes.
+  std::unique_ptr<shrinkwrap::WrapSession> Current;
+  vtkMTimeType CurrentKey = 0;
 };
 
 #endif

@@ -23,14 +23,13 @@ SurfaceMesh sphereMesh(int level)
 {
   const TriangleSurface s = icosphere(level);
   SurfaceMesh mesh;
-  std::string error;
-  SurfaceMesh::build(s.points, s.triangles, mesh, error);
+  SurfaceMesh::build(s.points, s.triangles, mesh);
   return mesh;
 }
 
 EvolverSettings mcf(int level, Redistribution r, LinearSolver solver)
 {
-  EvolverSettings s;
+  EvolverSettings s = EvolverSettings::paper();
   s.C1 = 1;
   s.C2 = 0;
   s.C = 0;

@@ -8,6 +8,7 @@
 // whole grid, by maskSdf), and VTK's vtkImplicitPolyDataDistance at every node where it finishes in
 // about a minute. Accuracy (mean and max |error| in cells against exact distances from the AABB tree)
 // is shown for the fields that cover the whole grid. Prints a Markdown table.
+#include "Parallel.h"
 #include "SignedDistance.h"
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
@@ -55,12 +56,6 @@ vtkSmartPointer<vtkPolyData> load(const std::string& path)
   return reader->GetOutput();
 }
 
-template <typename F>
-void onAllCores(F&& f)
-{
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, f);
-}
-
 // Mean and max |error| in cells of a field given as a function of the node, against exact distances.
 struct Accuracy
 {
@@ -71,7 +66,7 @@ Accuracy accuracyOf(const shrinkwrap::GridLattice& lattice, const std::vector<fl
 {
   const auto& d = lattice.dims;
   std::vector<double> sums(d[2], 0), maxes(d[2], 0);
-  onAllCores([&] {
+  shrinkwrap::onAllCores([&] {
     vtkSMPTools::For(0, d[2], [&](int b, int e) {
       for (int k = b; k < e; ++k)
       {
@@ -101,7 +96,7 @@ std::vector<float> exactDistances(const shrinkwrap::TriangleSoup& soup, const sh
   const shrinkwrap::AABBTree tree(soup);
   std::vector<float> exact(lattice.nodeCount());
   const auto& d = lattice.dims;
-  onAllCores([&] {
+  shrinkwrap::onAllCores([&] {
     vtkSMPTools::For(0, d[2], [&](int b, int e) {
       for (int k = b; k < e; ++k)
         for (int j = 0; j < d[1]; ++j)
@@ -232,7 +227,7 @@ int main(int argc, char* argv[])
     std::vector<float> scratch(lattice.nodeCount());
     for (int r = 0; r < runs; ++r)
     {
-      onAllCores([&] { stages.push_back(shrinkwrap::computeSignedDistance(soup, lattice, {}, scratch.data())); });
+      shrinkwrap::onAllCores([&] { stages.push_back(shrinkwrap::computeSignedDistance(soup, lattice, {}, scratch.data())); });
     }
     auto stage = [&](double shrinkwrap::SignedDistanceResult::*field) {
       std::vector<double> v;

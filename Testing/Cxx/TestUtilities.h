@@ -3,6 +3,8 @@
 #define ShrinkWrap_TestUtilities_h
 
 #include "AABBTree.h"
+#include "SurfaceMesh.h"
+#include "VTKConversions.h"
 #include "GridLattice.h"
 #include "TriangleDistance.h"
 #include "TriangleSoup.h"
@@ -56,6 +58,24 @@ inline int finish(const char* name)
   return failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }
 
+// SurfaceMesh::build with the reason in `error` (empty when it builds).
+inline bool builds(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+  shrinkwrap::SurfaceMesh& mesh, std::string& error)
+{
+  const shrinkwrap::Status status = shrinkwrap::SurfaceMesh::build(points, triangles, mesh);
+  error = status.message();
+  return status.ok();
+}
+
+// A closed surface's mesh; a failed check if it is not one.
+inline shrinkwrap::SurfaceMesh meshOf(const shrinkwrap::IndexedTriangles& surface)
+{
+  shrinkwrap::SurfaceMesh mesh;
+  std::string error;
+  SW_CHECK(builds(surface.points, surface.triangles, mesh, error), "surface builds: " << error);
+  return mesh;
+}
+
 // A mesh in OFF format (CGAL's data set) as vtkPolyData with its polygons as they are.
 inline vtkSmartPointer<vtkPolyData> readOFF(const std::string& path)
 {
@@ -105,21 +125,8 @@ inline shrinkwrap::TriangleSoup triangulated(vtkPolyData* mesh)
   triangles->PassLinesOff();
   triangles->PassVertsOff();
   triangles->Update();
-  vtkPolyData* out = triangles->GetOutput();
   shrinkwrap::TriangleSoup soup;
-  soup.points.resize(out->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
-  {
-    out->GetPoint(i, soup.points[i].data());
-  }
-  auto it = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    soup.triangles.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
-  }
+  shrinkwrap::convert::surfaceOf(triangles->GetOutput(), soup);
   return soup;
 }
 

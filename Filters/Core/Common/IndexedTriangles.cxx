@@ -1,0 +1,38 @@
+#include "IndexedTriangles.h"
+
+#include <algorithm>
+
+namespace shrinkwrap
+{
+
+Box IndexedTriangles::bounds() const
+{
+  Box box;
+  for (const auto& t : this->triangles)
+  {
+    for (int v : t)
+    {
+      box.extend(this->points[v]);
+    }
+  }
+  return box;
+}
+
+bool IndexedTriangles::allFinite() const
+{
+  return std::all_of(
+    this->points.begin(), this->points.end(), [](const Vec3& p) { return p.allFinite(); });
+}
+
+double IndexedTriangles::maxTriangleArea() const
+{
+  double area = 0;
+  for (const auto& t : this->triangles)
+  {
+    const Vec3& a = this->points[t[0]];
+    area = std::max(area, 0.5 * (this->points[t[1]] - a).cross(this->points[t[2]] - a).norm());
+  }
+  return area;
+}
+
+} // namespace shrinkwrap

@@ -1,0 +1,86 @@
+#include "DistanceBand.h"
+#include "Parallel.h"
+
+#include "TriangleBoxOverlap.h"
+
+#include <vtkSMPThreadLocal.h>
+
+#include <cmath>
+#include <iterator>
+#include <numeric>
+
+namespace shrinkwrap
+{
+
+std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vector<std::int64_t>& cells,
+  int extraLayers, bool withGridBoundary, std::uint8_t* state)
+{
+  const std::int64_t sx = 1, sy = lattice.dims[0], sz = static_cast<std::int64_t>(lattice.dims[0]) * lattice.dims[1];
+  std::vector<std::int64_t> nodes;
+  nodes.reserve(cells.size() * 3);
+  auto add = [&](std::int64_t n) {
+    if (state[n] == Unvisited)
+    {
+      state[n] = BandOnSurface;
+      nodes.push_back(n);
+    }
+  };
+  for (std::int64_t c : cells)
+  {
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      add(c + (corner & 1) * sx + ((corner >> 1) & 1) * sy + ((corner >> 2) & 1) * sz);
+    }
+  }
+  for (int layer = 0; layer < extraLayers; ++layer)
+  {
+    const std::size_t end = nodes.size();
+    for (std::size_t k = 0; k < end; ++k)
+    {
+      const std::int64_t n = nodes[k];
+      const auto c = lattice.coordinates(n);
+      if (c[0] > 0) add(n - sx);
+      if (c[0] + 1 < lattice.dims[0]) add(n + sx);
+      if (c[1] > 0) add(n - sy);
+      if (c[1] + 1 < lattice.dims[1]) add(n + sy);
+      if (c[2] > 0) add(n - sz);
+      if (c[2] + 1 < lattice.dims[2]) add(n + sz);
+    }
+  }
+  if (withGridBoundary)
+  {
+    const auto& d = lattice.dims;
+    forEachFaceNode(lattice, { 0, d[0] - 1, 0, d[1] - 1, 0, d[2] - 1 }, add);
+  }
+  return nodes;
+}
+
+bool computeBand(const AABBTree& tree, const PseudoNormals& normals, const GridLattice& lattice,
+  std::vector<std::int64_t> nodes, double searchRadius, double onSurface, const Progress& progress,
+  DistanceBand& band, std::uint8_t* state)
+{
+  const std::size_t n = nodes.size();
+  band.nodes = std::move(nodes);
+  band.closest.resize(n);
+  band.distance.resize(n);
+  band.sign.resize(n);
+  return forChunks(static_cast<long long>(n), 16, progress, [&](long long b, long long e) {
+    for (long long k = b; k < e; ++k)
+    {
+      const std::int64_t node = band.nodes[k];
+      const Vec3 x = lattice.position(lattice.coordinates(node));
+      ClosestHit hit = tree.closestPoint(x, searchRadius * searchRadius);
+      if (hit.triangle < 0)
+      {
+        hit = tree.closestPoint(x); // a grid-boundary node of a grid that cuts the mesh
+      }
+      band.closest[k] = hit.point;
+      band.distance[k] = static_cast<float>(std::sqrt(hit.squaredDistance));
+      const double side = (x - hit.point).dot(normals.at(hit.triangle, hit.feature));
+      band.sign[k] = side < 0 ? -1 : 1;
+      state[node] = band.distance[k] <= onSurface ? BandOnSurface : (side < 0 ? BandInside : BandOutside);
+    }
+  });
+}
+
+} // namespace shrinkwrap

@@ -1,0 +1,57 @@
+// The band of exact distances (Algorithm 1, line 5): every node of the cells the outline found
+// (Outline.h), plus optional extra layers, gets its exact distance, closest point and sign; the node
+// states it leaves are those the sign votes (SignVotes.h) go on from.
+#ifndef ShrinkWrap_DistanceBand_h
+#define ShrinkWrap_DistanceBand_h
+
+#include "AABBTree.h"
+#include "GridLattice.h"
+#include "Progress.h"
+#include "PseudoNormals.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+// Per-node state shared by the band and the sign fill.
+enum NodeState : std::uint8_t
+{
+  Unvisited = 0,
+  BandOnSurface = 1, // a band node on the surface (or not yet signed): no side
+  BandOutside = 2,
+  BandInside = 3,
+  Outside = 4,
+  Inside = 5
+};
+inline bool isBand(std::uint8_t state)
+{
+  return state >= BandOnSurface && state <= BandInside;
+}
+
+struct DistanceBand
+{
+  std::vector<std::int64_t> nodes; // grid node indices
+  std::vector<Vec3> closest;       // closest surface point of each band node
+  std::vector<float> distance;     // exact unsigned distance
+  std::vector<signed char> sign;   // +1 outside, -1 inside, from the closest feature's pseudonormal
+};
+
+// Marks the nodes of the given cells (and `extraLayers` rings of 6-neighbours) as band nodes in
+// state, and lists them. With withGridBoundary, every node on the grid's faces joins too: a grid that
+// does not contain the whole mesh needs exact distances and signs there.
+std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vector<std::int64_t>& cells,
+  int extraLayers, bool withGridBoundary, std::uint8_t* state);
+
+// Exact distances, closest points and signs at the band nodes; the signs go into state too (band
+// nodes within `onSurface` of the surface stay BandOnSurface). Returns false if aborted.
+// searchRadius bounds the distance of band nodes near the surface (a node farther off is searched
+// again without bound).
+bool computeBand(const AABBTree& tree, const PseudoNormals& normals, const GridLattice& lattice,
+  std::vector<std::int64_t> nodes, double searchRadius, double onSurface, const Progress& progress,
+  DistanceBand& band, std::uint8_t* state);
+
+} // namespace shrinkwrap
+
+#endif

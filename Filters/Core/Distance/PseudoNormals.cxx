@@ -1,0 +1,105 @@
+#include "PseudoNormals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+double angleAt(const Vec3& p, const Vec3& q, const Vec3& r)
+{
+  return angleBetween(q - p, r - p);
+}
+
+struct EdgeUse
+{
+  std::uint64_t key;
+  int triangle;
+  int slot;
+};
+} // namespace
+
+PseudoNormals::PseudoNormals(const TriangleSoup& soup)
+{
+  const std::size_t nt = soup.triangles.size();
+  this->Face.resize(nt);
+  std::vector<Vec3> vertex(soup.points.size(), Vec3::Zero());
+  this->Corner.resize(nt);
+  this->Edge.resize(nt);
+
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * nt);
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    const auto& tri = soup.triangles[t];
+    const Vec3 &a = soup.points[tri[0]], &b = soup.points[tri[1]], &c = soup.points[tri[2]];
+    const Vec3 n = (b - a).cross(c - a);
+    const double len = n.norm();
+    // Degenerate triangles have no normal and contribute nothing.
+    this->Face[t] = len > 0 ? Vec3(n / len) : Vec3::Zero();
+    if (len > 0)
+    {
+      vertex[tri[0]] += angleAt(a, b, c) * this->Face[t];
+      vertex[tri[1]] += angleAt(b, c, a) * this->Face[t];
+      vertex[tri[2]] += angleAt(c, a, b) * this->Face[t];
+    }
+    for (int e = 0; e < 3; ++e)
+    {
+      const auto i = static_cast<std::uint64_t>(tri[e]);
+      const auto j = static_cast<std::uint64_t>(tri[(e + 1) % 3]);
+      uses.push_back({ (std::min(i, j) << 32) | std::max(i, j), static_cast<int>(t), e });
+    }
+  }
+
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Corner[t][k] = vertex[soup.triangles[t][k]];
+    }
+  }
+
+  // Group the uses of each undirected edge; its pseudonormal is the sum of its faces' normals.
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
+  for (std::size_t first = 0; first < uses.size();)
+  {
+    std::size_t last = first;
+    Vec3 sum = Vec3::Zero();
+    while (last < uses.size() && uses[last].key == uses[first].key)
+    {
+      sum += this->Face[uses[last].triangle];
+      ++last;
+    }
+    const std::size_t count = last - first;
+    this->BoundaryEdges += count == 1;
+    this->NonManifoldEdges += count > 2;
+    for (std::size_t k = first; k < last; ++k)
+    {
+      this->Edge[uses[k].triangle][uses[k].slot] = sum;
+    }
+    first = last;
+  }
+}
+
+const Vec3& PseudoNormals::at(int triangle, Feature feature) const
+{
+  switch (feature)
+  {
+    case Feature::Face:
+      return this->Face[triangle];
+    case Feature::Edge01:
+      return this->Edge[triangle][0];
+    case Feature::Edge12:
+      return this->Edge[triangle][1];
+    case Feature::Edge20:
+      return this->Edge[triangle][2];
+    default:
+      break;
+  }
+  return this->Corner[triangle][static_cast<int>(feature)]; // Vertex0..2 are 0..2
+}
+
+} // namespace shrinkwrap

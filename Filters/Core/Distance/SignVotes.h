@@ -1,0 +1,37 @@
+// Sign of Algorithm 1, line 8, by flood fill. The band (the nodes of every cell the surface touches)
+// is watertight for a closed mesh, so the off-band nodes fall into connected regions (6-neighbours)
+// that lie wholly inside or wholly outside. A grid edge from a band node to an off-band node does not
+// cross the surface (else both ends would be band nodes), so every band node next to a region has the
+// region's side: its pseudonormal sign votes for it. A closed mesh gives unanimous votes; a minority
+// means that one region reaches both sides of the surface through a hole, and the field is unsigned.
+// Voting needs no seed on the grid boundary, so grids that cut through the mesh are signed too.
+#ifndef ShrinkWrap_SignVotes_h
+#define ShrinkWrap_SignVotes_h
+
+#include "DistanceBand.h"
+
+#include <array>
+
+namespace shrinkwrap
+{
+
+struct SignVotes
+{
+  bool inverted = false; // the triangles face inwards: every sign was flipped to follow the geometry
+  long long regions = 0;
+  long long agreeing = 0;    // band-to-region grid edges whose band sign is the region's
+  long long disagreeing = 0; // ... whose band sign is not
+  bool consistent() const { return this->disagreeing == 0; }
+};
+
+// Labels every Unvisited node Outside or Inside by the votes of the band nodes around its region
+// (no votes: Outside). With cornerIsOutside (the mesh lies inside the grid), the region of node 0 is
+// outside by definition: if its votes say inside, the mesh faces inwards and all signs are flipped.
+// bandExtent (imin, imax, jmin, jmax, kmin, kmax of the band nodes) lets the nodes well away from the
+// band be labelled without a flood. Sets aborted if the progress callback asked to stop.
+SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const std::array<int, 6>& bandExtent,
+  std::uint8_t* state, const Progress& progress, bool& aborted);
+
+} // namespace shrinkwrap
+
+#endif

@@ -1,0 +1,237 @@
+#include "SignedDistance.h"
+#include "Parallel.h"
+
+#include "AABBTree.h"
+#include "DistanceBand.h"
+#include "Outline.h"
+#include "ClosestPointSweep.h"
+#include "EikonalSweep.h"
+#include "PseudoNormals.h"
+#include "SignVotes.h"
+
+#include <vtksys/SystemInformation.hxx>
+#include <vtkSMPTools.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Far field by closest-point passes; the distance of every node is that to its site.
+bool closestPointFarField(const GridLattice& lattice, const DistanceBand& band, float* distance,
+  const Progress& progress)
+{
+  std::vector<std::int32_t> site(lattice.nodeCount(), -1);
+  for (std::size_t k = 0; k < band.nodes.size(); ++k)
+  {
+    site[band.nodes[k]] = static_cast<std::int32_t>(k);
+  }
+  return sweepClosestPoints(lattice, band.closest, site.data(), distance, progress);
+}
+
+// Far field by the paper's Eikonal sweeps from the band, whose nodes are the nonzero states so far.
+bool eikonalFarField(const GridLattice& lattice, const DistanceBand& band, const std::uint8_t* state, int rounds,
+  float* distance, const Progress& progress)
+{
+  for (std::size_t k = 0; k < band.nodes.size(); ++k)
+  {
+    distance[band.nodes[k]] = band.distance[k];
+  }
+  return sweepEikonal(lattice, state, distance, rounds, progress);
+}
+
+// imin, imax, jmin, jmax, kmin, kmax of the given nodes.
+std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std::int64_t>& nodes)
+{
+  std::array<int, 6> e = { lattice.dims[0], -1, lattice.dims[1], -1, lattice.dims[2], -1 };
+  for (std::int64_t n : nodes)
+  {
+    const auto c = lattice.coordinates(n);
+    for (int a = 0; a < 3; ++a)
+    {
+      e[2 * a] = std::min(e[2 * a], c[a]);
+      e[2 * a + 1] = std::max(e[2 * a + 1], c[a]);
+    }
+  }
+  return e;
+}
+
+// Negates the inside (band and off-band) of an unsigned field.
+void applySigns(const GridLattice& lattice, const std::uint8_t* state, bool isSigned, float* distance)
+{
+  if (!isSigned)
+  {
+    return;
+  }
+  parallelFor(0, lattice.nodeCount(), [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t n = b; n < e; ++n)
+    {
+      if (state[n] == Inside || state[n] == BandInside)
+      {
+        distance[n] = -distance[n];
+      }
+    }
+  });
+}
+} // namespace
+
+int workingBytesPerNode(const SignedDistanceSettings& settings)
+{
+  // Node state always; the site index of the closest-point passes.
+  return 1 + (settings.sweep == SweepMethod::ClosestPoint ? 4 : 0);
+}
+
+SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+{
+  SignedDistanceResult result;
+  auto clock = std::chrono::steady_clock::now();
+
+  // Algorithm 1, line 1: the tree, and the pseudonormals that sign the band.
+  const TriangleSoup soup = weldDuplicatePoints(input);
+  const AABBTree tree(soup);
+  const PseudoNormals normals(soup);
+  result.boundaryEdges = normals.boundaryEdges();
+  result.nonManifoldEdges = normals.nonManifoldEdges();
+  result.treeSeconds = secondsSince(clock);
+  if (!progress.report(0.05))
+  {
+    return result;
+  }
+
+  // Lines 2-5: the octree outline and exact distances on its nodes.
+  clock = std::chrono::steady_clock::now();
+  std::vector<std::int64_t> cells;
+  if (!outlineCells(soup, lattice, progress.stage(0.05, 0.2), cells))
+  {
+    return result;
+  }
+  std::vector<std::uint8_t> state(lattice.nodeCount(), Unvisited);
+  result.outlineSeconds = secondsSince(clock);
+  clock = std::chrono::steady_clock::now();
+  DistanceBand band;
+  const Box grid = lattice.bounds();
+  const bool meshInsideGrid = (soup.bounds().min.array() > grid.min.array()).all() &&
+    (soup.bounds().max.array() < grid.max.array()).all();
+  std::vector<std::int64_t> nodes =
+    bandNodes(lattice, cells, settings.bandLayers, !meshInsideGrid, state.data());
+  // A node of a touched cell is within a cell diagonal of the surface; each extra layer adds a cell.
+  const double searchRadius = 1.001 * (1 + settings.bandLayers) * lattice.spacing.norm();
+  if (!computeBand(tree, normals, lattice, std::move(nodes), searchRadius, 1e-6 * lattice.minSpacing(),
+        progress.stage(0.2, 0.45), band, state.data()))
+  {
+    return result;
+  }
+  result.bandNodes = static_cast<long long>(band.nodes.size());
+  result.bandSeconds = secondsSince(clock);
+
+  // Lines 6-7: the far field.
+  clock = std::chrono::steady_clock::now();
+  const Progress sweepProgress = progress.stage(0.45, 0.8);
+  const bool swept = settings.sweep == SweepMethod::ClosestPoint
+    ? closestPointFarField(lattice, band, distance, sweepProgress)
+    : eikonalFarField(lattice, band, state.data(), settings.eikonalIterations, distance, sweepProgress);
+  if (!swept)
+  {
+    return result;
+  }
+  result.sweepSeconds = secondsSince(clock);
+
+  // Line 8: the sign.
+  clock = std::chrono::steady_clock::now();
+  if (settings.computeSign)
+  {
+    bool aborted;
+    const SignVotes votes =
+      signRegions(lattice, meshInsideGrid, nodeExtent(lattice, band.nodes), state.data(), progress.stage(0.8, 0.98), aborted);
+    if (aborted)
+    {
+      return result;
+    }
+    result.signDisagreements = votes.disagreeing;
+    result.invertedOrientation = votes.inverted;
+    result.isSigned = votes.consistent();
+  }
+  applySigns(lattice, state.data(), result.isSigned, distance);
+  result.signSeconds = secondsSince(clock);
+  result.completed = progress.report(1);
+  return result;
+}
+
+namespace
+{
+std::string gibibytes(double bytes)
+{
+  std::ostringstream s;
+  s.precision(3);
+  s << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
+  return s.str();
+}
+} // namespace
+
+Status checkSoup(const TriangleSoup& soup)
+{
+  if (soup.triangles.empty())
+    return Status::failure("there are no polygons or triangle strips: no surface to measure from");
+  if (!soup.allFinite())
+    return Status::failure("there are NaN or infinite point coordinates; fix or remove those points first");
+  if (!withinCoordinateRange(soup.bounds()))
+    return Status::failure("there are coordinates beyond +-1e30, which distances in float cannot hold; "
+                           "scale or translate the mesh first");
+  if (!(soup.maxTriangleArea() > 0))
+    return Status::failure("every triangle is degenerate (zero area): there is no surface");
+  return {};
+}
+
+Status checkMemory(const GridLattice& lattice, const SignedDistanceSettings& settings)
+{
+  // In floating point: the node count of an absurd grid overflows 64-bit integers.
+  const double nodes = static_cast<double>(lattice.dims[0]) * lattice.dims[1] * lattice.dims[2];
+  const double needed = nodes * (sizeof(float) + workingBytesPerNode(settings));
+  vtksys::SystemInformation system;
+  system.RunMemoryCheck();
+  const double available = 1024.0 * 1024.0 * static_cast<double>(system.GetAvailablePhysicalMemory());
+  if (needed > 0.8 * available)
+  {
+    std::ostringstream why;
+    why << "a " << lattice.dims[0] << " x " << lattice.dims[1] << " x " << lattice.dims[2] << " grid would need "
+        << gibibytes(needed) << " but only " << gibibytes(available) << " of memory is available";
+    return Status::failure(why.str());
+  }
+  return {};
+}
+
+Status signedDistanceGrid(const TriangleSoup& soup, const Box& bounds, const GridPlacement& placement,
+  const SignedDistanceSettings& settings, DistanceGrid& grid, SignedDistanceResult& result,
+  const Progress& progress)
+{
+  GridLattice lattice;
+  Status status = checkSoup(soup);
+  if (status)
+  {
+    status = placeGrid(bounds, placement, lattice);
+  }
+  if (status)
+  {
+    status = checkMemory(lattice, settings);
+  }
+  if (!status)
+  {
+    return status;
+  }
+  std::vector<float> values(lattice.nodeCount());
+  result = computeSignedDistance(soup, lattice, settings, values.data(), progress);
+  grid = result.completed ? DistanceGrid(lattice, std::move(values)) : DistanceGrid();
+  return {};
+}
+
+} // namespace shrinkwrap

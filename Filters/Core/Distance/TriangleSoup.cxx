@@ -1,0 +1,42 @@
+#include "TriangleSoup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace shrinkwrap
+{
+
+TriangleSoup weldDuplicatePoints(const TriangleSoup& soup)
+{
+  // Sort point ids lexicographically by coordinates; equal neighbours share one new id.
+  const int n = static_cast<int>(soup.points.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  auto less = [&](int a, int b) {
+    const Vec3 &p = soup.points[a], &q = soup.points[b];
+    return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
+  };
+  std::sort(order.begin(), order.end(), less);
+
+  TriangleSoup welded;
+  std::vector<int> newId(n);
+  for (int k = 0; k < n; ++k)
+  {
+    if (k == 0 || soup.points[order[k]] != soup.points[order[k - 1]])
+    {
+      welded.points.push_back(soup.points[order[k]]);
+    }
+    newId[order[k]] = static_cast<int>(welded.points.size()) - 1;
+  }
+  welded.triangles.reserve(soup.triangles.size());
+  for (const auto& t : soup.triangles)
+  {
+    const std::array<int, 3> w = { newId[t[0]], newId[t[1]], newId[t[2]] };
+    // A triangle that repeats a point is a segment; it is kept for distances, which it still has.
+    welded.triangles.push_back(w);
+  }
+  return welded;
+}
+
+} // namespace shrinkwrap

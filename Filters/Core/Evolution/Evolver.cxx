@@ -1,0 +1,427 @@
+#include "Evolver.h"
+
+#include "ControlFunctions.h"
+#include "CotanLaplacian.h"
+#include "EdgeFlips.h"
+#include "Parallel.h"
+#include "TangentialRedistribution.h"
+
+#include <Eigen/IterativeLinearSolvers>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+template <typename Iterative, typename Matrix, typename Column, typename Result>
+bool solveColumn(Iterative& solver, const Matrix& matrix, double tolerance, const Column& rhs, const Column& guess,
+  Result&& solution)
+{
+  solver.setTolerance(tolerance);
+  solver.compute(matrix);
+  solution = solver.solveWithGuess(rhs, guess);
+  return solver.info() == Eigen::Success;
+}
+
+Status validate(const EvolverSettings& settings, double scale, const SurfaceMesh& mesh)
+{
+  if (!(settings.timeStep > 0) || !std::isfinite(settings.timeStep))
+    return Status::failure("the time step must be positive");
+  if (!(scale > 0) || !std::isfinite(scale))
+    return Status::failure("the scale must be positive");
+  if (settings.C1 < 0 || settings.C2 < 0 || settings.C < 0 || settings.D < 0)
+    return Status::failure("C1, C2, C and D must not be negative");
+  if (settings.omegaAngle < 0 || settings.omegaVolume < 0 || settings.rhoA < 0)
+    return Status::failure("the redistribution weights must not be negative");
+  if (mesh.vertexCount() < 4)
+    return Status::failure("the surface is empty");
+  return {};
+}
+} // namespace
+
+// The system matrix (eq. (5)) keeps its sparsity pattern while the connectivity does; the three
+// coordinates are solved side by side, one solver object each (a solve writes its own counts).
+struct Evolver::Solver
+{
+  explicit Solver(const SurfaceMesh& mesh)
+    : laplacian(mesh)
+  {
+  }
+  CotanLaplacian laplacian;
+  std::array<Eigen::ConjugateGradient<CotanLaplacian::Matrix, Eigen::Lower | Eigen::Upper>, 3> cg;
+  std::array<Eigen::BiCGSTAB<CotanLaplacian::Matrix>, 3> bicgstab;
+};
+
+// What the step's terms are made of: the geometry (Section 2.2) and, per vertex, d, grad d and the
+// control functions eps and eta (eqs. (3), (4)).
+struct Evolver::Controls
+{
+  SurfaceGeometry g;
+  std::vector<double> d, eps, eta;
+  std::vector<Vec3> grad;
+};
+
+Evolver::Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const DistanceGrid* field,
+  const Box& domain, double scale, const Vec3& center)
+  : Mesh(mesh)
+  , Settings(settings)
+  , Field(field && !field->empty() ? field : nullptr)
+  , Scale(scale)
+  , Center(center)
+  , Valid(validate(settings, scale, mesh))
+{
+  if (!this->Valid)
+  {
+    return;
+  }
+  if (!domain.empty())
+  {
+    this->Domain.min = scale * (domain.min - center);
+    this->Domain.max = scale * (domain.max - center);
+  }
+  for (Vec3& x : this->Mesh.points())
+  {
+    x = scale * (x - center);
+  }
+  this->velocity().assign(mesh.vertexCount(), Vec3::Zero());
+  this->Linear = std::make_unique<Solver>(this->Mesh);
+}
+
+Evolver::~Evolver() = default;
+
+Evolver::Controls Evolver::controls() const
+{
+  const std::vector<Vec3>& y = this->Mesh.points();
+  const int nv = this->Mesh.vertexCount();
+  const EvolverSettings& s = this->Settings;
+  Controls c;
+  computeGeometry(this->Mesh, y, c.g);
+  c.d.assign(nv, 0.0);
+  c.grad.assign(nv, Vec3::Zero());
+  if (this->Field)
+  {
+    parallelFor(0, nv, [&](int b, int e) {
+      for (int i = b; i < e; ++i)
+      {
+        const DistanceSample sample = this->Field->sample(this->Center + y[i] / this->Scale);
+        c.d[i] = this->Scale * sample.value; // distances scale with the geometry; gradients do not
+        c.grad[i] = sample.gradient;
+      }
+    });
+  }
+  c.eps.resize(nv);
+  c.eta.resize(nv);
+  for (int i = 0; i < nv; ++i)
+  {
+    c.eps[i] = diffusion(c.d[i], s.C1, s.C2);
+    c.eta[i] = advection(c.d[i], c.grad[i].dot(c.g.normal[i]), s.C, s.D);
+  }
+  return c;
+}
+
+// Section 2.3; false if the volume redistribution's potential did not converge.
+bool Evolver::tangentialVelocities(const Controls& c, std::vector<Vec3>& vt)
+{
+  const int nv = this->Mesh.vertexCount();
+  const EvolverSettings& s = this->Settings;
+  vt.assign(nv, Vec3::Zero());
+  if (s.redistribution == Redistribution::Angle)
+  {
+    std::vector<double> weights(nv, s.omegaAngle);
+    if (this->Field && s.distanceWeight)
+    {
+      for (int i = 0; i < nv; ++i)
+      {
+        weights[i] *= redistributionWeight(c.d[i], s.rhoA);
+      }
+    }
+    angleVelocities(this->Mesh, this->Mesh.points(), c.g, weights, vt);
+  }
+  else if (s.redistribution == Redistribution::Volume)
+  {
+    std::vector<Vec3> normalVelocity(nv);
+    for (int i = 0; i < nv; ++i)
+    {
+      normalVelocity[i] = c.eps[i] * c.g.curvature[i] + c.eta[i] * c.g.normal[i];
+    }
+    const VolumeRedistribution settings{ s.omegaVolume, s.volumePerArea, s.solverTolerance };
+    return volumeVelocities(this->Mesh, this->Mesh.points(), c.g, normalVelocity, settings, this->Potential, vt);
+  }
+  return true;
+}
+
+// Eq. (5), per vertex i and coordinate:
+//   (1 + tau eps_i/|V_i| sum_j w_ij) F_i - tau eps_i/|V_i| sum_j w_ij F_j = F_i^old + tau eta_i N_i + tau v_T,i;
+// the symmetric form (conjugate gradients) multiplies row i by |V_i| / eps_i. False if a solve did
+// not converge.
+bool Evolver::solve(const Controls& c, const std::vector<Vec3>& vt, std::vector<Vec3>& next)
+{
+  const int nv = this->Mesh.vertexCount();
+  const EvolverSettings& s = this->Settings;
+  const std::vector<Vec3>& y = this->Mesh.points();
+  const double tau = s.timeStep;
+  const bool symmetric = s.solver == LinearSolver::ConjugateGradient;
+  auto rowTerms = [&](int i) {
+    const double e = std::max(c.eps[i], 1e-14);
+    const double rowScale = symmetric ? 1.0 : e / c.g.coVolume[i]; // multiplies tau w_ij
+    const double identity = symmetric ? c.g.coVolume[i] / e : 1.0;
+    return std::make_pair(identity, tau * rowScale);
+  };
+  Solver& L = *this->Linear;
+  L.laplacian.assemble(this->Mesh, c.g.weight, rowTerms);
+  Eigen::MatrixXd rhs(nv, 3), guess(nv, 3);
+  for (int i = 0; i < nv; ++i)
+  {
+    const Vec3 b = rowTerms(i).first * (y[i] + tau * c.eta[i] * c.g.normal[i] + tau * vt[i]);
+    rhs.row(i) = b.transpose();
+    guess.row(i) = y[i].transpose();
+  }
+  Eigen::MatrixXd solution(nv, 3);
+  std::array<bool, 3> solved{};
+  const auto& matrix = L.laplacian.matrix();
+  parallelFor(0, 3, 1, [&](int b, int e) {
+    for (int k = b; k < e; ++k)
+    {
+      solved[k] = symmetric
+        ? solveColumn(L.cg[k], matrix, s.solverTolerance, rhs.col(k), guess.col(k), solution.col(k))
+        : solveColumn(L.bicgstab[k], matrix, s.solverTolerance, rhs.col(k), guess.col(k), solution.col(k));
+    }
+  });
+  next.resize(nv);
+  for (int i = 0; i < nv; ++i)
+  {
+    next[i] = solution.row(i).transpose();
+  }
+  return solved[0] && solved[1] && solved[2];
+}
+
+StepReport Evolver::check(const std::vector<Vec3>& y) const
+{
+  StepReport report;
+  report.step = this->Steps + 1;
+  std::ostringstream message;
+  for (int i = 0; i < static_cast<int>(y.size()); ++i)
+  {
+    const bool nan = !y[i].allFinite();
+    if (nan || (!this->Domain.empty() && (this->Domain.squaredDistance(y[i]) > 0)))
+    {
+      message << "vertex " << i << (nan ? " became NaN" : " left the domain") << " at step " << report.step;
+      report.failure = nan ? Failure::NotANumber : Failure::LeftDomain;
+      report.where = i;
+      report.message = message.str();
+      return report;
+    }
+  }
+  const SmallestAngle smallest = smallestAngle(this->Mesh, y);
+  report.smallestAngle = smallest.angle;
+  if (!(smallest.angle >= this->Settings.minAngle))
+  {
+    message << "triangle " << smallest.triangle << " degenerated (smallest angle " << smallest.angle
+            << " rad) at step " << report.step;
+    report.failure = Failure::DegenerateTriangle;
+    report.where = smallest.triangle;
+    report.message = message.str();
+  }
+  return report;
+}
+
+StepReport Evolver::step()
+{
+  const Controls c = this->controls();
+  std::vector<Vec3> vt;
+  if (!this->tangentialVelocities(c, vt))
+  {
+    StepReport report;
+    report.step = this->Steps + 1;
+    report.failure = Failure::SolverFailed;
+    report.message = "the redistribution potential did not converge at step " + std::to_string(report.step);
+    return report;
+  }
+  std::vector<Vec3> next;
+  const bool converged = this->solve(c, vt, next);
+  return this->accept(next, vt, converged);
+}
+
+// The new positions pass the checks, or a triangle that degenerated within the step is mended by flips
+// and collapses; otherwise the step fails and the last good surface stays.
+StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool converged)
+{
+  const EvolverSettings& s = this->Settings;
+  StepReport report = this->check(next);
+  if (report.ok() && !converged)
+  {
+    report.failure = Failure::SolverFailed;
+    report.message = "the linear solver did not converge at step " + std::to_string(report.step);
+  }
+  const bool mendable =
+    report.failure == Failure::DegenerateTriangle && converged && (s.edgeFlips || s.edgeCollapses);
+  if (!report.ok() && !mendable)
+  {
+    return report;
+  }
+  SurfaceMesh good;
+  if (mendable)
+  {
+    good = this->Mesh;
+  }
+  this->Mesh.points().swap(next);
+  this->velocity().swap(vt);
+  this->adjustConnectivity(report);
+  if (mendable)
+  {
+    const StepReport mended = this->check(this->Mesh.points());
+    if (!mended.ok())
+    {
+      const int count = this->Mesh.vertexCount();
+      this->Mesh = std::move(good);
+      this->connectivityChanged(count);
+      return mended;
+    }
+    report = StepReport{ Failure::None, mended.step, -1, {}, report.flips, report.collapses, mended.smallestAngle };
+  }
+  ++this->Steps;
+  return report;
+}
+
+StepReport Evolver::run(int n, const Progress& progress)
+{
+  StepReport report;
+  for (int k = 0; k < n; ++k)
+  {
+    report = this->step();
+    if (!report.ok() || !progress.report(static_cast<double>(k + 1) / n))
+    {
+      break;
+    }
+  }
+  return report;
+}
+
+void Evolver::adjustConnectivity(StepReport& report)
+{
+  const EvolverSettings& s = this->Settings;
+  if (s.edgeFlips)
+  {
+    report.flips = flipEdges(this->Mesh, s.flips);
+    if (report.flips > 0)
+    {
+      this->connectivityChanged(this->Mesh.vertexCount());
+    }
+  }
+  // Degenerating triangles cluster where the surface folds, and a pass collapses one edge per
+  // neighbourhood: passes repeat while they find edges to collapse.
+  const bool degenerating = !(report.smallestAngle >= s.collapses.maxAngle);
+  for (int pass = 0; s.edgeCollapses && degenerating && pass < s.collapses.maxPasses; ++pass)
+  {
+    const int count = this->Mesh.vertexCount();
+    const int collapses = collapseEdges(this->Mesh, s.collapses);
+    if (collapses == 0)
+    {
+      break;
+    }
+    this->connectivityChanged(count);
+    report.collapses += collapses;
+  }
+}
+
+void Evolver::connectivityChanged(int previousVertexCount)
+{
+  if (this->Mesh.vertexCount() != previousVertexCount)
+  {
+    this->Potential.clear(); // a warm start for the same vertices only
+  }
+  this->Linear = std::make_unique<Solver>(this->Mesh);
+}
+
+std::vector<Vec3> unscaled(const std::vector<Vec3>& state, double scale, const Vec3& center)
+{
+  std::vector<Vec3> x;
+  x.reserve(state.size());
+  for (const Vec3& y : state)
+  {
+    x.push_back(center + y / scale);
+  }
+  return x;
+}
+
+std::vector<Vec3> Evolver::positionsOf(const std::vector<Vec3>& state) const
+{
+  return unscaled(state, this->Scale, this->Center);
+}
+
+bool Evolver::restart(
+  const std::vector<Vec3>& state, const std::vector<std::array<int, 3>>* triangles, int steps, double scale)
+{
+  if (triangles)
+  {
+    SurfaceMesh mesh;
+    if (!SurfaceMesh::build(state, *triangles, mesh))
+    {
+      return false;
+    }
+    const int count = this->Mesh.vertexCount();
+    this->Mesh = std::move(mesh);
+    this->connectivityChanged(count);
+  }
+  else if (state.size() != this->Mesh.points().size())
+  {
+    return false;
+  }
+  if (scale > 0 && scale != this->Scale)
+  {
+    this->setScale(scale);
+  }
+  this->Mesh.points() = state;
+  this->Steps = steps;
+  this->Potential.clear();
+  this->velocity().assign(state.size(), Vec3::Zero());
+  return true;
+}
+
+Status Evolver::edit(const std::function<void(SurfaceMesh&)>& change)
+{
+  const int count = this->Mesh.vertexCount();
+  change(this->Mesh);
+  Status status = this->Mesh.commit();
+  this->connectivityChanged(count);
+  return status;
+}
+
+void Evolver::setScale(double scale)
+{
+  const double ratio = scale / this->Scale;
+  for (Vec3& y : this->Mesh.points())
+  {
+    y *= ratio;
+  }
+  this->Domain.min *= ratio;
+  this->Domain.max *= ratio;
+  this->Scale = scale;
+  this->Potential.clear();
+}
+
+SurfaceGeometry Evolver::geometry() const
+{
+  SurfaceGeometry g;
+  computeGeometry(this->Mesh, this->positions(), g);
+  return g;
+}
+
+std::vector<Vec3> Evolver::tangentialVelocity() const
+{
+  // y = phi x and t_scaled = phi^2 t, so dx/dt = phi dy/dt_scaled.
+  std::vector<Vec3> v;
+  const std::vector<Vec3>& vt = this->Mesh.vertexData("velocity");
+  v.reserve(vt.size());
+  for (const Vec3& u : vt)
+  {
+    v.push_back(this->Scale * u);
+  }
+  return v;
+}
+
+} // namespace shrinkwrap

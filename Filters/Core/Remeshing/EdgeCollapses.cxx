@@ -1,0 +1,117 @@
+#include "EdgeCollapses.h"
+
+#include "SurfaceGeometry.h"
+
+namespace shrinkwrap
+{
+
+namespace
+{
+// Only the two vertices opposite the edge (a, b) are neighbours of both; otherwise merging a and b
+// would pinch the surface.
+bool linkCondition(const SurfaceMesh& mesh, int a, int b)
+{
+  int common = 0;
+  for (int p = mesh.ringBegin(a); p < mesh.ringEnd(a); ++p)
+  {
+    common += mesh.ringEntry(b, mesh.ring(p)) >= 0;
+  }
+  return common == 2;
+}
+
+// The triangles around a and b other than the two on the edge keep their orientation when a and b
+// move to m; degenerating ones have no reliable normal to keep and are left out.
+bool keepsNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, int b, const Vec3& m,
+  const CollapseSettings& settings)
+{
+  for (int v : { a, b })
+  {
+    for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
+    {
+      const int u = mesh.ring(p), w = mesh.ring(mesh.next(v, p));
+      if (u == a || u == b || w == a || w == b)
+      {
+        continue;
+      }
+      if (smallestAngle(x[v], x[u], x[w]) < settings.maxAngle)
+      {
+        continue;
+      }
+      const Vec3 before = (x[u] - x[v]).cross(x[w] - x[v]);
+      const Vec3 after = (x[u] - m).cross(x[w] - m);
+      const double lengths = before.norm() * after.norm();
+      if (!(lengths > 0) || before.dot(after) < settings.minNormalDot * lengths)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
+{
+  // Decisions read the surface as it was before the pass (the rings stay so until the commit).
+  const std::vector<Vec3> x = mesh.points();
+  const std::vector<std::array<int, 3>> triangles = mesh.triangles();
+  const int nv = mesh.vertexCount();
+  std::vector<char> touched(nv, 0);
+  int collapses = 0;
+  // Merges `gone` into `keep` at m if that keeps a closed 2-manifold of the same genus with
+  // orientations kept; the neighbours of both then wait for the next pass, so that every ring read
+  // here is current.
+  auto collapse = [&](int keep, int gone, const Vec3& m) {
+    const int p = mesh.ringEntry(keep, gone);
+    const int c = mesh.ring(mesh.next(keep, p)), d = mesh.ring(mesh.previous(keep, p));
+    if (touched[keep] || touched[gone] || mesh.valence(c) <= 3 || mesh.valence(d) <= 3 ||
+      mesh.valence(keep) + mesh.valence(gone) - 4 < 3 || !linkCondition(mesh, keep, gone) ||
+      !keepsNormals(mesh, x, keep, gone, m, settings))
+    {
+      return;
+    }
+    for (int v : { keep, gone })
+    {
+      touched[v] = 1;
+      for (int q = mesh.ringBegin(v); q < mesh.ringEnd(v); ++q)
+      {
+        touched[mesh.ring(q)] = 1;
+      }
+    }
+    collapses += mesh.collapse(keep, gone, m);
+  };
+  for (const auto& t : triangles)
+  {
+    if (nv - collapses <= 4 || !(smallestAngle(x[t[0]], x[t[1]], x[t[2]]) < settings.maxAngle))
+    {
+      continue;
+    }
+    // The shortest edge (a, b), merged at its midpoint; but a vertex of valence 3 beside it (which
+    // would be left with two triangles) goes first, into a, where it leaves one triangle.
+    int a = t[0], b = t[1];
+    for (int e = 1; e < 3; ++e)
+    {
+      const int u = t[e], w = t[(e + 1) % 3];
+      if ((x[u] - x[w]).squaredNorm() < (x[a] - x[b]).squaredNorm())
+      {
+        a = u;
+        b = w;
+      }
+    }
+    const int p = mesh.ringEntry(a, b);
+    const int c = mesh.ring(mesh.next(a, p)), d = mesh.ring(mesh.previous(a, p));
+    const int lone = mesh.valence(c) == 3 ? c : (mesh.valence(d) == 3 ? d : -1);
+    if (lone >= 0)
+    {
+      collapse(a, lone, x[a]);
+    }
+    else
+    {
+      collapse(a, b, 0.5 * (x[a] + x[b]));
+    }
+  }
+  return collapses > 0 && mesh.commit() ? collapses : 0;
+}
+
+} // namespace shrinkwrap

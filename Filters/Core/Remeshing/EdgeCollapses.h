@@ -1,0 +1,30 @@
+// Edge collapses for triangles that degenerate where the surface is compressed (a fold forming as it
+// sinks into a concave pocket). Flips (EdgeFlips.h) mend caps, whose third vertex lies on the long
+// edge, but not needles, whose short edge shrinks to nothing; a collapse merges the two ends of such
+// an edge at its midpoint. It removes one vertex and two triangles and keeps the surface a closed
+// 2-manifold of the same genus (the link condition).
+#ifndef ShrinkWrap_EdgeCollapses_h
+#define ShrinkWrap_EdgeCollapses_h
+
+#include "SurfaceMesh.h"
+
+#include <array>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+struct CollapseSettings
+{
+  double maxAngle = 0.1;     // radians: triangles with a smaller angle have their shortest edge collapsed
+  double minNormalDot = 0.5; // every triangle around the merged vertex keeps its normal within 60 degrees
+  int maxPasses = 10;        // passes per step (the evolver's)
+};
+
+// One pass over the triangles of `mesh` (a vertex takes part in at most one collapse), committed: the
+// vertex data of a merged pair is the kept vertex's. Returns the number of collapses.
+int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings);
+
+} // namespace shrinkwrap
+
+#endif

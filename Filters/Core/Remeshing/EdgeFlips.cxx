@@ -1,0 +1,70 @@
+#include "EdgeFlips.h"
+
+#include "SurfaceGeometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+Vec3 unitNormal(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 n = (b - a).cross(c - a);
+  const double length = n.norm();
+  return length > 0 ? Vec3(n / length) : Vec3::Zero();
+}
+
+} // namespace
+
+// Over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j). The rings describe the
+// connectivity before the pass, hence one flip per vertex.
+int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
+{
+  const std::vector<Vec3>& x = mesh.points();
+  const double cosMax = std::cos(settings.maxDihedral * M_PI / 180.0);
+  std::vector<char> touched(mesh.vertexCount(), 0);
+  int flips = 0;
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+  {
+    for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
+    {
+      const int j = mesh.ring(p);
+      const int c = mesh.ring(mesh.next(i, p)), d = mesh.ring(mesh.previous(i, p));
+      if (j < i || touched[i] || touched[j] || touched[c] || touched[d] || mesh.valence(i) <= 3 ||
+        mesh.valence(j) <= 3 || c == d || mesh.ringEntry(c, d) >= 0)
+      {
+        continue;
+      }
+      // Only non-Delaunay edges (angles at c and d summing past pi) can gain; this test is cheap.
+      const Vec3 ci = x[i] - x[c], cj = x[j] - x[c], di = x[i] - x[d], dj = x[j] - x[d];
+      const double sinC = ci.cross(cj).norm(), sinD = di.cross(dj).norm();
+      if (ci.dot(cj) * sinD + di.dot(dj) * sinC >= 0) // sin(C + D) >= 0
+      {
+        continue;
+      }
+      const double before = std::min(smallestAngle(x[i], x[j], x[c]), smallestAngle(x[i], x[d], x[j]));
+      const double after = std::min(smallestAngle(x[i], x[d], x[c]), smallestAngle(x[d], x[j], x[c]));
+      if (after < before + settings.minGain)
+      {
+        continue;
+      }
+      const Vec3 n1 = unitNormal(x[i], x[j], x[c]), n2 = unitNormal(x[i], x[d], x[j]);
+      const Vec3 n3 = unitNormal(x[i], x[d], x[c]), n4 = unitNormal(x[d], x[j], x[c]);
+      if (n1.dot(n2) < cosMax || n3.dot(n4) < cosMax || n3.dot(n1 + n2) <= 0 || n4.dot(n1 + n2) <= 0)
+      {
+        continue;
+      }
+      if (mesh.flip(i, j))
+      {
+        touched[i] = touched[j] = touched[c] = touched[d] = 1;
+        ++flips;
+      }
+    }
+  }
+  return mesh.commit() ? flips : 0;
+}
+
+} // namespace shrinkwrap

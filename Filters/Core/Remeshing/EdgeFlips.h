@@ -1,0 +1,29 @@
+// Edge flips that raise the smallest angle of a triangle pair, for a Lagrangian surface whose fixed
+// connectivity cannot follow large tangential stretching (the paper's Section 5 names connectivity
+// adjustments as the missing piece). A flip keeps the vertices, so the surface stays closed and
+// 2-manifold; it is refused where the two triangles are not nearly coplanar, so the shape is kept.
+#ifndef ShrinkWrap_EdgeFlips_h
+#define ShrinkWrap_EdgeFlips_h
+
+#include "SurfaceMesh.h"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+struct FlipSettings
+{
+  double maxDihedral = 60;       // degrees between the normals of the two triangles, before and after
+  double minGain = 0.01;         // radians the smallest angle of the pair must gain
+};
+
+// One pass of flips over the edges of `mesh` (a vertex takes part in at most one flip; the evolver
+// runs a pass after every step), committed. Returns the number of flips.
+int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings);
+
+} // namespace shrinkwrap
+
+#endif

@@ -1,0 +1,26 @@
+// Tangential relaxation of a starting surface (the paper's Section 5 proposes starting from a contour
+// of d "after tangentially relaxing triangle vertices"): a marching-cubes contour has slivers and
+// near-coincident vertices that would fail the evolution's degenerate-triangle check at once.
+#ifndef ShrinkWrap_Relaxation_h
+#define ShrinkWrap_Relaxation_h
+
+#include "EdgeFlips.h"
+#include "SurfaceMesh.h"
+
+namespace shrinkwrap
+{
+
+struct RelaxSettings
+{
+  int iterations = 10;
+  double weight = 0.5; // share of the way to the tangential centroid per iteration
+  FlipSettings flips;
+};
+
+// Each iteration moves every vertex part of the way to the centroid of its neighbours within its
+// tangent plane, then flips edges (EdgeFlips.h): the shape stays, the triangles even out.
+void relaxTangentially(SurfaceMesh& mesh, const RelaxSettings& settings);
+
+} // namespace shrinkwrap
+
+#endif

@@ -1,0 +1,472 @@
+#include "SurfaceMesh.h"
+
+#include <algorithm>
+#include <sstream>
+#include <unordered_map>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+// A directed edge a -> b of triangle t, whose third vertex follows b.
+struct Corner
+{
+  int a, b, c, triangle;
+};
+
+// Corners grouped by vertex: at vertex a, triangle (a, b, c) leads from neighbour b to neighbour c.
+// Bucketed by a (counting sort), then each small bucket sorted by b: linear time, as this runs again
+// after every round of edits. `bucket` gets the bucket offsets.
+Status sortCorners(int nv, const std::vector<std::array<int, 3>>& triangles, std::vector<Corner>& corners,
+  std::vector<int>& bucket)
+{
+  const int nt = static_cast<int>(triangles.size());
+  bucket.assign(nv + 1, 0);
+  for (int t = 0; t < nt; ++t)
+  {
+    const auto& tri = triangles[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = tri[k], b = tri[(k + 1) % 3], c = tri[(k + 2) % 3];
+      if (a < 0 || a >= nv || b < 0 || b >= nv || c < 0 || c >= nv)
+      {
+        return Status::failure("a triangle refers to a vertex that does not exist");
+      }
+      if (a == b || b == c || c == a)
+      {
+        std::ostringstream why;
+        why << "triangle " << t << " repeats a vertex";
+        return Status::failure(why.str());
+      }
+      ++bucket[a + 1];
+    }
+  }
+  for (int v = 0; v < nv; ++v)
+  {
+    bucket[v + 1] += bucket[v];
+  }
+  corners.resize(3 * static_cast<std::size_t>(nt));
+  std::vector<int> fill(bucket.begin(), bucket.end() - 1);
+  for (int t = 0; t < nt; ++t)
+  {
+    const auto& tri = triangles[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      corners[fill[tri[k]]++] = { tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3], t };
+    }
+  }
+  for (int v = 0; v < nv; ++v)
+  {
+    std::sort(corners.begin() + bucket[v], corners.begin() + bucket[v + 1],
+      [](const Corner& x, const Corner& y) { return x.b < y.b; });
+  }
+  return {};
+}
+
+// Walks the fan of vertex v, whose corners are [first, last): from neighbour b, the corner starting at b
+// leads to c, which must start the next. Writes v's ring entries.
+Status walkFan(int v, const Corner* first, const Corner* last, int* ring, int* ringTriangle)
+{
+  std::ostringstream why;
+  if (first == last)
+  {
+    why << "vertex " << v << " belongs to no triangle";
+    return Status::failure(why.str());
+  }
+  auto find = [&](int b) -> const Corner* {
+    const Corner* it = std::lower_bound(first, last, b, [](const Corner& x, int key) { return x.b < key; });
+    return it != last && it->b == b ? it : nullptr;
+  };
+  if (std::adjacent_find(first, last, [](const Corner& x, const Corner& y) { return x.b == y.b; }) != last)
+  {
+    why << "an edge at vertex " << v << " is used by more than two triangles or twice in one direction";
+    return Status::failure(why.str());
+  }
+  const Corner* corner = first;
+  for (int p = 0; p < last - first; ++p)
+  {
+    if (p > 0 && corner->b == first->b)
+    {
+      why << "vertex " << v << " is non-manifold (its triangles form more than one fan)";
+      return Status::failure(why.str());
+    }
+    ring[p] = corner->b;
+    ringTriangle[p] = corner->triangle;
+    const Corner* following = find(corner->c);
+    if (!following)
+    {
+      why << "the surface is open or inconsistently oriented at the edge (" << v << ", " << corner->c << ")";
+      return Status::failure(why.str());
+    }
+    corner = following;
+  }
+  if (corner != first)
+  {
+    why << "vertex " << v << " is non-manifold (its triangles form more than one fan)";
+    return Status::failure(why.str());
+  }
+  return {};
+}
+
+std::uint64_t edgeKey(int a, int b)
+{
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+constexpr std::array<int, 3> kRemoved = { -1, -1, -1 };
+} // namespace
+
+// What the edits since the last commit need: which vertices they touched (the rings of the others are
+// still exact), the directed edges' triangles once a lookup needs them (then kept current by every
+// edit), the removed vertices, and the surface as committed, to restore if the commit fails.
+struct SurfaceMesh::EditState
+{
+  std::vector<char> touched; // per committed vertex
+  bool mapped = false;
+  std::unordered_map<std::uint64_t, int> edgeTriangle;
+  std::vector<char> removedVertex;
+  int removals = 0; // vertices and triangles removed
+  std::vector<std::array<int, 3>> committedTriangles;
+  std::vector<Vec3> committedPoints;
+  std::map<std::string, std::vector<Vec3>> committedData;
+};
+
+SurfaceMesh::SurfaceMesh() = default;
+SurfaceMesh::SurfaceMesh(SurfaceMesh&&) noexcept = default;
+SurfaceMesh& SurfaceMesh::operator=(SurfaceMesh&&) noexcept = default;
+SurfaceMesh::~SurfaceMesh() = default;
+
+SurfaceMesh::SurfaceMesh(const SurfaceMesh& other)
+  : Triangles(other.Triangles)
+  , Points(other.Points)
+  , Data(other.Data)
+  , RingStart(other.RingStart)
+  , Ring(other.Ring)
+  , RingTriangle(other.RingTriangle)
+  , Edits(other.Edits ? std::make_unique<EditState>(*other.Edits) : nullptr)
+{
+}
+
+SurfaceMesh& SurfaceMesh::operator=(const SurfaceMesh& other)
+{
+  if (this != &other)
+  {
+    SurfaceMesh copy(other);
+    *this = std::move(copy);
+  }
+  return *this;
+}
+
+Status SurfaceMesh::build(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+  SurfaceMesh& mesh)
+{
+  if (points.empty() || triangles.empty())
+  {
+    return Status::failure("the surface is empty");
+  }
+  for (const auto& p : points)
+  {
+    if (!p.allFinite())
+    {
+      return Status::failure("the surface has NaN or infinite coordinates");
+    }
+  }
+  SurfaceMesh built;
+  built.Points = points;
+  built.Triangles = triangles;
+  if (Status status = built.connect(); !status)
+  {
+    return status;
+  }
+  mesh = std::move(built);
+  return {};
+}
+
+Status SurfaceMesh::connect()
+{
+  const int nv = static_cast<int>(this->Points.size());
+  std::vector<Corner> corners;
+  std::vector<int> bucket;
+  if (Status status = sortCorners(nv, this->Triangles, corners, bucket); !status)
+  {
+    return status;
+  }
+  // Every vertex's corners are as many as its ring entries; the walk checks they form one fan.
+  this->RingStart = bucket;
+  this->Ring.resize(corners.size());
+  this->RingTriangle.resize(corners.size());
+  for (int v = 0; v < nv; ++v)
+  {
+    const Status fan = walkFan(v, corners.data() + bucket[v], corners.data() + bucket[v + 1],
+      this->Ring.data() + bucket[v], this->RingTriangle.data() + bucket[v]);
+    if (!fan)
+    {
+      return fan;
+    }
+  }
+  for (auto& entry : this->Data)
+  {
+    entry.second.resize(nv, Vec3::Zero());
+  }
+  return {};
+}
+
+int SurfaceMesh::ringEntry(int i, int j) const
+{
+  for (int p = this->RingStart[i]; p < this->RingStart[i + 1]; ++p)
+  {
+    if (this->Ring[p] == j)
+    {
+      return p;
+    }
+  }
+  return -1;
+}
+
+std::vector<Vec3>& SurfaceMesh::vertexData(const std::string& name)
+{
+  std::vector<Vec3>& values = this->Data[name];
+  values.resize(this->Points.size(), Vec3::Zero());
+  return values;
+}
+
+const std::vector<Vec3>& SurfaceMesh::vertexData(const std::string& name) const
+{
+  static const std::vector<Vec3> none;
+  const auto found = this->Data.find(name);
+  return found == this->Data.end() ? none : found->second;
+}
+
+void SurfaceMesh::beginEdit()
+{
+  if (this->Edits)
+  {
+    return;
+  }
+  this->Edits = std::make_unique<EditState>();
+  EditState& e = *this->Edits;
+  e.committedTriangles = this->Triangles;
+  e.committedPoints = this->Points;
+  e.committedData = this->Data;
+  e.removedVertex.assign(this->Points.size(), 0);
+  e.touched.assign(this->Points.size(), 0);
+}
+
+// From the ring of an end the edits have not touched (exact since the commit), else from the map of
+// directed edges, built on first need.
+int SurfaceMesh::triangleOf(int a, int b) const
+{
+  EditState& e = *this->Edits;
+  const int committed = static_cast<int>(e.touched.size());
+  if (a < committed && !e.touched[a])
+  {
+    const int p = this->ringEntry(a, b);
+    return p < 0 ? -1 : this->RingTriangle[p];
+  }
+  if (b < committed && !e.touched[b])
+  {
+    const int q = this->ringEntry(b, a); // triangle (b, x, a) holds a -> b
+    return q < 0 ? -1 : this->RingTriangle[this->previous(b, q)];
+  }
+  if (!e.mapped)
+  {
+    e.edgeTriangle.reserve(3 * this->Triangles.size());
+    for (int t = 0; t < this->triangleCount(); ++t)
+    {
+      const auto& v = this->Triangles[t];
+      for (int k = 0; k < 3 && v[0] >= 0; ++k)
+      {
+        e.edgeTriangle[edgeKey(v[k], v[(k + 1) % 3])] = t;
+      }
+    }
+    e.mapped = true;
+  }
+  const auto found = e.edgeTriangle.find(edgeKey(a, b));
+  return found == e.edgeTriangle.end() ? -1 : found->second;
+}
+
+void SurfaceMesh::setTriangle(int t, const std::array<int, 3>& triangle)
+{
+  EditState& e = *this->Edits;
+  const std::array<int, 3> old = t < this->triangleCount() ? this->Triangles[t] : kRemoved;
+  for (const auto& v : { old, triangle })
+  {
+    for (int k = 0; k < 3 && v[0] >= 0; ++k)
+    {
+      if (v[k] < static_cast<int>(e.touched.size()))
+      {
+        e.touched[v[k]] = 1;
+      }
+    }
+  }
+  for (int k = 0; k < 3 && e.mapped && old[0] >= 0; ++k)
+  {
+    const auto found = e.edgeTriangle.find(edgeKey(old[k], old[(k + 1) % 3]));
+    if (found != e.edgeTriangle.end() && found->second == t)
+    {
+      e.edgeTriangle.erase(found);
+    }
+  }
+  if (t == this->triangleCount())
+  {
+    this->Triangles.push_back(triangle);
+  }
+  this->Triangles[t] = triangle;
+  for (int k = 0; k < 3 && e.mapped && triangle[0] >= 0; ++k)
+  {
+    e.edgeTriangle[edgeKey(triangle[k], triangle[(k + 1) % 3])] = t;
+  }
+}
+
+namespace
+{
+// The vertex of triangle t after a, and the one after that.
+int after(const std::array<int, 3>& t, int a)
+{
+  return t[0] == a ? t[1] : (t[1] == a ? t[2] : t[0]);
+}
+
+// Triangle t with vertex `from` replaced by `to`, in the same slot (so the same rotation).
+std::array<int, 3> replaced(std::array<int, 3> t, int from, int to)
+{
+  for (int& v : t)
+  {
+    v = v == from ? to : v;
+  }
+  return t;
+}
+} // namespace
+
+int SurfaceMesh::split(int a, int b, double t)
+{
+  this->beginEdit();
+  const int ab = this->triangleOf(a, b), ba = this->triangleOf(b, a);
+  if (ab < 0 || ba < 0)
+  {
+    return -1;
+  }
+  const int c = after(this->Triangles[ab], b), d = after(this->Triangles[ba], a);
+  const int m = static_cast<int>(this->Points.size());
+  this->Points.push_back((1 - t) * this->Points[a] + t * this->Points[b]);
+  for (auto& entry : this->Data)
+  {
+    entry.second.resize(m, Vec3::Zero());
+    entry.second.push_back((1 - t) * entry.second[a] + t * entry.second[b]);
+  }
+  this->Edits->removedVertex.push_back(0);
+  // (a, b, c) -> (a, m, c) + (m, b, c); (b, a, d) -> (b, m, d) + (m, a, d).
+  this->setTriangle(ab, replaced(this->Triangles[ab], b, m));
+  this->setTriangle(this->triangleCount(), { m, b, c });
+  this->setTriangle(ba, replaced(this->Triangles[ba], a, m));
+  this->setTriangle(this->triangleCount(), { m, a, d });
+  return m;
+}
+
+bool SurfaceMesh::flip(int a, int b)
+{
+  this->beginEdit();
+  const int ab = this->triangleOf(a, b), ba = this->triangleOf(b, a);
+  if (ab < 0 || ba < 0)
+  {
+    return false;
+  }
+  const int c = after(this->Triangles[ab], b), d = after(this->Triangles[ba], a);
+  if (c == d || this->triangleOf(c, d) >= 0 || this->triangleOf(d, c) >= 0)
+  {
+    return false;
+  }
+  this->setTriangle(ab, { a, d, c });
+  this->setTriangle(ba, { d, b, c });
+  return true;
+}
+
+bool SurfaceMesh::collapse(int keep, int gone, const Vec3& position)
+{
+  this->beginEdit();
+  const int first = this->triangleOf(gone, keep);
+  if (first < 0 || this->triangleOf(keep, gone) < 0)
+  {
+    return false;
+  }
+  // Around `gone`: triangle (gone, x, y) is followed by the one with edge (gone, y).
+  std::vector<int> fan;
+  for (int t = first; fan.empty() || t != first;
+       t = this->triangleOf(gone, after(this->Triangles[t], after(this->Triangles[t], gone))))
+  {
+    if (t < 0 || fan.size() > this->Triangles.size())
+    {
+      return false;
+    }
+    fan.push_back(t);
+  }
+  for (int t : fan)
+  {
+    const auto& v = this->Triangles[t];
+    const bool onEdge = v[0] == keep || v[1] == keep || v[2] == keep;
+    this->setTriangle(t, onEdge ? kRemoved : replaced(v, gone, keep));
+  }
+  this->Points[keep] = position;
+  this->Edits->removedVertex[gone] = 1;
+  this->Edits->removals += 3;
+  return true;
+}
+
+Status SurfaceMesh::commit()
+{
+  if (!this->Edits)
+  {
+    return {};
+  }
+  std::unique_ptr<EditState> edits = std::move(this->Edits);
+  if (edits->removals > 0)
+  {
+    this->compact(edits->removedVertex);
+  }
+  Status status = this->connect();
+  if (!status)
+  {
+    this->Triangles = std::move(edits->committedTriangles);
+    this->Points = std::move(edits->committedPoints);
+    this->Data = std::move(edits->committedData);
+    this->connect();
+  }
+  return status;
+}
+
+// Drops removed vertices and triangles; the others keep their order.
+void SurfaceMesh::compact(const std::vector<char>& removedVertex)
+{
+  const int nv = static_cast<int>(this->Points.size());
+  std::vector<int> index(nv, -1);
+  int kept = 0;
+  for (int v = 0; v < nv; ++v)
+  {
+    if (!removedVertex[v])
+    {
+      index[v] = kept++;
+      this->Points[index[v]] = this->Points[v];
+      for (auto& entry : this->Data)
+      {
+        entry.second[index[v]] = entry.second[v];
+      }
+    }
+  }
+  this->Points.resize(kept);
+  for (auto& entry : this->Data)
+  {
+    entry.second.resize(kept);
+  }
+  std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(this->Triangles.size());
+  for (const auto& t : this->Triangles)
+  {
+    if (t[0] >= 0)
+    {
+      triangles.push_back({ index[t[0]], index[t[1]], index[t[2]] });
+    }
+  }
+  this->Triangles.swap(triangles);
+}
+
+} // namespace shrinkwrap

@@ -1,0 +1,375 @@
+#include "VTKConversions.h"
+
+#include "MeshQuality.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkFlyingEdges3D.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolygon.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shrinkwrap
+{
+namespace convert
+{
+
+namespace
+{
+// Appends a mesh to the paper's triangle soup: polygons of any size (ear-cut by vtkPolygon when
+// n > 3) and strips. Cells naming points that do not exist are counted in badCells and left out.
+void appendToSoup(vtkPolyData* input, TriangleSoup& soup, long long& badCells)
+{
+  vtkPoints* points = input->GetPoints();
+  const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
+  const vtkIdType first = static_cast<vtkIdType>(soup.points.size());
+  soup.points.resize(first + np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    points->GetPoint(i, soup.points[first + i].data());
+  }
+  auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
+    soup.triangles.push_back(
+      { static_cast<int>(first + a), static_cast<int>(first + b), static_cast<int>(first + c) });
+  };
+  auto valid = [&](vtkIdType n, const vtkIdType* ids) {
+    const bool ok = std::all_of(ids, ids + n, [np](vtkIdType id) { return id >= 0 && id < np; });
+    badCells += !ok;
+    return ok;
+  };
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> corners;
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(n, ids);
+    if (!valid(n, ids))
+    {
+      continue;
+    }
+    if (n == 3)
+    {
+      addTriangle(ids[0], ids[1], ids[2]);
+      continue;
+    }
+    if (n < 3)
+    {
+      continue;
+    }
+    polygon->Initialize(n, ids, points);
+    if (polygon->Triangulate(corners) && corners->GetNumberOfIds() > 0)
+    {
+      for (vtkIdType k = 0; k + 2 < corners->GetNumberOfIds(); k += 3)
+      {
+        addTriangle(ids[corners->GetId(k)], ids[corners->GetId(k + 1)], ids[corners->GetId(k + 2)]);
+      }
+    }
+    else
+    {
+      // Ear cutting fails on degenerate polygons; a fan still has their distances.
+      for (vtkIdType k = 1; k + 1 < n; ++k)
+      {
+        addTriangle(ids[0], ids[k], ids[k + 1]);
+      }
+    }
+  }
+  vtkNew<vtkCellArray> stripTriangles;
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    strips->GetCurrentCell(n, ids);
+    if (!valid(n, ids))
+    {
+      continue;
+    }
+    for (vtkIdType k = 0; k + 2 < n; ++k)
+    {
+      // Strips alternate orientation.
+      k % 2 == 0 ? addTriangle(ids[k], ids[k + 1], ids[k + 2]) : addTriangle(ids[k + 1], ids[k], ids[k + 2]);
+    }
+  }
+}
+
+void extendBySurface(vtkPolyData* input, Box& box)
+{
+  vtkPoints* points = input->GetPoints();
+  if (!points)
+  {
+    return;
+  }
+  const vtkIdType np = points->GetNumberOfPoints();
+  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        if (ids[k] >= 0 && ids[k] < np)
+        {
+          Vec3 p;
+          points->GetPoint(ids[k], p.data());
+          box.extend(p);
+        }
+      }
+    }
+  }
+}
+
+} // namespace
+
+Status polygonMeshes(vtkDataObject* input, std::vector<vtkPolyData*>& meshes)
+{
+  meshes.clear();
+  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
+  {
+    if (auto* mesh = vtkPolyData::SafeDownCast(leaf))
+    {
+      meshes.push_back(mesh);
+    }
+    else if (leaf->GetNumberOfCells() > 0)
+    {
+      return Status::failure(std::string("a block of the input is a ") + leaf->GetClassName() +
+        ", not a polygon mesh; apply Extract Surface to it first");
+    }
+  }
+  return {};
+}
+
+TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts)
+{
+  TriangleSoup soup;
+  for (vtkPolyData* mesh : meshes)
+  {
+    counts.lines += mesh->GetNumberOfLines();
+    counts.vertices += mesh->GetNumberOfVerts();
+    appendToSoup(mesh, soup, counts.badCells);
+  }
+  return soup;
+}
+
+Status surfaceOf(vtkPolyData* mesh, TriangleSurface& surface)
+{
+  const Status refused = Status::failure("it must be made of triangles only, with finite points and valid point ids");
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n != 3)
+    {
+      return refused;
+    }
+  }
+  long long badCells = 0;
+  surface = TriangleSurface();
+  appendToSoup(mesh, surface, badCells);
+  if (badCells > 0 || surface.triangles.empty() || mesh->GetNumberOfStrips() > 0 || !surface.allFinite())
+  {
+    return refused;
+  }
+  return {};
+}
+
+Box surfaceBounds(const std::vector<vtkPolyData*>& meshes)
+{
+  Box box;
+  for (vtkPolyData* mesh : meshes)
+  {
+    extendBySurface(mesh, box);
+  }
+  return box;
+}
+
+Box boundsOf(vtkDataSet* data)
+{
+  Box box;
+  double b[6];
+  data->GetBounds(b);
+  if (data->GetNumberOfPoints() > 0)
+  {
+    box.extend(Vec3(b[0], b[2], b[4]));
+    box.extend(Vec3(b[1], b[3], b[5]));
+  }
+  return box;
+}
+
+Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid)
+{
+  vtkDataArray* values = image ? image->GetPointData()->GetArray(name) : nullptr;
+  if (!values || values->GetNumberOfComponents() != 1)
+  {
+    return Status::failure(std::string("the distance field has no point array \"") + name + "\"");
+  }
+  GridLattice lattice;
+  int extent[6];
+  image->GetExtent(extent);
+  image->GetSpacing(lattice.spacing.data());
+  image->GetOrigin(lattice.origin.data());
+  for (int a = 0; a < 3; ++a)
+  {
+    lattice.dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
+    lattice.origin[a] += extent[2 * a] * lattice.spacing[a];
+  }
+  if (lattice.dims[0] < 2 || lattice.dims[1] < 2 || lattice.dims[2] < 2 || !(lattice.spacing.minCoeff() > 0))
+  {
+    return Status::failure("the distance field needs at least 2 nodes and a positive spacing on every axis");
+  }
+  if (values->GetNumberOfTuples() != lattice.nodeCount())
+  {
+    return Status::failure("the distance field's " + std::string(name) + " array has " +
+      std::to_string(values->GetNumberOfTuples()) + " values for " + std::to_string(lattice.nodeCount()) + " nodes");
+  }
+  std::vector<float> v(values->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    v[i] = static_cast<float>(values->GetTuple1(i));
+    if (!std::isfinite(v[i]))
+    {
+      return Status::failure("the distance field has NaN or infinite values (node " + std::to_string(i) + ")");
+    }
+  }
+  grid = DistanceGrid(lattice, std::move(v));
+  return {};
+}
+
+vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name)
+{
+  const GridLattice& lattice = grid.lattice();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetExtent(0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1);
+  image->SetOrigin(lattice.origin.data());
+  image->SetSpacing(lattice.spacing.data());
+  vtkNew<vtkFloatArray> values;
+  values->SetName(name);
+  values->SetNumberOfValues(lattice.nodeCount());
+  std::copy(grid.values().begin(), grid.values().end(), values->GetPointer(0));
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+
+TriangleSurface contour(const DistanceGrid& grid, double value)
+{
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputData(imageOf(grid, "d"));
+  contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "d");
+  contour->SetValue(0, value);
+  contour->ComputeNormalsOff();
+  contour->ComputeGradientsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  TriangleSurface surface;
+  surfaceOf(contour->GetOutput(), surface);
+  return surface;
+}
+
+namespace
+{
+template <typename Array>
+Array* named(Array* array, const char* name, int components, vtkIdType tuples)
+{
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+// Per vertex: d, -grad d . N, H (h = -H N), |V_i|, N and v_T.
+void addPointArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const DistanceGrid& field,
+  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
+{
+  SurfaceGeometry g;
+  computeGeometry(mesh, x, g);
+  const int nv = static_cast<int>(x.size());
+  vtkNew<vtkFloatArray> distance, alignment, curvature, coVolume, normals, tangential;
+  named(distance.Get(), "Distance", 1, nv);
+  named(alignment.Get(), "AdvectionAlignment", 1, nv);
+  named(curvature.Get(), "MeanCurvature", 1, nv);
+  named(coVolume.Get(), "CoVolume", 1, nv);
+  named(normals.Get(), "Normals", 3, nv);
+  named(tangential.Get(), "TangentialVelocity", 3, nv);
+  for (int i = 0; i < nv; ++i)
+  {
+    const DistanceSample d = field.sample(x[i]);
+    distance->SetValue(i, static_cast<float>(d.value));
+    alignment->SetValue(i, static_cast<float>(-d.gradient.dot(g.normal[i])));
+    curvature->SetValue(i, static_cast<float>(-g.curvature[i].dot(g.normal[i])));
+    coVolume->SetValue(i, static_cast<float>(g.coVolume[i]));
+    normals->SetTuple3(i, g.normal[i].x(), g.normal[i].y(), g.normal[i].z());
+    const Vec3& v = tangentialVelocity[i];
+    tangential->SetTuple3(i, v.x(), v.y(), v.z());
+  }
+  for (vtkDataArray* a : { distance.Get(), alignment.Get(), curvature.Get(), coVolume.Get(), tangential.Get() })
+  {
+    output->GetPointData()->AddArray(a);
+  }
+  output->GetPointData()->SetNormals(normals);
+  output->GetPointData()->SetActiveScalars("Distance");
+}
+
+// Per triangle: the quality measures of MeshQuality.h.
+void addCellArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, vtkPolyData* output)
+{
+  const int nt = mesh.triangleCount();
+  vtkNew<vtkFloatArray> minAngle, maxAngle, jacobian;
+  named(minAngle.Get(), "MinAngle", 1, nt);
+  named(maxAngle.Get(), "MaxAngle", 1, nt);
+  named(jacobian.Get(), "JacobianCondition", 1, nt);
+  for (int t = 0; t < nt; ++t)
+  {
+    const auto& tri = mesh.triangles()[t];
+    const TriangleQuality q = triangleQuality(x[tri[0]], x[tri[1]], x[tri[2]]);
+    minAngle->SetValue(t, static_cast<float>(q.minAngle));
+    maxAngle->SetValue(t, static_cast<float>(q.maxAngle));
+    jacobian->SetValue(t, static_cast<float>(q.jacobianCondition));
+  }
+  for (vtkDataArray* a : { minAngle.Get(), maxAngle.Get(), jacobian.Get() })
+  {
+    output->GetCellData()->AddArray(a);
+  }
+}
+} // namespace
+
+void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const DistanceGrid& field,
+  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(x.size()));
+  for (std::size_t i = 0; i < x.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), x[i].data());
+  }
+  vtkNew<vtkCellArray> triangles;
+  for (const auto& t : mesh.triangles())
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  output->SetPoints(points);
+  output->SetPolys(triangles);
+  addPointArrays(x, mesh, field, tangentialVelocity, output);
+  addCellArrays(x, mesh, output);
+}
+
+} // namespace convert
+} // namespace shrinkwrap

@@ -1,0 +1,70 @@
+// Between VTK's data and the core's, for both filters: polygon meshes to a triangle soup or surface,
+// image data to a distance grid and back, contours of a grid (VTK's Flying Edges), and the wrap's
+// output surface with its arrays.
+#ifndef ShrinkWrap_VTKConversions_h
+#define ShrinkWrap_VTKConversions_h
+
+#include "DistanceGrid.h"
+#include "Status.h"
+#include "SurfaceGeometry.h"
+#include "TriangleSoup.h"
+#include "TriangleSurface.h"
+
+#include <vtkSmartPointer.h>
+
+#include <vector>
+
+class vtkDataObject;
+class vtkDataSet;
+class vtkImageData;
+class vtkPolyData;
+
+namespace shrinkwrap
+{
+namespace convert
+{
+
+// The polygon meshes of an input: itself, or the leaves of a composite dataset. A leaf with cells
+// that are not polygons is an error: Extract Surface makes polygons of it.
+Status polygonMeshes(vtkDataObject* input, std::vector<vtkPolyData*>& meshes);
+
+// What a soup was made of besides its triangles.
+struct SoupCounts
+{
+  long long badCells = 0; // cells naming points that do not exist (left out)
+  long long lines = 0;    // lines and vertices, which have no inside (left out)
+  long long vertices = 0;
+};
+
+// The paper's triangle soup of meshes, one after the other: polygons of any size (ear-cut by
+// vtkPolygon when n > 3, a fan where that fails) and strips.
+TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts);
+
+// A mesh of triangles only as a surface; fails for other polygons, strips, no triangles, invalid point
+// ids or points that are not finite.
+Status surfaceOf(vtkPolyData* mesh, TriangleSurface& surface);
+
+// Bounds of the points that polygons and strips use: the surface, without stray points or lines.
+Box surfaceBounds(const std::vector<vtkPolyData*>& meshes);
+// Bounds of all the points of a dataset.
+Box boundsOf(vtkDataSet* data);
+
+// The point array `name` of an image as a grid: one component, at least 2 nodes and a positive spacing
+// on every axis, finite values.
+Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid);
+// A grid as an image whose point array `name` holds its values.
+vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name);
+
+// Marching cubes (vtkFlyingEdges3D) of a grid at one value.
+TriangleSurface contour(const DistanceGrid& grid, double value);
+
+// The wrap's surface as `output`: points x, triangles, point data Distance, AdvectionAlignment,
+// MeanCurvature, CoVolume, Normals, TangentialVelocity; cell data MinAngle, MaxAngle,
+// JacobianCondition (see vtkShrinkWrapFilter.h).
+void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const DistanceGrid& field,
+  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output);
+
+} // namespace convert
+} // namespace shrinkwrap
+
+#endif

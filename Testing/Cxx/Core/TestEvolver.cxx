@@ -1,0 +1,308 @@
+// The evolver (issue #3, besides the shrinking-sphere tables): redistribution does its job, advection
+// onto a target, failures reported, scale covariance, the domain, refused settings, and edits between
+// steps (issue #9: a split surface evolves as the same surface given from the start).
+#include "Evolver.h"
+#include "EdgeSplits.h"
+#include "Icosphere.h"
+#include "SignedDistance.h"
+#include "WrapSession.h"
+#include "TestUtilities.h"
+
+#include <functional>
+
+#include <vtkSMPTools.h>
+
+namespace
+{
+using namespace shrinkwrap;
+using testing::meshOf;
+
+struct Shape
+{
+  double coVolumeRatio;
+  double minAngleDegrees;     // the worst triangle
+  double meanMinAngleDegrees; // the smallest angle of each triangle, averaged
+};
+
+// An ellipsoid evolving by mean curvature flow for `steps` steps.
+Shape ellipsoidFlow(Redistribution redistribution, int steps)
+{
+  TriangleSurface ellipsoid = icosphere(3);
+  for (Vec3& p : ellipsoid.points)
+  {
+    p = p.cwiseProduct(Vec3(1.0, 0.5, 0.35));
+  }
+  const SurfaceMesh mesh = meshOf(ellipsoid);
+  EvolverSettings settings = EvolverSettings::paper();
+  settings.C1 = 1;
+  settings.C2 = 0;
+  settings.C = 0;
+  settings.timeStep = 1e-4;
+  settings.redistribution = redistribution;
+  settings.omegaAngle = 1.0;
+  settings.omegaVolume = 1.0;
+  Evolver evolver(mesh, settings);
+  for (int k = 0; k < steps; ++k)
+  {
+    const StepReport r = evolver.step();
+    SW_CHECK(r.ok(), "ellipsoid flow step " << k << ": " << r.message);
+    if (!r.ok())
+    {
+      break;
+    }
+  }
+  const SurfaceGeometry g = evolver.geometry();
+  const auto [lo, hi] = std::minmax_element(g.coVolume.begin(), g.coVolume.end());
+  const std::vector<Vec3> x = evolver.positions();
+  double meanMin = 0;
+  for (const auto& t : mesh.triangles())
+  {
+    const auto a = triangleAngles(x[t[0]], x[t[1]], x[t[2]]);
+    meanMin += std::min({ a[0], a[1], a[2] });
+  }
+  meanMin /= mesh.triangleCount();
+  return { *hi / *lo, smallestAngle(mesh, x).angle * 180 / M_PI, meanMin * 180 / M_PI };
+}
+
+void redistributionDoesItsJob()
+{
+  const int steps = 300;
+  const Shape none = ellipsoidFlow(Redistribution::None, steps);
+  const Shape volume = ellipsoidFlow(Redistribution::Volume, steps);
+  const Shape angle = ellipsoidFlow(Redistribution::Angle, steps);
+  std::printf("ellipsoid (1, 0.5, 0.35) from an icosphere of level 3, MCF, %d steps of 1e-4, omega 1:\n", steps);
+  for (const auto& [name, shape] : { std::make_pair("none", none), std::make_pair("volume", volume),
+         std::make_pair("angle", angle) })
+  {
+    std::printf("  %-7s max/min co-volume %7.2f, min angle %5.2f deg, mean of triangles' min angles %5.2f deg\n",
+      name, shape.coVolumeRatio, shape.minAngleDegrees, shape.meanMinAngleDegrees);
+  }
+  SW_CHECK((none.coVolumeRatio - 1) >= 3 * (volume.coVolumeRatio - 1),
+    "volume-based redistribution evens co-volumes at least 3x better than none");
+  SW_CHECK(angle.minAngleDegrees > none.minAngleDegrees && angle.meanMinAngleDegrees > none.meanMinAngleDegrees,
+    "angle-based redistribution (omega_angle = 1) keeps the minimum angles higher");
+}
+
+void advection()
+{
+  // The signed distance of a unit sphere, from the project's own SDF (the lattice the filter writes).
+  const TriangleSurface target = icosphere(5);
+  TriangleSoup soup{ target.points, target.triangles };
+  GridLattice lattice;
+  placeGrid(soup.bounds(), GridPlacement{ 1.1, 0.6, 64, 0 }, lattice);
+  std::vector<float> values(lattice.nodeCount());
+  computeSignedDistance(soup, lattice, {}, values.data());
+  const DistanceGrid field(lattice, values);
+  const double h = lattice.spacing.x();
+
+  // A sphere of radius 2 moved by advection (C > 0) with little diffusion (C1 small).
+  const SurfaceMesh start = meshOf(icosphere(3, Vec3::Zero(), 2.0));
+  EvolverSettings settings = EvolverSettings::paper();
+  settings.timeStep = 0.02;
+  settings.C1 = 0.05;
+  settings.C2 = 1.0;
+  settings.C = 5.0;
+  settings.D = 0.0;
+  Evolver evolver(start, settings, &field, lattice.bounds());
+  for (int k = 0; k < 200; ++k)
+  {
+    const StepReport r = evolver.step();
+    SW_CHECK(r.ok(), "advection step: " << r.message);
+    if (!r.ok())
+    {
+      break;
+    }
+  }
+  double worst = 0;
+  for (const Vec3& x : evolver.positions())
+  {
+    worst = std::max(worst, std::abs(x.norm() - 1.0));
+  }
+  std::printf("advection: radius 2 -> max | |x| - 1 | = %.4f = %.3f h after 200 steps\n", worst, worst / h);
+  SW_CHECK(worst <= 0.5 * h, "the sphere settles on the unit sphere within 0.5 h");
+}
+
+void failureIsReported()
+{
+  const SurfaceMesh mesh = meshOf(icosphere(3));
+  EvolverSettings settings = EvolverSettings::paper();
+  settings.C2 = 0;
+  settings.C = 0;
+  settings.timeStep = 0.3; // r(t)^2 = 1 - 4t: the sphere vanishes at t = 0.25
+  Box domain;
+  domain.extend(Vec3::Constant(-2));
+  domain.extend(Vec3::Constant(2));
+  Evolver evolver(mesh, settings, nullptr, domain);
+  StepReport r;
+  int k = 0;
+  for (; k < 20 && r.ok(); ++k)
+  {
+    r = evolver.step();
+  }
+  std::printf("too large a step: %s\n", r.message.c_str());
+  SW_CHECK(!r.ok() && r.step >= 1 && r.step <= 20 && r.where >= 0 && !r.message.empty(),
+    "the failure is reported with its step and place");
+  bool finite = true;
+  for (const Vec3& x : evolver.positions())
+  {
+    finite = finite && x.allFinite();
+  }
+  SW_CHECK(finite && evolver.steps() == r.step - 1, "the last good surface is kept: no NaN escapes");
+}
+
+void scaledEvolution()
+{
+  // Mean curvature flow is scale covariant (y = phi x, t' = phi^2 t): evolving scaled coordinates with
+  // tau' = phi^2 tau gives the same surface, and the caller sees it in its own units. (The redistribution
+  // terms and eta are not covariant: omega_vol (A/N_V - |V_i|) and the angle velocity carry lengths, so
+  // the scale of Section 2.4 changes their effective weights, as the paper's stability study shows.)
+  const SurfaceMesh mesh = meshOf(icosphere(3, Vec3(0.5, -1, 2), 1.5));
+  EvolverSettings settings = EvolverSettings::paper();
+  settings.C2 = 0;
+  settings.C = 0;
+  settings.solverTolerance = 1e-13;
+  settings.timeStep = 0.002;
+  Evolver plain(mesh, settings);
+  const double phi = 3.7;
+  settings.timeStep *= phi * phi;
+  Evolver scaled(mesh, settings, nullptr, Box(), phi, Vec3(0.5, -1, 2));
+  for (int k = 0; k < 20; ++k)
+  {
+    plain.step();
+    scaled.step();
+  }
+  double worst = 0;
+  const auto a = plain.positions(), b = scaled.positions();
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    worst = std::max(worst, (a[i] - b[i]).norm());
+  }
+  SW_CHECK(worst < 1e-8 && std::abs(plain.time() - scaled.time()) < 1e-12,
+    "scaled evolution matches in the caller's units (" << worst << ")");
+}
+
+void leavingTheDomain()
+{
+  const SurfaceMesh mesh = meshOf(icosphere(2));
+  EvolverSettings settings = EvolverSettings::paper();
+  settings.C2 = 0;
+  settings.C = 0;
+  Box domain;
+  domain.extend(Vec3::Constant(-0.5));
+  domain.extend(Vec3::Constant(0.5));
+  Evolver evolver(mesh, settings, nullptr, domain);
+  const StepReport r = evolver.step();
+  SW_CHECK(r.failure == Failure::LeftDomain && r.step == 1 && r.where >= 0, "leaving the domain is reported: " << r.message);
+}
+
+void refusedSettings()
+{
+  const TriangleSurface tet{ { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
+    { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } } };
+  const SurfaceMesh mesh = meshOf(tet);
+  for (const auto& [what, change] : std::vector<std::pair<std::string, std::function<void(EvolverSettings&)>>>{
+         { "tau = 0", [](EvolverSettings& s) { s.timeStep = 0; } },
+         { "tau < 0", [](EvolverSettings& s) { s.timeStep = -0.1; } },
+         { "C1 < 0", [](EvolverSettings& s) { s.C1 = -1; } },
+         { "C < 0", [](EvolverSettings& s) { s.C = -1; } },
+         { "D < 0", [](EvolverSettings& s) { s.D = -1; } },
+         { "omega < 0", [](EvolverSettings& s) { s.omegaAngle = -1; } } })
+  {
+    EvolverSettings settings;
+    change(settings);
+    const Evolver evolver(mesh, settings);
+    SW_CHECK(!evolver.status(), what << " refused: " << evolver.status().message());
+  }
+}
+
+// The signed distance of a unit sphere on a 48-cell grid.
+DistanceGrid unitSphereField()
+{
+  const TriangleSurface target = icosphere(4);
+  GridLattice lattice;
+  placeGrid(target.bounds(), GridPlacement{ 1.1, 0.6, 48, 0 }, lattice);
+  std::vector<float> values(lattice.nodeCount());
+  computeSignedDistance(target, lattice, {}, values.data());
+  return DistanceGrid(lattice, values);
+}
+
+double largestDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
+{
+  double worst = a.size() == b.size() ? 0 : INFINITY;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    worst = std::max(worst, (a[i] - b[i]).norm());
+  }
+  return worst;
+}
+
+// Issue #9's bar for edits: split every edge of an icosphere once through the evolver, then step; the
+// result equals stepping that split surface given from the start (the filter's InitialSurface with
+// Initial Relaxation 0 takes the same path: WrapSession with a given surface). The scaled state is
+// interpolated rather than recomputed and phi is recomputed for the new count, so equal means to
+// rounding. And the cache accepts the edit: going back to a step after it and forward again gives the
+// same surface bit for bit.
+void splitsBetweenSteps()
+{
+  const DistanceGrid field = unitSphereField();
+  const TriangleSurface sphere = icosphere(2, Vec3::Zero(), 1.6);
+  SurfaceMesh split = meshOf(sphere);
+  splitEdges(split, edgesOf(split));
+  SW_CHECK(split.vertexCount() == 642 && split.triangleCount() == 1280, "every edge of level 2 split once: level 3's counts");
+  Box box;
+  box.extend(Vec3::Constant(-1));
+  box.extend(Vec3::Constant(1));
+  WrapSettings settings;
+  settings.evolution.solverTolerance = 1e-12; // rounding, not the solver's tolerance, is what may differ
+  const int steps = 30;
+  std::unique_ptr<WrapSession> edited, given;
+  SW_CHECK(WrapSession::create(field, box, meshOf(sphere), settings, edited), "session from the icosphere");
+  SW_CHECK(WrapSession::create(field, box, split, settings, given), "session from the split icosphere");
+  if (!edited || !given)
+  {
+    return;
+  }
+  SW_CHECK(edited->edit([](SurfaceMesh& mesh) { splitEdges(mesh, edgesOf(mesh)); }), "the split is accepted");
+  SW_CHECK(edited->evolver().mesh().triangles() == split.triangles(), "the same connectivity as the split surface");
+  edited->advanceTo(steps);
+  given->advanceTo(steps);
+  const std::vector<Vec3> a = edited->surface(steps).points, b = given->surface(steps).points;
+  const double difference = largestDistance(a, b);
+  std::printf("split every edge, then %d steps: %d vertices; largest difference from the split surface "
+              "given at the start %.3g (radius 1)\n", steps, static_cast<int>(a.size()), difference);
+  SW_CHECK(a.size() == b.size() && difference < 1e-8, "the edited evolution equals the given one");
+
+  // Mid-way: split at step 10 and go on to 25; against the same with a cache too small to keep more
+  // than step 0, the edit and the newest step, so that step 15 is recomputed from the edited step 10.
+  std::unique_ptr<WrapSession> once, again;
+  WrapSession::create(field, box, meshOf(sphere), settings, once);
+  settings.cacheMiB = 1e-6;
+  WrapSession::create(field, box, meshOf(sphere), settings, again);
+  for (WrapSession* s : { once.get(), again.get() })
+  {
+    s->advanceTo(10);
+    s->edit([](SurfaceMesh& mesh) { splitEdges(mesh, edgesOf(mesh)); });
+    s->advanceTo(25);
+  }
+  const int computed = again->computedSteps();
+  again->advanceTo(15);
+  SW_CHECK(again->computedSteps() == computed + 5, "step 15 was recomputed from the edited step 10");
+  SW_CHECK(largestDistance(once->surface(15).points, again->surface(15).points) == 0,
+    "resuming after an edit from the cache is bit for bit");
+}
+
+} // namespace
+
+int TestEvolver(int, char*[])
+{
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
+    redistributionDoesItsJob();
+    advection();
+    failureIsReported();
+    scaledEvolution();
+    leavingTheDomain();
+    refusedSettings();
+    splitsBetweenSteps();
+  });
+  return testing::finish("TestEvolver");
+}

@@ -1,0 +1,232 @@
+// Shrink Wrap with its default parameters on real meshes (CGAL's data set, Debian libcgal-demo) and the
+// paper's "bent chair" (Fig. 3: a deformed cube with holes), at subdivision levels 3 and 4, 200 steps:
+// no failure, a closed 2-manifold in one piece; on bunny00 and armadillo the median |d| within one cell
+// and fewer than 2% of triangles with a minimum angle below 20 degrees (issue #4's bar; CGAL's alpha
+// wrap at similar vertex counts has 5-17%). The 90th percentile of |d| is reported for every mesh, and
+// the other meshes' figures too. The same with D = 0.5. From the Offset Surface start, no failure
+// either, and on bunny00 and armadillo the median |d| within a quarter cell. Settings whose triangles
+// degenerate (D = 1, C2 = 0.1) run through with edge collapses.
+// Argument: the folder holding CGAL's data/meshes/*.off.
+#include "SurfaceMesh.h"
+#include "TestUtilities.h"
+#include "vtkShrinkWrapFilter.h"
+
+#include <vtkCellData.h>
+#include <vtkPolyDataConnectivityFilter.h>
+#include <vtkStringArray.h>
+
+#include <chrono>
+#include <functional>
+#include <utility>
+
+namespace
+{
+// A cube of 6 x 6 quads per face, without the middle 2 x 2 quads of its four side faces, bent.
+vtkSmartPointer<vtkPolyData> bentChair()
+{
+  const int n = 6;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> quads;
+  auto corner = [&](int face, int u, int v) {
+    const double a = -0.5 + static_cast<double>(u) / n, b = -0.5 + static_cast<double>(v) / n;
+    double p[3];
+    switch (face)
+    {
+      case 0: p[0] = -0.5; p[1] = b; p[2] = a; break;
+      case 1: p[0] = 0.5; p[1] = a; p[2] = b; break;
+      case 2: p[0] = a; p[1] = -0.5; p[2] = b; break;
+      case 3: p[0] = b; p[1] = 0.5; p[2] = a; break;
+      case 4: p[0] = b; p[1] = a; p[2] = -0.5; break;
+      default: p[0] = a; p[1] = b; p[2] = 0.5; break;
+    }
+    // The bend: the top leans over, the seat sags.
+    p[0] += 0.35 * (p[2] + 0.5) * (p[2] + 0.5);
+    p[2] -= 0.2 * (0.25 - p[0] * p[0]);
+    return points->InsertNextPoint(p);
+  };
+  for (int face = 0; face < 6; ++face)
+  {
+    for (int u = 0; u < n; ++u)
+    {
+      for (int v = 0; v < n; ++v)
+      {
+        const bool hole = face < 4 && u >= 2 && u < 4 && v >= 2 && v < 4;
+        if (!hole)
+        {
+          const vtkIdType q[4] = { corner(face, u, v), corner(face, u + 1, v), corner(face, u + 1, v + 1),
+            corner(face, u, v + 1) };
+          quads->InsertNextCell(4, q);
+        }
+      }
+    }
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points); // duplicated points along face seams: the triangle soup welds them
+  mesh->SetPolys(quads);
+  return mesh;
+}
+
+struct Figures
+{
+  double median = 0, p90 = 0, smallAngles = 0, seconds = 0;
+  bool ok = false, closed = false;
+  int pieces = 0;
+  vtkIdType vertices = 0;
+};
+
+// The default wrap of `target`, with the settings `set` changes.
+Figures wrap(vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)>& set)
+{
+  vtkNew<vtkShrinkWrapFilter> filter;
+  filter->SetInputData(target);
+  set(filter);
+  const auto start = std::chrono::steady_clock::now();
+  filter->Update();
+  Figures f;
+  f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  vtkPolyData* out = filter->GetOutput();
+  auto* status = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray("Status"));
+  f.ok = status && status->GetValue(0) == "ok" && out->GetNumberOfPoints() > 0;
+  f.vertices = out->GetNumberOfPoints();
+  if (out->GetNumberOfPoints() == 0)
+  {
+    return f;
+  }
+  // The field's cell: 3.3 times the largest side of the target over Resolution 120.
+  double b[6];
+  target->GetBounds(b);
+  const double h = 3.3 * std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] }) / 120;
+  std::vector<double> d;
+  vtkDataArray* distance = out->GetPointData()->GetArray("Distance");
+  for (vtkIdType i = 0; i < distance->GetNumberOfTuples(); ++i)
+  {
+    d.push_back(std::abs(distance->GetTuple1(i)) / h);
+  }
+  std::sort(d.begin(), d.end());
+  f.median = d[d.size() / 2];
+  f.p90 = d[d.size() * 9 / 10];
+  vtkDataArray* angles = out->GetCellData()->GetArray("MinAngle");
+  int small = 0;
+  for (vtkIdType t = 0; t < angles->GetNumberOfTuples(); ++t)
+  {
+    small += angles->GetTuple1(t) < 20.0;
+  }
+  f.smallAngles = 100.0 * small / angles->GetNumberOfTuples();
+  std::vector<shrinkwrap::Vec3> x(out->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    out->GetPoint(i, x[i].data());
+  }
+  shrinkwrap::SurfaceMesh mesh;
+  std::string error;
+  f.closed = testing::builds(x, testing::triangulated(out).triangles, mesh, error);
+  vtkNew<vtkPolyDataConnectivityFilter> pieces;
+  pieces->SetInputData(out);
+  pieces->SetExtractionModeToAllRegions();
+  pieces->Update();
+  f.pieces = pieces->GetNumberOfExtractedRegions();
+  return f;
+}
+} // namespace
+
+int TestShrinkWrapCGALMeshes(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    std::cerr << "usage: TestShrinkWrapCGALMeshes <CGAL data/meshes folder>" << std::endl;
+    return EXIT_FAILURE;
+  }
+  const std::string folder = argv[1];
+  std::printf("%-30s %-8s %-8s %-12s %-14s %-14s %-8s\n", "mesh", "start", "status", "median |d|", "90th pct |d|",
+    "min angle<20", "seconds");
+  const auto report = [](const std::string& label, const std::string& start, const Figures& f) {
+    std::printf("%-30s %-8s %-8s %6.2f h     %6.2f h       %6.1f %%       %.2f\n", label.c_str(), start.c_str(),
+      f.ok ? "ok" : "FAILED", f.median, f.p90, f.smallAngles, f.seconds);
+    SW_CHECK(f.ok, label << " from " << start << ": 200 steps without failure");
+    SW_CHECK(f.closed && f.pieces == 1,
+      label << " from " << start << ": a closed 2-manifold in one piece (" << f.pieces << " pieces)");
+  };
+  for (const std::string name : { "bunny00", "armadillo", "elephant-with-holes", "knot1", "bent chair" })
+  {
+    vtkSmartPointer<vtkPolyData> target = name == "bent chair" ? bentChair() : testing::readOFF(folder + "/" + name + ".off");
+    SW_CHECK(target != nullptr, name << " found in " << folder);
+    if (!target)
+    {
+      continue;
+    }
+    const bool bar = name == "bunny00" || name == "armadillo";
+    // D = 0 is the default (paper Fig. 11); D = 0.5, stable with edge flips, is what the README
+    // recommends for closer wraps, so it is held to the same bars.
+    for (const double D : { 0.0, 0.5 })
+    {
+      for (int level : { 3, 4 })
+      {
+        const Figures f = wrap(target, [&](vtkShrinkWrapFilter* w) {
+          w->SetSubdivisionLevel(level);
+          w->SetD(D);
+        });
+        const std::string label = name + (D > 0 ? " D=0.5" : "");
+        report(label, "s=" + std::to_string(level), f);
+        SW_CHECK(!bar || f.median <= 1.0, label << " s=" << level << ": median |d| within one cell");
+        SW_CHECK(!bar || f.smallAngles < 2.0,
+          label << " s=" << level << ": fewer than 2% of triangles with an angle below 20 degrees");
+      }
+    }
+    // The Offset Surface start (the paper's Section 5) wraps concave parts too: a quarter cell.
+    const Figures f = wrap(target, [](vtkShrinkWrapFilter* w) { w->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE); });
+    report(name, "offset", f);
+    SW_CHECK(!bar || (f.median <= 0.25 && f.smallAngles < 2.0),
+      name << " from the offset surface: median |d| within a quarter cell, fewer than 2% below 20 degrees");
+  }
+
+  // Settings where triangles degenerate as the surface is pulled into pockets (D = 1; C2 = 0.1 on the
+  // open elephant): edge collapses keep the run going, with a few vertices fewer than the 642 it began
+  // with.
+  const std::pair<std::string, std::function<void(vtkShrinkWrapFilter*)>> hard[] = {
+    { "armadillo D=1", [](vtkShrinkWrapFilter* w) { w->SetD(1.0); } },
+    { "elephant-with-holes C2=0.1", [](vtkShrinkWrapFilter* w) { w->SetC2(0.1); } },
+  };
+  for (const auto& entry : hard)
+  {
+    const std::string mesh = entry.first.substr(0, entry.first.find(' '));
+    const Figures f = wrap(testing::readOFF(folder + "/" + mesh + ".off"), entry.second);
+    report(entry.first, "s=3", f);
+    SW_CHECK(f.vertices < 642, entry.first << ": edges were collapsed (" << f.vertices << " vertices)");
+  }
+
+  // Cached steps then differ in vertex count: a step recomputed from a thinned cache (1 MiB) is still
+  // exactly the step of a fresh run.
+  vtkSmartPointer<vtkPolyData> armadillo = testing::readOFF(folder + "/armadillo.off");
+  const auto surfaceAt = [&](vtkShrinkWrapFilter* w, int step) {
+    w->UpdateTimeStep(step * w->GetTimeStep());
+    vtkPolyData* out = w->GetOutput();
+    std::vector<double> values;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      const double* p = out->GetPoint(i);
+      values.insert(values.end(), p, p + 3);
+    }
+    for (const auto& t : testing::triangulated(out).triangles)
+    {
+      values.insert(values.end(), t.begin(), t.end());
+    }
+    return std::make_pair(out->GetNumberOfPoints(), values);
+  };
+  vtkNew<vtkShrinkWrapFilter> thinned, fresh;
+  for (vtkShrinkWrapFilter* w : { thinned.Get(), fresh.Get() })
+  {
+    w->SetInputData(armadillo);
+    w->SetD(1.0);
+  }
+  thinned->SetCacheMemoryLimit(1);
+  const auto last = surfaceAt(thinned, 200);
+  const auto again = surfaceAt(thinned, 150);
+  const auto expected = surfaceAt(fresh, 150);
+  std::printf("armadillo D=1: %lld vertices at step 150, %lld at step 200; %d steps computed in all with a "
+              "1 MiB cache\n", static_cast<long long>(expected.first), static_cast<long long>(last.first),
+    thinned->GetNumberOfComputedSteps());
+  SW_CHECK(last.first < expected.first, "steps 150 and 200 differ in vertex count (collapses between them)");
+  SW_CHECK(thinned->GetNumberOfComputedSteps() > 200, "step 150 was recomputed from a kept step");
+  SW_CHECK(again == expected, "the recomputed step 150 equals a fresh run's");
+  return testing::finish("TestShrinkWrapCGALMeshes");
+}

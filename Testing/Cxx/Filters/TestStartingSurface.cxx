@@ -1,0 +1,270 @@
+// A contour of the distance field as the starting surface (the paper's Section 5: "start the evolution
+// by generating a contour surface of distance function d ... after tangentially relaxing triangle
+// vertices", so that the holes of a target of higher genus stay open):
+// - removeSpecks drops the components smaller than the size asked, and only those;
+// - relaxTangentially turns a marching-cubes contour's slivers into good triangles, keeps it closed
+//   and keeps its vertices near the level set;
+// - the filter wraps a torus from a contour, keeping the hole (Euler characteristic 0) where the
+//   icosphere closes it over (2), and starts from the relaxed contour;
+// - the Offset Surface start does the same by itself, and closes the hole over when it is narrower
+//   than 2 (StartOffset + StartClosing) cells.
+#include "Components.h"
+#include "Icosphere.h"
+#include "Relaxation.h"
+#include "StartingSurface.h"
+#include "SurfaceGeometry.h"
+#include "TestUtilities.h"
+#include "vtkMeshSignedDistance.h"
+#include "vtkShrinkWrapFilter.h"
+
+#include <vtkContourFilter.h>
+#include <vtkCellData.h>
+#include <vtkFieldData.h>
+#include <vtkStringArray.h>
+
+#include <algorithm>
+
+namespace
+{
+using shrinkwrap::Vec3;
+
+constexpr double R = 1.0, r = 0.35; // the torus: ring radius and tube radius
+
+double torusDistance(const Vec3& p)
+{
+  return std::hypot(std::hypot(p.x(), p.y()) - R, p.z()) - r;
+}
+
+// A closed triangulated torus, nu x nv quads split in two.
+vtkSmartPointer<vtkPolyData> torus(int nu = 96, int nv = 32)
+{
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
+      points->InsertNextPoint((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+    }
+  }
+  vtkNew<vtkCellArray> triangles;
+  const auto id = [nu, nv](int i, int j) { return static_cast<vtkIdType>((i % nu) * nv + j % nv); };
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      const vtkIdType a[3] = { id(i, j), id(i + 1, j), id(i + 1, j + 1) };
+      const vtkIdType b[3] = { id(i, j), id(i + 1, j + 1), id(i, j + 1) };
+      triangles->InsertNextCell(3, a);
+      triangles->InsertNextCell(3, b);
+    }
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(triangles);
+  return mesh;
+}
+
+// The surface of a vtkPolyData of triangles.
+shrinkwrap::TriangleSurface surfaceOf(vtkPolyData* mesh)
+{
+  return testing::triangulated(mesh);
+}
+
+std::string statusOf(vtkPolyData* mesh)
+{
+  auto status = vtkStringArray::SafeDownCast(mesh->GetFieldData()->GetAbstractArray("Status"));
+  return status ? status->GetValue(0) : std::string();
+}
+
+void removesSpecks()
+{
+  shrinkwrap::TriangleSurface s = shrinkwrap::icosphere(2, Vec3(0, 0, 0), 1.0);
+  const auto append = [&s](const shrinkwrap::TriangleSurface& more) {
+    const int offset = static_cast<int>(s.points.size());
+    s.points.insert(s.points.end(), more.points.begin(), more.points.end());
+    for (auto t : more.triangles)
+    {
+      s.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+    }
+  };
+  append(shrinkwrap::icosphere(1, Vec3(3, 0, 0), 0.04));  // a speck: 0.08 across
+  append(shrinkwrap::icosphere(1, Vec3(-3, 0, 0), 0.06)); // 0.12 across: kept
+  const int removed = shrinkwrap::removeSpecks(s, 0.1);
+  SW_CHECK(removed == 1, "one speck removed (" << removed << ")");
+  SW_CHECK(s.points.size() == 162 + 42 && s.triangles.size() == 320 + 80, "the other two pieces kept");
+  shrinkwrap::SurfaceMesh mesh;
+  std::string error;
+  SW_CHECK(testing::builds(s.points, s.triangles, mesh, error), "still closed: " << error);
+  SW_CHECK(shrinkwrap::removeSpecks(s, 0.1) == 0, "nothing more to remove");
+
+  // A cavity: a smaller sphere inside, facing inwards. A second object beside it faces outwards.
+  shrinkwrap::TriangleSurface cavity = shrinkwrap::icosphere(1, Vec3(0, 0, 0), 0.5);
+  for (auto& t : cavity.triangles)
+  {
+    std::swap(t[1], t[2]);
+  }
+  append(cavity);
+  SW_CHECK(shrinkwrap::removeCavities(s) == 1 && s.points.size() == 162 + 42 && s.triangles.size() == 400,
+    "the cavity's wall is removed, the two outer pieces kept");
+}
+
+// The level set d = 0.1 of the torus, sampled on a 0.05 grid, by marching cubes.
+vtkSmartPointer<vtkPolyData> torusContour(double level, double h)
+{
+  vtkNew<vtkImageData> grid;
+  const int n[3] = { static_cast<int>(2 * (R + r + 0.3) / h) + 1, n[0], static_cast<int>(2 * (r + 0.3) / h) + 1 };
+  grid->SetDimensions(n[0], n[1], n[2]);
+  grid->SetSpacing(h, h, h);
+  grid->SetOrigin(-(n[0] - 1) * h / 2, -(n[1] - 1) * h / 2, -(n[2] - 1) * h / 2);
+  vtkNew<vtkFloatArray> d;
+  d->SetName("d");
+  d->SetNumberOfTuples(grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    Vec3 p;
+    grid->GetPoint(i, p.data());
+    d->SetValue(i, static_cast<float>(torusDistance(p)));
+  }
+  grid->GetPointData()->SetScalars(d);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputData(grid);
+  contour->SetValue(0, level);
+  contour->Update();
+  return contour->GetOutput();
+}
+
+void relaxesAContour()
+{
+  const double h = 0.05, level = 0.1;
+  shrinkwrap::TriangleSurface s = surfaceOf(torusContour(level, h));
+  shrinkwrap::SurfaceMesh mesh;
+  std::string error;
+  SW_CHECK(testing::builds(s.points, s.triangles, mesh, error), "the contour is closed: " << error);
+  const double before = shrinkwrap::smallestAngle(mesh, s.points).angle;
+  shrinkwrap::SurfaceMesh relaxed = mesh;
+  shrinkwrap::relaxTangentially(relaxed, shrinkwrap::RelaxSettings());
+  const std::vector<Vec3>& x = relaxed.points();
+  const double after = shrinkwrap::smallestAngle(relaxed, x).angle;
+  double drift = 0;
+  for (const Vec3& p : x)
+  {
+    drift = std::max(drift, std::abs(torusDistance(p) - level));
+  }
+  std::cout << "contour of " << s.points.size() << " vertices: smallest angle " << before * 180 / M_PI
+            << " -> " << after * 180 / M_PI << " degrees; largest drift off the level set " << drift / h
+            << " h" << std::endl;
+  SW_CHECK(before < 1 * M_PI / 180, "marching cubes leaves slivers");
+  SW_CHECK(after > 15 * M_PI / 180, "relaxed: no triangle angle below 15 degrees");
+  SW_CHECK(drift < 0.1 * h, "the relaxed vertices stay within 0.1 h of the level set");
+  SW_CHECK(relaxed.vertexCount() == mesh.vertexCount(), "no vertex added or lost");
+}
+
+int eulerCharacteristic(vtkPolyData* surface)
+{
+  return static_cast<int>(surface->GetNumberOfPoints() - surface->GetNumberOfCells() / 2);
+}
+
+void wrapsATorusFromAContour()
+{
+  vtkSmartPointer<vtkPolyData> target = torus();
+  vtkNew<vtkMeshSignedDistance> field;
+  field->SetInputData(target);
+  field->SetResolution(60);
+  field->Update();
+  const double h = field->GetOutput()->GetSpacing()[0];
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(field->GetOutputPort());
+  contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
+  contour->SetValue(0, 3 * h);
+
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputData(target);
+  wrap->SetDistanceFieldConnection(field->GetOutputPort());
+  wrap->SetInitialSurfaceConnection(contour->GetOutputPort());
+  wrap->Update();
+  vtkPolyData* out = wrap->GetOutput();
+  vtkDataArray* distance = out->GetPointData()->GetArray("Distance");
+  std::vector<double> d;
+  for (vtkIdType i = 0; distance && i < distance->GetNumberOfTuples(); ++i)
+  {
+    d.push_back(std::abs(distance->GetTuple1(i)));
+  }
+  std::sort(d.begin(), d.end());
+  const double median = d.empty() ? 1e9 : d[d.size() / 2];
+  std::cout << "torus from a contour at 3 h: " << statusOf(out) << ", " << out->GetNumberOfPoints()
+            << " vertices, Euler characteristic " << eulerCharacteristic(out) << ", median |d| "
+            << median / h << " h" << std::endl;
+  SW_CHECK(statusOf(out) == "ok", "200 steps from the contour");
+  SW_CHECK(eulerCharacteristic(out) == 0, "the hole stays open");
+  SW_CHECK(median < 0.25 * h, "the wrap lies on the torus (median |d| < h / 4)");
+
+  vtkNew<vtkShrinkWrapFilter> sphere;
+  sphere->SetInputData(target);
+  sphere->SetDistanceFieldConnection(field->GetOutputPort());
+  sphere->Update();
+  SW_CHECK(eulerCharacteristic(sphere->GetOutput()) == 2, "from the icosphere the hole is spanned over");
+
+  // Step 0 is the relaxed contour; with InitialRelaxation 0, the contour as given (with its slivers).
+  const auto smallestAngleAtStart = [&wrap] {
+    wrap->UpdateTimeStep(0);
+    vtkDataArray* angles = wrap->GetOutput()->GetCellData()->GetArray("MinAngle");
+    return angles ? angles->GetRange()[0] : -1.0;
+  };
+  const double relaxed = smallestAngleAtStart();
+  wrap->SetInitialRelaxation(0);
+  const double given = smallestAngleAtStart();
+  std::cout << "smallest angle at step 0: " << given << " degrees as given, " << relaxed << " relaxed" << std::endl;
+  SW_CHECK(relaxed > 15 && given >= 0 && given < 5, "the filter relaxes the InitialSurface before it evolves");
+}
+
+// The Offset Surface start: the torus's hole (1.3 across) stays open while it is wider than
+// 2 (StartOffset + StartClosing) cells and is filled when it is narrower.
+void wrapsATorusFromItsOffset()
+{
+  vtkSmartPointer<vtkPolyData> target = torus();
+  for (const int resolution : { 120, 60 })
+  {
+    vtkNew<vtkShrinkWrapFilter> wrap;
+    wrap->SetInputData(target);
+    wrap->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
+    wrap->SetResolution(resolution);
+    wrap->Update();
+    vtkPolyData* out = wrap->GetOutput();
+    vtkDataArray* distance = out->GetPointData()->GetArray("Distance");
+    double largest = 0;
+    for (vtkIdType i = 0; distance && i < distance->GetNumberOfTuples(); ++i)
+    {
+      largest = std::max(largest, std::abs(distance->GetTuple1(i)));
+    }
+    vtkNew<vtkMeshSignedDistance> field; // the same lattice as the filter's own field
+    field->SetInputData(target);
+    field->SetResolution(resolution);
+    field->Update();
+    const double h = field->GetOutput()->GetSpacing()[0];
+    const double gap = 2 * (wrap->GetStartOffset() + wrap->GetStartClosing()) * h;
+    std::cout << "torus from its offset surface, Resolution " << resolution << ": " << statusOf(out) << ", "
+              << out->GetNumberOfPoints() << " vertices, Euler characteristic " << eulerCharacteristic(out)
+              << ", largest |d| " << largest / h << " h; gaps up to " << gap << " are filled" << std::endl;
+    SW_CHECK(statusOf(out) == "ok", "200 steps from the offset surface");
+    if (gap < 2 * (R - r))
+    {
+      SW_CHECK(eulerCharacteristic(out) == 0 && largest < 0.5 * h, "the hole stays open, the wrap on the torus");
+    }
+    else
+    {
+      SW_CHECK(eulerCharacteristic(out) == 2, "the narrower hole is closed over");
+    }
+  }
+}
+
+} // namespace
+
+int TestStartingSurface(int, char*[])
+{
+  removesSpecks();
+  relaxesAContour();
+  wrapsATorusFromAContour();
+  wrapsATorusFromItsOffset();
+  return testing::finish("TestStartingSurface");
+}

@@ -7,6 +7,10 @@
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkIntArray.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
@@ -16,6 +20,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolygon.h>
+#include <vtkStringArray.h>
 
 #include <algorithm>
 #include <cmath>
@@ -369,6 +374,23 @@ void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const Dis
   output->SetPolys(triangles);
   addPointArrays(x, mesh, field, tangentialVelocity, output);
   addCellArrays(x, mesh, output);
+}
+
+void addStepFields(int step, double time, const std::string& status, vtkPolyData* output)
+{
+  vtkNew<vtkIntArray> stepIndex;
+  stepIndex->SetName("StepIndex");
+  stepIndex->InsertNextValue(step);
+  vtkNew<vtkDoubleArray> times;
+  times->SetName("Time");
+  times->InsertNextValue(time);
+  vtkNew<vtkStringArray> statuses;
+  statuses->SetName("Status");
+  statuses->InsertNextValue(status);
+  output->GetFieldData()->AddArray(stepIndex);
+  output->GetFieldData()->AddArray(times);
+  output->GetFieldData()->AddArray(statuses);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
 }
 
 } // namespace convert

@@ -12,6 +12,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <string>
 #include <vector>
 
 class vtkDataObject;
@@ -63,6 +64,9 @@ TriangleSurface contour(const DistanceGrid& grid, double value);
 // JacobianCondition (see vtkShrinkWrapFilter.h).
 void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const DistanceGrid& field,
   const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output);
+
+// Field data of the wrap's output: StepIndex, Time and Status; and the output's DATA_TIME_STEP.
+void addStepFields(int step, double time, const std::string& status, vtkPolyData* output);
 
 } // namespace convert
 } // namespace shrinkwrap

@@ -168,7 +168,7 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* input, shrinkwrap::Triangle
   }
   if (const shrinkwrap::Status status = shrinkwrap::checkSoup(soup); !status)
   {
-    vtkErrorMacro("The input has no distance field: " << status.message() << ".");
+    vtkErrorMacro("Cannot measure distances: " << status.message() << ".");
     return false;
   }
   bounds = convert::surfaceBounds(meshes);

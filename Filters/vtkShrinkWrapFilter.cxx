@@ -5,16 +5,12 @@
 #include "VTKConversions.h"
 #include "WrapSession.h"
 
-#include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkStringArray.h"
 
 #include <cmath>
 
@@ -365,19 +361,8 @@ void vtkShrinkWrapFilter::WriteOutput(int wanted, vtkPolyData* output)
     return;
   }
   convert::writeSurface(surface.points, mesh, s.field(), surface.cached->tangentialVelocity, output);
-  vtkNew<vtkIntArray> stepIndex;
-  stepIndex->SetName("StepIndex");
-  stepIndex->InsertNextValue(surface.step);
-  vtkNew<vtkDoubleArray> time;
-  time->SetName("Time");
-  time->InsertNextValue(surface.step * this->TimeStep);
-  vtkNew<vtkStringArray> status;
-  status->SetName("Status");
-  status->InsertNextValue(s.lastGood() >= 0 && wanted > s.lastGood() ? "failed: " + s.failure() : std::string("ok"));
-  output->GetFieldData()->AddArray(stepIndex);
-  output->GetFieldData()->AddArray(time);
-  output->GetFieldData()->AddArray(status);
-  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), surface.step * this->TimeStep);
+  convert::addStepFields(surface.step, surface.step * this->TimeStep,
+    s.lastGood() >= 0 && wanted > s.lastGood() ? "failed: " + s.failure() : std::string("ok"), output);
 }
 
 void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)

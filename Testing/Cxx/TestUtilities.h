@@ -76,6 +76,17 @@ inline shrinkwrap::SurfaceMesh meshOf(const shrinkwrap::IndexedTriangles& surfac
   return mesh;
 }
 
+// The cell of the distance field Shrink Wrap computes for a target at a Resolution (the same placement
+// as the filter's, not a restatement of it).
+inline double fieldCell(vtkPolyData* target, int resolution)
+{
+  shrinkwrap::GridPlacement placement;
+  placement.resolution = resolution;
+  shrinkwrap::GridLattice lattice;
+  shrinkwrap::placeGrid(shrinkwrap::convert::surfaceBounds({ target }), placement, lattice);
+  return lattice.spacing.maxCoeff();
+}
+
 // A mesh in OFF format (CGAL's data set) as vtkPolyData with its polygons as they are.
 inline vtkSmartPointer<vtkPolyData> readOFF(const std::string& path)
 {

@@ -181,14 +181,14 @@ std::string gibibytes(double bytes)
 Status checkSoup(const TriangleSoup& soup)
 {
   if (soup.triangles.empty())
-    return Status::failure("there are no polygons or triangle strips: no surface to measure from");
+    return Status::failure("the mesh has no polygons or triangle strips, so no surface to measure from");
   if (!soup.allFinite())
-    return Status::failure("there are NaN or infinite point coordinates; fix or remove those points first");
+    return Status::failure("the mesh has NaN or infinite point coordinates; fix or remove those points first");
   if (!withinCoordinateRange(soup.bounds()))
-    return Status::failure("there are coordinates beyond +-1e30, which distances in float cannot hold; "
-                           "scale or translate the mesh first");
+    return Status::failure("the mesh has coordinates beyond +-1e30, which distances in float cannot hold; "
+                           "scale or translate it first");
   if (!(soup.maxTriangleArea() > 0))
-    return Status::failure("every triangle is degenerate (zero area): there is no surface");
+    return Status::failure("every triangle of the mesh is degenerate (zero area): there is no surface");
   return {};
 }
 

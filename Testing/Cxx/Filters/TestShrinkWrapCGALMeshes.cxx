@@ -92,10 +92,7 @@ Figures wrap(vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)
   {
     return f;
   }
-  // The field's cell: 3.3 times the largest side of the target over Resolution 120.
-  double b[6];
-  target->GetBounds(b);
-  const double h = 3.3 * std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] }) / 120;
+  const double h = testing::fieldCell(target, 120);
   std::vector<double> d;
   vtkDataArray* distance = out->GetPointData()->GetArray("Distance");
   for (vtkIdType i = 0; i < distance->GetNumberOfTuples(); ++i)

@@ -95,7 +95,7 @@ int errorsWhile(vtkAlgorithm* filter, const std::function<void()>& run)
 }
 
 // A plain update: the last step, a closed one-piece surface with its arrays, near the target.
-void lastStep(vtkShrinkWrapFilter* wrap)
+void lastStep(vtkShrinkWrapFilter* wrap, vtkPolyData* box)
 {
   wrap->SetNumberOfSteps(60);
   wrap->SetResolution(64);
@@ -145,7 +145,7 @@ void lastStep(vtkShrinkWrapFilter* wrap)
     d.push_back(std::abs(distance->GetTuple1(i)));
   }
   std::sort(d.begin(), d.end());
-  const double h = 3.3 * 2.0 / 64; // the field's cell: 3.3 times the box's largest side over 64 cells
+  const double h = testing::fieldCell(box, 64);
   std::printf("after 60 steps: median |d| = %.3f h, 90th percentile %.3f h\n", d[d.size() / 2] / h, d[d.size() * 9 / 10] / h);
   SW_CHECK(d[d.size() / 2] < 2 * h, "the surface approaches the target");
 }
@@ -431,7 +431,7 @@ int TestShrinkWrapFilter(int, char*[])
   vtkSmartPointer<vtkPolyData> box = target();
   vtkNew<vtkShrinkWrapFilter> wrap;
   wrap->SetInputData(box);
-  lastStep(wrap);
+  lastStep(wrap, box);
   const std::vector<double> middle = stepsAndCache(wrap, box);
   cacheWithFlips();
   editsAndAbortsWhileRunning(box);

@@ -1,14 +1,12 @@
 // A contour of the distance field as the starting surface (the paper's Section 5: "start the evolution
 // by generating a contour surface of distance function d ... after tangentially relaxing triangle
 // vertices", so that the holes of a target of higher genus stay open):
-// - removeSpecks drops the components smaller than the size asked, and only those;
 // - relaxTangentially turns a marching-cubes contour's slivers into good triangles, keeps it closed
 //   and keeps its vertices near the level set;
 // - the filter wraps a torus from a contour, keeping the hole (Euler characteristic 0) where the
 //   icosphere closes it over (2), and starts from the relaxed contour;
 // - the Offset Surface start does the same by itself, and closes the hole over when it is narrower
 //   than 2 (StartOffset + StartClosing) cells.
-#include "Components.h"
 #include "Icosphere.h"
 #include "Relaxation.h"
 #include "StartingSurface.h"
@@ -77,37 +75,6 @@ std::string statusOf(vtkPolyData* mesh)
   return status ? status->GetValue(0) : std::string();
 }
 
-void removesSpecks()
-{
-  shrinkwrap::TriangleSurface s = shrinkwrap::icosphere(2, Vec3(0, 0, 0), 1.0);
-  const auto append = [&s](const shrinkwrap::TriangleSurface& more) {
-    const int offset = static_cast<int>(s.points.size());
-    s.points.insert(s.points.end(), more.points.begin(), more.points.end());
-    for (auto t : more.triangles)
-    {
-      s.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
-    }
-  };
-  append(shrinkwrap::icosphere(1, Vec3(3, 0, 0), 0.04));  // a speck: 0.08 across
-  append(shrinkwrap::icosphere(1, Vec3(-3, 0, 0), 0.06)); // 0.12 across: kept
-  const int removed = shrinkwrap::removeSpecks(s, 0.1);
-  SW_CHECK(removed == 1, "one speck removed (" << removed << ")");
-  SW_CHECK(s.points.size() == 162 + 42 && s.triangles.size() == 320 + 80, "the other two pieces kept");
-  shrinkwrap::SurfaceMesh mesh;
-  std::string error;
-  SW_CHECK(testing::builds(s.points, s.triangles, mesh, error), "still closed: " << error);
-  SW_CHECK(shrinkwrap::removeSpecks(s, 0.1) == 0, "nothing more to remove");
-
-  // A cavity: a smaller sphere inside, facing inwards. A second object beside it faces outwards.
-  shrinkwrap::TriangleSurface cavity = shrinkwrap::icosphere(1, Vec3(0, 0, 0), 0.5);
-  for (auto& t : cavity.triangles)
-  {
-    std::swap(t[1], t[2]);
-  }
-  append(cavity);
-  SW_CHECK(shrinkwrap::removeCavities(s) == 1 && s.points.size() == 162 + 42 && s.triangles.size() == 400,
-    "the cavity's wall is removed, the two outer pieces kept");
-}
 
 // The level set d = 0.1 of the torus, sampled on a 0.05 grid, by marching cubes.
 vtkSmartPointer<vtkPolyData> torusContour(double level, double h)
@@ -262,7 +229,6 @@ void wrapsATorusFromItsOffset()
 
 int TestStartingSurface(int, char*[])
 {
-  removesSpecks();
   relaxesAContour();
   wrapsATorusFromAContour();
   wrapsATorusFromItsOffset();

@@ -32,8 +32,43 @@ namespace convert
 
 namespace
 {
-// Appends a mesh to the paper's triangle soup: polygons of any size (ear-cut by vtkPolygon when
-// n > 3) and strips. Cells naming points that do not exist are counted in badCells and left out.
+// Calls visit(n, ids) for every cell of a cell array.
+template <typename Visit>
+void forEachCell(vtkCellArray* cells, Visit&& visit)
+{
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    visit(n, ids);
+  }
+}
+
+// Triangles of a polygon: ear-cut by vtkPolygon, or a fan where ear cutting fails (degenerate
+// polygons, which still have their distances).
+template <typename Add>
+void triangulatePolygon(vtkIdType n, const vtkIdType* ids, vtkPoints* points, vtkPolygon* polygon,
+  vtkIdList* corners, Add&& addTriangle)
+{
+  polygon->Initialize(n, ids, points);
+  if (polygon->Triangulate(corners) && corners->GetNumberOfIds() > 0)
+  {
+    for (vtkIdType k = 0; k + 2 < corners->GetNumberOfIds(); k += 3)
+    {
+      addTriangle(ids[corners->GetId(k)], ids[corners->GetId(k + 1)], ids[corners->GetId(k + 2)]);
+    }
+    return;
+  }
+  for (vtkIdType k = 1; k + 1 < n; ++k)
+  {
+    addTriangle(ids[0], ids[k], ids[k + 1]);
+  }
+}
+
+// Appends a mesh to the paper's triangle soup: polygons of any size and strips. Cells naming points
+// that do not exist are counted in badCells and left out.
 void appendToSoup(vtkPolyData* input, TriangleSoup& soup, long long& badCells)
 {
   vtkPoints* points = input->GetPoints();
@@ -55,77 +90,34 @@ void appendToSoup(vtkPolyData* input, TriangleSoup& soup, long long& badCells)
   };
   vtkNew<vtkPolygon> polygon;
   vtkNew<vtkIdList> corners;
-  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    polys->GetCurrentCell(n, ids);
-    if (!valid(n, ids))
+  forEachCell(input->GetPolys(), [&](vtkIdType n, const vtkIdType* ids) {
+    if (!valid(n, ids) || n < 3)
     {
-      continue;
+      return;
     }
     if (n == 3)
     {
       addTriangle(ids[0], ids[1], ids[2]);
-      continue;
+      return;
     }
-    if (n < 3)
+    triangulatePolygon(n, ids, points, polygon, corners, addTriangle);
+  });
+  forEachCell(input->GetStrips(), [&](vtkIdType n, const vtkIdType* ids) {
+    const bool ok = valid(n, ids);
+    for (vtkIdType k = 0; ok && k + 2 < n; ++k) // strips alternate orientation
     {
-      continue;
-    }
-    polygon->Initialize(n, ids, points);
-    if (polygon->Triangulate(corners) && corners->GetNumberOfIds() > 0)
-    {
-      for (vtkIdType k = 0; k + 2 < corners->GetNumberOfIds(); k += 3)
-      {
-        addTriangle(ids[corners->GetId(k)], ids[corners->GetId(k + 1)], ids[corners->GetId(k + 2)]);
-      }
-    }
-    else
-    {
-      // Ear cutting fails on degenerate polygons; a fan still has their distances.
-      for (vtkIdType k = 1; k + 1 < n; ++k)
-      {
-        addTriangle(ids[0], ids[k], ids[k + 1]);
-      }
-    }
-  }
-  vtkNew<vtkCellArray> stripTriangles;
-  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
-  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    strips->GetCurrentCell(n, ids);
-    if (!valid(n, ids))
-    {
-      continue;
-    }
-    for (vtkIdType k = 0; k + 2 < n; ++k)
-    {
-      // Strips alternate orientation.
       k % 2 == 0 ? addTriangle(ids[k], ids[k + 1], ids[k + 2]) : addTriangle(ids[k + 1], ids[k], ids[k + 2]);
     }
-  }
+  });
 }
 
 void extendBySurface(vtkPolyData* input, Box& box)
 {
   vtkPoints* points = input->GetPoints();
-  if (!points)
-  {
-    return;
-  }
-  const vtkIdType np = points->GetNumberOfPoints();
+  const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
   for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
   {
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
+    forEachCell(cells, [&](vtkIdType n, const vtkIdType* ids) {
       for (vtkIdType k = 0; k < n; ++k)
       {
         if (ids[k] >= 0 && ids[k] < np)
@@ -135,10 +127,9 @@ void extendBySurface(vtkPolyData* input, Box& box)
           box.extend(p);
         }
       }
-    }
+    });
   }
 }
-
 } // namespace
 
 Status polygonMeshes(vtkDataObject* input, std::vector<vtkPolyData*>& meshes)
@@ -174,16 +165,11 @@ TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts)
 Status surfaceOf(vtkPolyData* mesh, TriangleSurface& surface)
 {
   const Status refused = Status::failure("it must be made of triangles only, with finite points and valid point ids");
-  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  bool triangles = true;
+  forEachCell(mesh->GetPolys(), [&](vtkIdType n, const vtkIdType*) { triangles = triangles && n == 3; });
+  if (!triangles)
   {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    if (n != 3)
-    {
-      return refused;
-    }
+    return refused;
   }
   long long badCells = 0;
   surface = TriangleSurface();
@@ -354,8 +340,7 @@ void addCellArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, vtkPolyD
 }
 } // namespace
 
-void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const DistanceGrid& field,
-  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
+void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -364,14 +349,20 @@ void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const Dis
   {
     points->SetPoint(static_cast<vtkIdType>(i), x[i].data());
   }
-  vtkNew<vtkCellArray> triangles;
-  for (const auto& t : mesh.triangles())
+  vtkNew<vtkCellArray> cells;
+  for (const auto& t : triangles)
   {
     const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    triangles->InsertNextCell(3, ids);
+    cells->InsertNextCell(3, ids);
   }
   output->SetPoints(points);
-  output->SetPolys(triangles);
+  output->SetPolys(cells);
+}
+
+void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const DistanceGrid& field,
+  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
+{
+  setTriangles(x, mesh.triangles(), output);
   addPointArrays(x, mesh, field, tangentialVelocity, output);
   addCellArrays(x, mesh, output);
 }

@@ -59,6 +59,9 @@ vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name
 // Marching cubes (vtkFlyingEdges3D) of a grid at one value.
 TriangleSurface contour(const DistanceGrid& grid, double value);
 
+// Points (as doubles) and triangles as `output`'s geometry.
+void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles, vtkPolyData* output);
+
 // The wrap's surface as `output`: points x, triangles, point data Distance, AdvectionAlignment,
 // MeanCurvature, CoVolume, Normals, TangentialVelocity; cell data MinAngle, MaxAngle,
 // JacobianCondition (see vtkShrinkWrapFilter.h).

@@ -6,6 +6,7 @@
 #include <vtkSMPThreadLocal.h>
 
 #include <cmath>
+#include <limits>
 #include <iterator>
 #include <numeric>
 
@@ -55,7 +56,7 @@ std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vecto
   return nodes;
 }
 
-bool computeBand(const AABBTree& tree, const PseudoNormals& normals, const GridLattice& lattice,
+bool computeBand(const DistanceSource& source, const GridLattice& lattice,
   std::vector<std::int64_t> nodes, double searchRadius, double onSurface, const Progress& progress,
   DistanceBand& band, std::uint8_t* state)
 {
@@ -69,14 +70,15 @@ bool computeBand(const AABBTree& tree, const PseudoNormals& normals, const GridL
     {
       const std::int64_t node = band.nodes[k];
       const Vec3 x = lattice.position(lattice.coordinates(node));
-      ClosestHit hit = tree.closestPoint(x, searchRadius * searchRadius);
-      if (hit.triangle < 0)
+      SourcePoint hit = source.closestPoint(x, searchRadius * searchRadius);
+      if (!hit.found)
       {
-        hit = tree.closestPoint(x); // a grid-boundary node of a grid that cuts the mesh
+        // a grid-boundary node of a grid that cuts the mesh
+        hit = source.closestPoint(x, std::numeric_limits<double>::infinity());
       }
       band.closest[k] = hit.point;
       band.distance[k] = static_cast<float>(std::sqrt(hit.squaredDistance));
-      const double side = (x - hit.point).dot(normals.at(hit.triangle, hit.feature));
+      const double side = hit.side;
       band.sign[k] = side < 0 ? -1 : 1;
       state[node] = band.distance[k] <= onSurface ? BandOnSurface : (side < 0 ? BandInside : BandOutside);
     }

@@ -4,10 +4,9 @@
 #ifndef ShrinkWrap_DistanceBand_h
 #define ShrinkWrap_DistanceBand_h
 
-#include "AABBTree.h"
+#include "DistanceSource.h"
 #include "GridLattice.h"
 #include "Progress.h"
-#include "PseudoNormals.h"
 
 #include <cstdint>
 #include <vector>
@@ -48,7 +47,7 @@ std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vecto
 // nodes within `onSurface` of the surface stay BandOnSurface). Returns false if aborted.
 // searchRadius bounds the distance of band nodes near the surface (a node farther off is searched
 // again without bound).
-bool computeBand(const AABBTree& tree, const PseudoNormals& normals, const GridLattice& lattice,
+bool computeBand(const DistanceSource& source, const GridLattice& lattice,
   std::vector<std::int64_t> nodes, double searchRadius, double onSurface, const Progress& progress,
   DistanceBand& band, std::uint8_t* state);
 

@@ -1,12 +1,10 @@
 #include "SignedDistance.h"
 #include "Parallel.h"
 
-#include "AABBTree.h"
+#include "DistanceSource.h"
 #include "DistanceBand.h"
-#include "Outline.h"
 #include "ClosestPointSweep.h"
 #include "EikonalSweep.h"
-#include "PseudoNormals.h"
 #include "SignVotes.h"
 
 #include <vtksys/SystemInformation.hxx>
@@ -93,25 +91,30 @@ int workingBytesPerNode(const SignedDistanceSettings& settings)
 SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress)
 {
-  SignedDistanceResult result;
-  auto clock = std::chrono::steady_clock::now();
-
   // Algorithm 1, line 1: the tree, and the pseudonormals that sign the band.
-  const TriangleSoup soup = weldDuplicatePoints(input);
-  const AABBTree tree(soup);
-  const PseudoNormals normals(soup);
-  result.boundaryEdges = normals.boundaryEdges();
-  result.nonManifoldEdges = normals.nonManifoldEdges();
-  result.treeSeconds = secondsSince(clock);
+  const auto clock = std::chrono::steady_clock::now();
+  const TriangleSource source(input);
+  const double treeSeconds = secondsSince(clock);
   if (!progress.report(0.05))
   {
-    return result;
+    return {};
   }
+  SignedDistanceResult result = computeSignedDistance(source, lattice, settings, distance, progress);
+  result.treeSeconds = treeSeconds;
+  result.boundaryEdges = source.boundaryEdges();
+  result.nonManifoldEdges = source.nonManifoldEdges();
+  return result;
+}
 
-  // Lines 2-5: the octree outline and exact distances on its nodes.
-  clock = std::chrono::steady_clock::now();
+SignedDistanceResult computeSignedDistance(const DistanceSource& source, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+{
+  SignedDistanceResult result;
+  // Lines 2-5 (progress from 0.05 on: line 1 built the source): the octree outline and exact
+  // distances on its nodes.
+  auto clock = std::chrono::steady_clock::now();
   std::vector<std::int64_t> cells;
-  if (!outlineCells(soup, lattice, progress.stage(0.05, 0.2), cells))
+  if (!source.outline(lattice, progress.stage(0.05, 0.2), cells))
   {
     return result;
   }
@@ -120,13 +123,14 @@ SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const Grid
   clock = std::chrono::steady_clock::now();
   DistanceBand band;
   const Box grid = lattice.bounds();
-  const bool meshInsideGrid = (soup.bounds().min.array() > grid.min.array()).all() &&
-    (soup.bounds().max.array() < grid.max.array()).all();
+  const Box surface = source.bounds();
+  const bool meshInsideGrid =
+    (surface.min.array() > grid.min.array()).all() && (surface.max.array() < grid.max.array()).all();
   std::vector<std::int64_t> nodes =
     bandNodes(lattice, cells, settings.bandLayers, !meshInsideGrid, state.data());
   // A node of a touched cell is within a cell diagonal of the surface; each extra layer adds a cell.
   const double searchRadius = 1.001 * (1 + settings.bandLayers) * lattice.spacing.norm();
-  if (!computeBand(tree, normals, lattice, std::move(nodes), searchRadius, 1e-6 * lattice.minSpacing(),
+  if (!computeBand(source, lattice, std::move(nodes), searchRadius, 1e-6 * lattice.minSpacing(),
         progress.stage(0.2, 0.45), band, state.data()))
   {
     return result;

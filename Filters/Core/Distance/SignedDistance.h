@@ -3,6 +3,7 @@
 #define ShrinkWrap_SignedDistance_h
 
 #include "DistanceGrid.h"
+#include "DistanceSource.h"
 #include "GridLattice.h"
 #include "Progress.h"
 #include "Status.h"
@@ -47,6 +48,9 @@ int workingBytesPerNode(const SignedDistanceSettings& settings);
 // Fills `distance` (lattice.nodeCount() values, x fastest) with the signed distance to the soup:
 // negative inside, positive outside. The soup must be non-empty with finite coordinates.
 SignedDistanceResult computeSignedDistance(const TriangleSoup& soup, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
+// The same for any distance source (DistanceSource.h); the soup's form builds a TriangleSource.
+SignedDistanceResult computeSignedDistance(const DistanceSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 
 // Why a soup has no distance field, if it has none: no triangles, NaN or infinite coordinates,

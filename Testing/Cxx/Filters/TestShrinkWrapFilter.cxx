@@ -367,20 +367,7 @@ void splitSurfaceAsInitialSurface(vtkPolyData* box)
   SurfaceMesh split = testing::meshOf(sphere);
   splitEdges(split, edgesOf(split));
   vtkNew<vtkPolyData> given;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (const Vec3& p : split.points())
-  {
-    points->InsertNextPoint(p.data());
-  }
-  vtkNew<vtkCellArray> triangles;
-  for (const auto& t : split.triangles())
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    triangles->InsertNextCell(3, ids);
-  }
-  given->SetPoints(points);
-  given->SetPolys(triangles);
+  convert::setTriangles(split.points(), split.triangles(), given);
   const int steps = 20;
   vtkNew<vtkShrinkWrapFilter> wrap;
   wrap->SetInputData(box);

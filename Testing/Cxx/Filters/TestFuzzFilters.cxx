@@ -218,32 +218,11 @@ vtkSmartPointer<vtkImageData> randomField(Dice& dice, vtkMeshSignedDistance* dis
   return image;
 }
 
+// An empty output, or a surface of triangles with finite points and valid ids.
 bool validMesh(vtkPolyData* mesh)
 {
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    mesh->GetPoint(i, x);
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-    {
-      return false;
-    }
-  }
-  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      if (ids[k] < 0 || ids[k] >= mesh->GetNumberOfPoints())
-      {
-        return false;
-      }
-    }
-  }
-  return true;
+  shrinkwrap::TriangleSurface surface;
+  return mesh->GetNumberOfCells() == 0 || shrinkwrap::convert::surfaceOf(mesh, surface);
 }
 
 bool validWrap(vtkDataObject* output)

@@ -68,11 +68,19 @@ Status sortCorners(int nv, const std::vector<std::array<int, 3>>& triangles, std
 // leads to c, which must start the next. Writes v's ring entries.
 Status walkFan(int v, const Corner* first, const Corner* last, int* ring, int* ringTriangle)
 {
-  std::ostringstream why;
+  // Messages are made only on failure: this runs for every vertex after every round of edits.
+  auto failure = [v](const char* what, int other = -1) {
+    std::ostringstream why;
+    why << what << v;
+    if (other >= 0)
+    {
+      why << ", " << other << ")";
+    }
+    return Status::failure(why.str());
+  };
   if (first == last)
   {
-    why << "vertex " << v << " belongs to no triangle";
-    return Status::failure(why.str());
+    return failure("a vertex belongs to no triangle: vertex ");
   }
   auto find = [&](int b) -> const Corner* {
     const Corner* it = std::lower_bound(first, last, b, [](const Corner& x, int key) { return x.b < key; });
@@ -80,31 +88,27 @@ Status walkFan(int v, const Corner* first, const Corner* last, int* ring, int* r
   };
   if (std::adjacent_find(first, last, [](const Corner& x, const Corner& y) { return x.b == y.b; }) != last)
   {
-    why << "an edge at vertex " << v << " is used by more than two triangles or twice in one direction";
-    return Status::failure(why.str());
+    return failure("an edge is used by more than two triangles or twice in one direction at vertex ");
   }
   const Corner* corner = first;
   for (int p = 0; p < last - first; ++p)
   {
     if (p > 0 && corner->b == first->b)
     {
-      why << "vertex " << v << " is non-manifold (its triangles form more than one fan)";
-      return Status::failure(why.str());
+      return failure("its triangles form more than one fan (non-manifold) at vertex ");
     }
     ring[p] = corner->b;
     ringTriangle[p] = corner->triangle;
     const Corner* following = find(corner->c);
     if (!following)
     {
-      why << "the surface is open or inconsistently oriented at the edge (" << v << ", " << corner->c << ")";
-      return Status::failure(why.str());
+      return failure("the surface is open or inconsistently oriented at the edge (", corner->c);
     }
     corner = following;
   }
   if (corner != first)
   {
-    why << "vertex " << v << " is non-manifold (its triangles form more than one fan)";
-    return Status::failure(why.str());
+    return failure("its triangles form more than one fan (non-manifold) at vertex ");
   }
   return {};
 }

@@ -51,6 +51,15 @@ bool keepsNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, in
 
 } // namespace
 
+bool collapseIsOk(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
+  const CollapseSettings& settings)
+{
+  const int p = mesh.ringEntry(keep, gone);
+  const int c = mesh.ring(mesh.next(keep, p)), d = mesh.ring(mesh.previous(keep, p));
+  return !(mesh.valence(c) <= 3 || mesh.valence(d) <= 3 || mesh.valence(keep) + mesh.valence(gone) - 4 < 3 ||
+    !linkCondition(mesh, keep, gone) || !keepsNormals(mesh, x, keep, gone, m, settings));
+}
+
 int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
 {
   // Decisions read the surface as it was before the pass (the rings stay so until the commit).
@@ -63,11 +72,7 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
   // orientations kept; the neighbours of both then wait for the next pass, so that every ring read
   // here is current.
   auto collapse = [&](int keep, int gone, const Vec3& m) {
-    const int p = mesh.ringEntry(keep, gone);
-    const int c = mesh.ring(mesh.next(keep, p)), d = mesh.ring(mesh.previous(keep, p));
-    if (touched[keep] || touched[gone] || mesh.valence(c) <= 3 || mesh.valence(d) <= 3 ||
-      mesh.valence(keep) + mesh.valence(gone) - 4 < 3 || !linkCondition(mesh, keep, gone) ||
-      !keepsNormals(mesh, x, keep, gone, m, settings))
+    if (touched[keep] || touched[gone] || !collapseIsOk(mesh, x, keep, gone, m, settings))
     {
       return;
     }

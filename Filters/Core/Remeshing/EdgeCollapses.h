@@ -21,6 +21,14 @@ struct CollapseSettings
   int maxPasses = 10;        // passes per step (the evolver's)
 };
 
+// Whether merging `gone` into `keep` at m keeps a closed 2-manifold of the same genus with the
+// orientations kept: the two vertices opposite the edge keep valence above 3, the merged vertex has
+// at least 3, only those two are neighbours of both (link condition), and no other triangle around
+// them turns by more than the settings allow. (keep, gone) must be an edge; the rings must be current
+// around both.
+bool collapseIsOk(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
+  const CollapseSettings& settings);
+
 // One pass over the triangles of `mesh` (a vertex takes part in at most one collapse), committed: the
 // vertex data of a merged pair is the kept vertex's. Returns the number of collapses.
 int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings);

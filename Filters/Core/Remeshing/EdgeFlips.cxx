@@ -19,6 +19,13 @@ Vec3 unitNormal(const Vec3& a, const Vec3& b, const Vec3& c)
 
 } // namespace
 
+bool flipKeepsShape(const std::vector<Vec3>& x, int i, int j, int c, int d, double cosMax)
+{
+  const Vec3 n1 = unitNormal(x[i], x[j], x[c]), n2 = unitNormal(x[i], x[d], x[j]);
+  const Vec3 n3 = unitNormal(x[i], x[d], x[c]), n4 = unitNormal(x[d], x[j], x[c]);
+  return !(n1.dot(n2) < cosMax || n3.dot(n4) < cosMax || n3.dot(n1 + n2) <= 0 || n4.dot(n1 + n2) <= 0);
+}
+
 // Over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j). The rings describe the
 // connectivity before the pass, hence one flip per vertex.
 int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
@@ -51,9 +58,7 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
       {
         continue;
       }
-      const Vec3 n1 = unitNormal(x[i], x[j], x[c]), n2 = unitNormal(x[i], x[d], x[j]);
-      const Vec3 n3 = unitNormal(x[i], x[d], x[c]), n4 = unitNormal(x[d], x[j], x[c]);
-      if (n1.dot(n2) < cosMax || n3.dot(n4) < cosMax || n3.dot(n1 + n2) <= 0 || n4.dot(n1 + n2) <= 0)
+      if (!flipKeepsShape(x, i, j, c, d, cosMax))
       {
         continue;
       }

@@ -20,6 +20,11 @@ struct FlipSettings
   double minGain = 0.01;         // radians the smallest angle of the pair must gain
 };
 
+// Whether flipping edge (i, j) of triangles (i, j, c) and (i, d, j) to (c, d) keeps the shape: both
+// pairs of triangles within the dihedral limit (cosMax, the cosine of maxDihedral) and the new
+// triangles facing the way the old ones did.
+bool flipKeepsShape(const std::vector<Vec3>& x, int i, int j, int c, int d, double cosMax);
+
 // One pass of flips over the edges of `mesh` (a vertex takes part in at most one flip; the evolver
 // runs a pass after every step), committed. Returns the number of flips.
 int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings);

@@ -1,0 +1,48 @@
+// Isotropic remeshing of an evolving surface towards a target edge length L (the groundwork of issue
+// #10's adaptive remeshing; after Botsch & Kobbelt 2004 and pmp-library's remeshing): split edges
+// longer than 4/3 L, collapse edges shorter than 4/5 L where that makes no edge longer than 4/3 L,
+// flip edges towards valence 6, relax tangentially. Every step is a pass of SurfaceMesh edits, so
+// positions and vertex data (the evolver's velocities) follow. It does not project onto a reference
+// surface: in the evolution the flow itself moves the vertices.
+#ifndef ShrinkWrap_Remesher_h
+#define ShrinkWrap_Remesher_h
+
+#include "EdgeCollapses.h"
+#include "EdgeFlips.h"
+#include "Status.h"
+#include "SurfaceMesh.h"
+
+namespace shrinkwrap
+{
+
+struct RemeshSettings
+{
+  double targetLength = 0;         // L, in the surface's units (> 0)
+  double splitAbove = 4.0 / 3.0;   // edges longer than this times L are split
+  double collapseBelow = 4.0 / 5.0; // edges shorter than this times L are collapsed
+  int iterations = 5;
+  double relaxWeight = 0.5;        // share of the way to the tangential centroid; 0: no relaxation
+  FlipSettings flips;              // the dihedral guard of every flip
+  CollapseSettings collapses;      // the normal guard of every collapse
+};
+
+struct RemeshReport
+{
+  int splits = 0, collapses = 0, flips = 0;
+  Status status;
+};
+
+// Splits every edge longer than maxLength at its midpoint, in passes until none is left (at most 16).
+int splitLongEdges(SurfaceMesh& mesh, double maxLength);
+// Collapses edges shorter than minLength into their midpoints where no edge then exceeds maxLength
+// and collapseIsOk holds, in passes until none is left (at most 16).
+int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings);
+// One pass of flips that bring the four valences of an edge's triangles closer to 6, within the
+// dihedral guard.
+int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings);
+
+RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings);
+
+} // namespace shrinkwrap
+
+#endif

@@ -60,6 +60,24 @@ bool collapseIsOk(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep,
     !linkCondition(mesh, keep, gone) || !keepsNormals(mesh, x, keep, gone, m, settings));
 }
 
+bool collapseInPass(SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
+  const CollapseSettings& settings, std::vector<char>& touched)
+{
+  if (touched[keep] || touched[gone] || !collapseIsOk(mesh, x, keep, gone, m, settings))
+  {
+    return false;
+  }
+  for (int v : { keep, gone })
+  {
+    touched[v] = 1;
+    for (int q = mesh.ringBegin(v); q < mesh.ringEnd(v); ++q)
+    {
+      touched[mesh.ring(q)] = 1;
+    }
+  }
+  return mesh.collapse(keep, gone, m);
+}
+
 int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
 {
   // Decisions read the surface as it was before the pass (the rings stay so until the commit).
@@ -68,23 +86,8 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
   const int nv = mesh.vertexCount();
   std::vector<char> touched(nv, 0);
   int collapses = 0;
-  // Merges `gone` into `keep` at m if that keeps a closed 2-manifold of the same genus with
-  // orientations kept; the neighbours of both then wait for the next pass, so that every ring read
-  // here is current.
   auto collapse = [&](int keep, int gone, const Vec3& m) {
-    if (touched[keep] || touched[gone] || !collapseIsOk(mesh, x, keep, gone, m, settings))
-    {
-      return;
-    }
-    for (int v : { keep, gone })
-    {
-      touched[v] = 1;
-      for (int q = mesh.ringBegin(v); q < mesh.ringEnd(v); ++q)
-      {
-        touched[mesh.ring(q)] = 1;
-      }
-    }
-    collapses += mesh.collapse(keep, gone, m);
+    collapses += collapseInPass(mesh, x, keep, gone, m, settings, touched);
   };
   for (const auto& t : triangles)
   {

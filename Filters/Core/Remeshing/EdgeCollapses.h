@@ -29,6 +29,12 @@ struct CollapseSettings
 bool collapseIsOk(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
   const CollapseSettings& settings);
 
+// One collapse of a pass: merges `gone` into `keep` at m unless either was touched by an earlier
+// collapse of the pass or collapseIsOk fails; then marks both and their neighbours touched, so that
+// every ring the pass reads is current (x: the positions before the pass). True if it collapsed.
+bool collapseInPass(SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
+  const CollapseSettings& settings, std::vector<char>& touched);
+
 // One pass over the triangles of `mesh` (a vertex takes part in at most one collapse), committed: the
 // vertex data of a merged pair is the kept vertex's. Returns the number of collapses.
 int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings);

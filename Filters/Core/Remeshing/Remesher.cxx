@@ -59,20 +59,11 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
   {
     const int a = e[0], b = e[1];
     const Vec3 m = 0.5 * (x[a] + x[b]);
-    if (touched[a] || touched[b] || mesh.vertexCount() - collapses <= 4 || (x[a] - x[b]).norm() >= minLength ||
-      !staysShort(mesh, x, a, b, m, maxLength) || !collapseIsOk(mesh, x, a, b, m, settings))
+    if (!touched[a] && !touched[b] && mesh.vertexCount() - collapses > 4 && (x[a] - x[b]).norm() < minLength &&
+      staysShort(mesh, x, a, b, m, maxLength))
     {
-      continue;
+      collapses += collapseInPass(mesh, x, a, b, m, settings, touched);
     }
-    for (int v : { a, b })
-    {
-      touched[v] = 1;
-      for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
-      {
-        touched[mesh.ring(p)] = 1;
-      }
-    }
-    collapses += mesh.collapse(a, b, m);
   }
   return collapses > 0 && mesh.commit() ? collapses : 0;
 }

@@ -284,9 +284,8 @@ void vtkShrinkWrapFilter::Execute(vtkInformationVector** inputVector, vtkInforma
     this->Current.reset();
     bool started = false;
     onAllCores([&] { started = this->StartSession(inputVector); });
-    if (!started)
+    if (!started) // a session is kept only when it started
     {
-      this->Current.reset();
       return;
     }
     this->CurrentKey = key;

@@ -21,6 +21,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolygon.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <cmath>
@@ -285,7 +286,7 @@ Array* named(Array* array, const char* name, int components, vtkIdType tuples)
 }
 
 // Per vertex: d, -grad d . N, H (h = -H N), |V_i|, N and v_T.
-void addPointArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const DistanceGrid& field,
+void addPointArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
   const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
 {
   SurfaceGeometry g;
@@ -359,12 +360,27 @@ void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 
   output->SetPolys(cells);
 }
 
-void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const DistanceGrid& field,
+void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
   const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
 {
   setTriangles(x, mesh.triangles(), output);
   addPointArrays(x, mesh, field, tangentialVelocity, output);
   addCellArrays(x, mesh, output);
+}
+
+void addSelfIntersections(const SelfIntersections& crossings, vtkPolyData* output)
+{
+  vtkNew<vtkUnsignedCharArray> cells;
+  named(cells.Get(), "SelfIntersecting", 1, static_cast<vtkIdType>(crossings.intersecting.size()));
+  for (std::size_t t = 0; t < crossings.intersecting.size(); ++t)
+  {
+    cells->SetValue(static_cast<vtkIdType>(t), crossings.intersecting[t]);
+  }
+  output->GetCellData()->AddArray(cells);
+  vtkNew<vtkIntArray> pairs;
+  pairs->SetName("SelfIntersections");
+  pairs->InsertNextValue(static_cast<int>(std::min<long long>(crossings.pairs, VTK_INT_MAX)));
+  output->GetFieldData()->AddArray(pairs);
 }
 
 void addStepFields(int step, double time, const std::string& status, vtkPolyData* output)

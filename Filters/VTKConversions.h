@@ -5,6 +5,8 @@
 #define ShrinkWrap_VTKConversions_h
 
 #include "DistanceGrid.h"
+#include "TargetDistance.h"
+#include "SelfIntersections.h"
 #include "Status.h"
 #include "SurfaceGeometry.h"
 #include "TriangleSoup.h"
@@ -65,8 +67,12 @@ void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 
 // The wrap's surface as `output`: points x, triangles, point data Distance, AdvectionAlignment,
 // MeanCurvature, CoVolume, Normals, TangentialVelocity; cell data MinAngle, MaxAngle,
 // JacobianCondition (see vtkShrinkWrapFilter.h).
-void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const DistanceGrid& field,
+void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
   const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output);
+
+// Cell data SelfIntersecting (1 where a triangle crosses another) and field data SelfIntersections
+// (the number of crossing pairs).
+void addSelfIntersections(const SelfIntersections& crossings, vtkPolyData* output);
 
 // Field data of the wrap's output: StepIndex, Time and Status; and the output's DATA_TIME_STEP.
 void addStepFields(int step, double time, const std::string& status, vtkPolyData* output);

@@ -1,6 +1,7 @@
 #include "vtkShrinkWrapFilter.h"
 
 #include "Parallel.h"
+#include "SelfIntersections.h"
 #include "SignedDistance.h"
 #include "VTKConversions.h"
 #include "WrapSession.h"
@@ -12,6 +13,7 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <algorithm>
 #include <cmath>
 
 vtkStandardNewMacro(vtkShrinkWrapFilter);
@@ -41,7 +43,9 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   this->FlipDihedralLimit = e.flips.maxDihedral;
   this->StartingShape = static_cast<int>(defaults.start.shape); // ICOSPHERE, OFFSET_SURFACE in order
   this->StartOffset = defaults.start.offset;
-  this->StartClosing = defaults.start.closing;
+  this->GapSize = defaults.gapSize;
+  this->Remeshing = defaults.remeshing;
+  this->TargetEdgeLength = defaults.targetLength;
   this->InitialRelaxation = defaults.start.relaxation;
   this->AutomaticScaling = defaults.automaticScaling;
   this->SolverTolerance = e.solverTolerance;
@@ -72,7 +76,9 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
   e.flips.maxDihedral = this->FlipDihedralLimit;
   s.start.shape = static_cast<StartShape>(this->StartingShape);
   s.start.offset = this->StartOffset;
-  s.start.closing = this->StartClosing;
+  s.gapSize = this->GapSize;
+  s.remeshing = this->Remeshing;
+  s.targetLength = this->TargetEdgeLength;
   s.start.relaxation = this->InitialRelaxation;
   s.automaticScaling = this->AutomaticScaling;
   e.solverTolerance = this->SolverTolerance;
@@ -162,8 +168,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
 {
   vtkPolyData* target = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* initial = vtkPolyData::GetData(inputVector[2], 0);
-  const WrapSettings settings = this->CoreSettings();
-  if (const Status valid = settings.validate(); !valid)
+  if (const Status valid = this->CoreSettings().validate(); !valid)
   {
     vtkErrorMacro(<< valid.message() << ".");
     return false;
@@ -179,8 +184,9 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     vtkErrorMacro("The target has NaN or infinite coordinates.");
     return false;
   }
-  DistanceGrid field;
-  if (!this->DistanceFieldOf(target, vtkImageData::GetData(inputVector[1], 0), settings, field))
+  const WrapSettings settings = this->CoreSettings().resolved(targetBox);
+  WrapFields fields;
+  if (!this->FieldsOf(target, vtkImageData::GetData(inputVector[1], 0), initial != nullptr, settings, fields))
   {
     return false;
   }
@@ -192,7 +198,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   }
   SurfaceMesh start;
   int specks = 0;
-  Status status = startingSurface(field, targetBox, initial ? &given : nullptr, settings.start,
+  Status status = startingSurface(fields.driving.grid(), targetBox, initial ? &given : nullptr, settings.start,
     settings.evolution.flips, convert::contour, start, specks);
   if (specks > 0)
   {
@@ -201,7 +207,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   }
   if (status)
   {
-    status = WrapSession::create(std::move(field), targetBox, start, settings, this->Current);
+    status = WrapSession::create(std::move(fields), targetBox, start, settings, this->Current);
   }
   if (!status)
   {
@@ -210,38 +216,61 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   return status.ok();
 }
 
-// The DistanceField input, or the target's field computed here with Mesh Signed Distance's algorithm.
-bool vtkShrinkWrapFilter::DistanceFieldOf(
-  vtkPolyData* target, vtkImageData* image, const WrapSettings& settings, DistanceGrid& field)
+// The DistanceField input, or the target's field computed here with Mesh Signed Distance's algorithm;
+// closed over the gaps the wrap bridges, and exact near the target (WrapFields).
+bool vtkShrinkWrapFilter::FieldsOf(
+  vtkPolyData* target, vtkImageData* image, bool givenStart, const WrapSettings& settings, WrapFields& fields)
 {
+  convert::SoupCounts counts;
+  const TriangleSoup soup = convert::soupOf({ target }, counts);
+  if (counts.badCells > 0)
+  {
+    vtkErrorMacro("Cannot wrap: the target has cells whose point ids are out of range.");
+    return false;
+  }
+  DistanceGrid grid;
+  std::shared_ptr<const TriangleSource> exact;
+  bool isSigned = true;
   if (image)
   {
-    const Status read = convert::gridOf(image, "SignedDistance", field);
+    const Status read = convert::gridOf(image, "SignedDistance", grid);
     if (!read)
     {
       vtkErrorMacro("Cannot wrap: " << read.message() << ".");
+      return false;
     }
-    return read.ok();
+    isSigned = std::any_of(grid.values().begin(), grid.values().end(), [](float d) { return d < 0; });
+    if (settings.exactNearTarget && checkSoup(soup))
+    {
+      exact = std::make_shared<const TriangleSource>(soup);
+    }
   }
-  convert::SoupCounts counts;
-  const TriangleSoup soup = convert::soupOf({ target }, counts);
-  GridPlacement placement;
-  placement.resolution = settings.resolution;
-  SignedDistanceResult result;
-  Status status = counts.badCells > 0 ? Status::failure("the target has cells whose point ids are out of range")
-                                      : signedDistanceGrid(soup, convert::surfaceBounds({ target }), placement,
-                                          SignedDistanceSettings(), field, result);
+  else
+  {
+    GridPlacement placement;
+    placement.resolution = settings.resolution;
+    placement.offsetFactor = settings.fieldMargin(convert::surfaceBounds({ target }), givenStart);
+    SignedDistanceResult result;
+    const Status status = signedDistanceGrid(
+      soup, convert::surfaceBounds({ target }), placement, SignedDistanceSettings(), grid, result, {}, &exact);
+    if (!status)
+    {
+      vtkErrorMacro("Cannot wrap: the target's distance field: " << status.message() << ".");
+      return false;
+    }
+    isSigned = result.isSigned;
+    if (!result.isSigned)
+    {
+      vtkWarningMacro("The target is not closed, so its distance field is unsigned: the wrap stops at the "
+                      "distance it reaches from outside and inside alike.");
+    }
+  }
+  const Status status = wrapFields(std::move(grid), isSigned, exact, settings, convert::contour, fields);
   if (!status)
   {
-    vtkErrorMacro("Cannot wrap: the target's distance field: " << status.message() << ".");
-    return false;
+    vtkErrorMacro("Cannot wrap: " << status.message() << ".");
   }
-  if (!result.isSigned)
-  {
-    vtkWarningMacro("The target is not closed, so its distance field is unsigned: the wrap stops at the "
-                    "distance it reaches from outside and inside alike.");
-  }
-  return true;
+  return status.ok();
 }
 
 int vtkShrinkWrapFilter::RequestData(
@@ -359,9 +388,22 @@ void vtkShrinkWrapFilter::WriteOutput(int wanted, vtkPolyData* output)
     vtkErrorMacro("Internal error: step " << surface.step << " is not a closed surface: " << closed.message() << ".");
     return;
   }
-  convert::writeSurface(surface.points, mesh, s.field(), surface.cached->tangentialVelocity, output);
-  convert::addStepFields(surface.step, surface.step * this->TimeStep,
-    s.lastGood() >= 0 && wanted > s.lastGood() ? "failed: " + s.failure() : std::string("ok"), output);
+  convert::writeSurface(surface.points, mesh, s.fields().target, surface.cached->tangentialVelocity, output);
+  // The wrap must not pass through itself; if it does at this step, the cells say where.
+  const SelfIntersections crossings = findSelfIntersections(surface.points, mesh.triangles());
+  convert::addSelfIntersections(crossings, output);
+  std::string status = "ok";
+  if (s.lastGood() >= 0 && wanted > s.lastGood())
+  {
+    status = "failed: " + s.failure();
+  }
+  else if (crossings.pairs > 0)
+  {
+    status = "self-intersecting: " + std::to_string(crossings.pairs) + " triangle pairs cross";
+    vtkWarningMacro("The surface of step " << surface.step << " passes through itself (" << crossings.pairs
+                                           << " triangle pairs cross; cell array SelfIntersecting).");
+  }
+  convert::addStepFields(surface.step, surface.step * this->TimeStep, status, output);
 }
 
 void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
@@ -384,7 +426,9 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FlipDihedralLimit: " << this->FlipDihedralLimit << "\n";
   os << indent << "StartingShape: " << (this->StartingShape == ICOSPHERE ? "Icosphere" : "Offset Surface") << "\n";
   os << indent << "StartOffset: " << this->StartOffset << "\n";
-  os << indent << "StartClosing: " << this->StartClosing << "\n";
+  os << indent << "GapSize: " << this->GapSize << (this->GapSize > 0 ? "\n" : " (automatic)\n");
+  os << indent << "Remeshing: " << this->Remeshing << "\n";
+  os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << (this->TargetEdgeLength > 0 ? "\n" : " (automatic)\n");
   os << indent << "InitialRelaxation: " << this->InitialRelaxation << "\n";
   os << indent << "AutomaticScaling: " << this->AutomaticScaling << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";

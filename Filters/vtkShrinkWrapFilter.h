@@ -32,7 +32,8 @@
  * DistanceWeighting off (rho(d) of eq. (10)) with RhoA = 1 (its A), EdgeFlips on with FlipDihedralLimit
  * 60 degrees (flips change the triangles from step to step, never the vertices), EdgeCollapses on
  * (a collapse removes a vertex), StartingShape
- * ICOSPHERE (or OFFSET_SURFACE, StartOffset 3 and StartClosing 3 cells), InitialRelaxation 10,
+ * OFFSET_SURFACE with StartOffset 3 cells (or ICOSPHERE), GapSize automatic (diagonal / 50), Remeshing
+ * on with TargetEdgeLength automatic (diagonal / 50), InitialRelaxation 10,
  * AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates scaled so that the mean
  * co-volume of the sphere inscribed in the target's box is tau), SolverTolerance 1e-6, Resolution 120
  * (of the internal distance field), CacheMemoryLimit 512 MiB.
@@ -48,8 +49,8 @@
 class vtkImageData;
 namespace shrinkwrap
 {
-class DistanceGrid;
 class WrapSession;
+struct WrapFields;
 struct WrapSettings;
 }
 
@@ -150,18 +151,36 @@ public:
   vtkGetMacro(FlipDihedralLimit, double);
   ///@}
   ///@{
-  /// The starting surface when no InitialSurface is connected: ICOSPHERE (default), or OFFSET_SURFACE,
-  /// a contour of d near the target (the paper's Section 5), which starts close, wraps concave parts
-  /// and keeps holes wider than 2 (StartOffset + StartClosing) open. It is the target dilated by
-  /// StartOffset + StartClosing and eroded by StartClosing (a morphological closing), both in cells of
-  /// the distance field (defaults 3 and 3): the closing fills the narrow gaps where a plain contour
-  /// nearly touches itself and would pinch.
+  /// The starting surface when no InitialSurface is connected: OFFSET_SURFACE (default), a contour at
+  /// StartOffset cells (default 3) of the field outside the target closed over gaps narrower than
+  /// GapSize (the paper's Section 5), which starts close, wraps concave parts and keeps wider holes
+  /// open; or ICOSPHERE, a geodesic icosphere of SubdivisionLevel around the target (the paper's
+  /// Algorithm 3 and Fig. 11), which spans concave parts and holes like a membrane.
   vtkSetClampMacro(StartingShape, int, ICOSPHERE, OFFSET_SURFACE);
   vtkGetMacro(StartingShape, int);
   vtkSetClampMacro(StartOffset, double, 0.5, 1000.0);
   vtkGetMacro(StartOffset, double);
-  vtkSetClampMacro(StartClosing, double, 0.0, 1000.0);
-  vtkGetMacro(StartClosing, double);
+  ///@}
+  ///@{
+  /// The narrowest gap or hole that stays open, in the target's units: narrower ones are bridged (the
+  /// wrap moves on the distance to the target's morphological closing by a ball of GapSize / 2).
+  /// Default 0: automatic, the target's bounding-box diagonal / 50. A value below half a cell of the
+  /// distance field bridges nothing.
+  vtkSetClampMacro(GapSize, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(GapSize, double);
+  ///@}
+  ///@{
+  /// Remeshing after every step towards TargetEdgeLength L (splits above 4/3 L, collapses below 4/5 L,
+  /// flips towards valence 6, tangential relaxation), so the vertex count follows the surface and
+  /// the triangles stay near equilateral as it moves into concavities and along thin parts; the
+  /// stability scale phi (Section 2.4) then follows L. Default on; off keeps the vertex count (the
+  /// paper's scheme, with SubdivisionLevel fixing it).
+  vtkSetMacro(Remeshing, bool);
+  vtkGetMacro(Remeshing, bool);
+  vtkBooleanMacro(Remeshing, bool);
+  /// L in the target's units. Default 0: automatic, the target's bounding-box diagonal / 50.
+  vtkSetClampMacro(TargetEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(TargetEdgeLength, double);
   ///@}
   ///@{
   /// Iterations of tangential relaxation (with edge flips) applied to an InitialSurface or the offset
@@ -231,7 +250,9 @@ protected:
   double FlipDihedralLimit;
   int StartingShape;
   double StartOffset;
-  double StartClosing;
+  double GapSize;
+  bool Remeshing;
+  double TargetEdgeLength;
   int InitialRelaxation;
   bool AutomaticScaling;
   double SolverTolerance;
@@ -249,8 +270,8 @@ private:
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
   bool StartSession(vtkInformationVector** inputVector);
-  bool DistanceFieldOf(vtkPolyData* target, vtkImageData* image, const shrinkwrap::WrapSettings& settings,
-    shrinkwrap::DistanceGrid& field);
+  bool FieldsOf(vtkPolyData* target, vtkImageData* image, bool givenStart, const shrinkwrap::WrapSettings& settings,
+    shrinkwrap::WrapFields& fields);
   int StepAsked(vtkInformation* outInfo) const;
   bool Advance(int step);
   void WriteOutput(int wanted, vtkPolyData* output);

@@ -1,27 +1,31 @@
-// Shrink Wrap beside CGAL's alpha_wrap_3 in one run, on CGAL's bunny00 and armadillo.
-//   BenchShrinkWrap <CGAL data/meshes folder> [output folder for the wraps]
-// Ours: default parameters, 200 steps, subdivision levels 3..6 (D = 0 and 0.5), and from the offset
-// surface (D = 0 and 0.5); the time of the distance field
-// (Resolution 120) is shown apart and included in the total. CGAL: alpha = diagonal / 20, / 50, / 100,
-// offset = alpha / 30 (CGAL's examples). For each wrap: vertices, one-sided distances from the wrap's
-// vertices to the target and from the target's vertices to the wrap (max, as a Hausdorff estimate, in
-// percent of the target's diagonal), and the share of triangles with a minimum angle below 20 degrees.
-#include "AABBTree.h"
-#include "MeshQuality.h"
+// Shrink Wrap beside CGAL's alpha_wrap_3 in one run, on CGAL meshes with thin parts, fingers and legs,
+// holes, an open mesh and CAD parts with sharp edges (issue #10).
+//   BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b,...] [--set Name=value ...]
+// Ours: the defaults, and Target Edge Length diagonal / 25 and / 100 (the field's Resolution follows
+// L, so that a cell stays below L); the time includes the distance field. CGAL: alpha = diagonal / 20,
+// / 50, / 100, offset = alpha / 30 (CGAL's examples). Every wrap is judged the same way
+// (../Cxx/WrapEvaluation.h): 100,000 points sampled on each surface plus its vertices, one-sided
+// distances to the other surface (mean and largest, percent of the target's diagonal), crossing
+// triangle pairs (ours, and CGAL's does_self_intersect), closed and manifold, genus, the share of
+// triangles with a minimum angle below 20 degrees. --set applies a property to our wraps (D, C, C1,
+// C2, TimeStep, NumberOfSteps, Resolution, StartOffset, GapSize, TargetEdgeLength, Remeshing,
+// StartingShape, SubdivisionLevel), for tuning.
 #include "TestUtilities.h"
-#include "vtkMeshSignedDistance.h"
+#include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/alpha_wrap_3.h>
 
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
-#include <map>
-
 #include <chrono>
+#include <functional>
+#include <map>
+#include <sstream>
 
 namespace
 {
@@ -37,44 +41,10 @@ double seconds(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Largest distance from the points of `from` to the surface `to`.
-double oneSided(const TriangleSoup& from, const TriangleSoup& to)
-{
-  const shrinkwrap::AABBTree tree(to);
-  double worst = 0;
-  for (const Vec3& p : from.points)
-  {
-    worst = std::max(worst, tree.closestPoint(p).squaredDistance);
-  }
-  return std::sqrt(worst);
-}
-
-double smallAngleShare(const TriangleSoup& soup)
-{
-  int small = 0;
-  for (const auto& t : soup.triangles)
-  {
-    small += shrinkwrap::triangleQuality(soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]).minAngle < 20;
-  }
-  return 100.0 * small / soup.triangles.size();
-}
-
 void write(const TriangleSoup& soup, const std::string& path)
 {
-  vtkNew<vtkPoints> points;
-  for (const Vec3& p : soup.points)
-  {
-    points->InsertNextPoint(p.data());
-  }
-  vtkNew<vtkCellArray> triangles;
-  for (const auto& t : soup.triangles)
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    triangles->InsertNextCell(3, ids);
-  }
   vtkNew<vtkPolyData> mesh;
-  mesh->SetPoints(points);
-  mesh->SetPolys(triangles);
+  shrinkwrap::convert::setTriangles(soup.points, soup.triangles, mesh);
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(mesh);
   writer->SetFileName(path.c_str());
@@ -82,14 +52,86 @@ void write(const TriangleSoup& soup, const std::string& path)
   writer->Write();
 }
 
-void row(const std::string& method, double sdf, double total, const TriangleSoup& wrap, const TriangleSoup& target,
+CgalMesh cgalMesh(const TriangleSoup& soup)
+{
+  CgalMesh mesh;
+  std::vector<CgalMesh::Vertex_index> v;
+  for (const Vec3& p : soup.points)
+  {
+    v.push_back(mesh.add_vertex(Point(p.x(), p.y(), p.z())));
+  }
+  for (const auto& t : soup.triangles)
+  {
+    mesh.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  }
+  return mesh;
+}
+
+TriangleSoup soupOf(const CgalMesh& mesh)
+{
+  TriangleSoup soup;
+  std::map<CgalMesh::Vertex_index, int> index;
+  for (auto v : mesh.vertices())
+  {
+    index[v] = static_cast<int>(soup.points.size());
+    const Point& p = mesh.point(v);
+    soup.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (auto f : mesh.faces())
+  {
+    std::array<int, 3> tri{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+    {
+      tri[k++ % 3] = index[v];
+    }
+    soup.triangles.push_back(tri);
+  }
+  return soup;
+}
+
+void header()
+{
+  std::printf("| method | vertices | time s | mean w→t | mean t→w | max w→t | max t→w | self-int. pairs (CGAL) | closed manifold | genus | angles < 20° | status |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+}
+
+void row(const std::string& method, double time, const TriangleSoup& wrap, const TriangleSoup& target,
   const std::string& status)
 {
-  const double diagonal = target.bounds().diagonal();
-  std::printf("| %s | %zu | %s | %.3f | %.2f%% | %.2f%% | %.1f%% | %s |\n", method.c_str(), wrap.points.size(),
-    sdf > 0 ? (std::to_string(sdf).substr(0, 5)).c_str() : "-", total, 100 * oneSided(wrap, target) / diagonal,
-    100 * oneSided(target, wrap) / diagonal, smallAngleShare(wrap), status.c_str());
+  const testing::WrapFigures f = testing::evaluateWrap(wrap, target);
+  bool cgalSelf = false;
+  if (!wrap.triangles.empty())
+  {
+    const CgalMesh mesh = cgalMesh(wrap);
+    cgalSelf = CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
+  }
+  std::printf("| %s | %d | %.2f | %.3f%% | %.3f%% | %.2f%% | %.2f%% | %lld (%s) | %s | %d | %.2f%% | %s |\n",
+    method.c_str(), f.vertices, time, f.wrapToTarget.mean, f.targetToWrap.mean, f.wrapToTarget.largest,
+    f.targetToWrap.largest, f.selfIntersections, cgalSelf ? "yes" : "no", f.closedManifold ? "yes" : "no",
+    f.genus, f.smallAngles, status.c_str());
   std::fflush(stdout);
+}
+
+using Setter = std::function<void(vtkShrinkWrapFilter*, double)>;
+const std::map<std::string, Setter>& setters()
+{
+  static const std::map<std::string, Setter> s = {
+    { "D", [](vtkShrinkWrapFilter* w, double v) { w->SetD(v); } },
+    { "C", [](vtkShrinkWrapFilter* w, double v) { w->SetC(v); } },
+    { "C1", [](vtkShrinkWrapFilter* w, double v) { w->SetC1(v); } },
+    { "C2", [](vtkShrinkWrapFilter* w, double v) { w->SetC2(v); } },
+    { "TimeStep", [](vtkShrinkWrapFilter* w, double v) { w->SetTimeStep(v); } },
+    { "NumberOfSteps", [](vtkShrinkWrapFilter* w, double v) { w->SetNumberOfSteps(static_cast<int>(v)); } },
+    { "Resolution", [](vtkShrinkWrapFilter* w, double v) { w->SetResolution(static_cast<int>(v)); } },
+    { "StartOffset", [](vtkShrinkWrapFilter* w, double v) { w->SetStartOffset(v); } },
+    { "GapSize", [](vtkShrinkWrapFilter* w, double v) { w->SetGapSize(v); } },
+    { "TargetEdgeLength", [](vtkShrinkWrapFilter* w, double v) { w->SetTargetEdgeLength(v); } },
+    { "Remeshing", [](vtkShrinkWrapFilter* w, double v) { w->SetRemeshing(v != 0); } },
+    { "StartingShape", [](vtkShrinkWrapFilter* w, double v) { w->SetStartingShape(static_cast<int>(v)); } },
+    { "SubdivisionLevel", [](vtkShrinkWrapFilter* w, double v) { w->SetSubdivisionLevel(static_cast<int>(v)); } },
+  };
+  return s;
 }
 } // namespace
 
@@ -97,12 +139,53 @@ int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::cerr << "usage: BenchShrinkWrap <CGAL data/meshes folder> [output folder]\n";
+    std::cerr << "usage: BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b] [--set Name=value]\n";
     return 2;
   }
   const std::string folder = argv[1];
-  const std::string out = argc > 2 ? argv[2] : "";
-  for (const std::string name : { "bunny00", "armadillo" })
+  std::string out;
+  std::vector<std::string> names = { "camel", "hand", "ChineseDragon-10kv", "mech-holes-shark", "fandisk",
+    "elephant-with-holes", "armadillo" };
+  std::vector<std::pair<std::string, double>> sets;
+  bool ourVariants = true;
+  for (int a = 2; a < argc; ++a)
+  {
+    const std::string arg = argv[a];
+    if (arg == "--out" && a + 1 < argc)
+    {
+      out = argv[++a];
+    }
+    else if (arg == "--meshes" && a + 1 < argc)
+    {
+      names.clear();
+      std::stringstream list(argv[++a]);
+      for (std::string n; std::getline(list, n, ',');)
+      {
+        names.push_back(n);
+      }
+    }
+    else if (arg == "--set" && a + 1 < argc)
+    {
+      const std::string s = argv[++a];
+      const auto eq = s.find('=');
+      if (eq == std::string::npos || !setters().count(s.substr(0, eq)))
+      {
+        std::cerr << "unknown --set " << s << "\n";
+        return 2;
+      }
+      sets.emplace_back(s.substr(0, eq), std::stod(s.substr(eq + 1)));
+    }
+    else if (arg == "--defaults-only")
+    {
+      ourVariants = false;
+    }
+    else
+    {
+      std::cerr << "unknown argument " << arg << "\n";
+      return 2;
+    }
+  }
+  for (const std::string& name : names)
   {
     vtkSmartPointer<vtkPolyData> mesh = testing::readOFF(folder + "/" + name + ".off");
     if (!mesh)
@@ -110,58 +193,42 @@ int main(int argc, char* argv[])
       return 1;
     }
     const TriangleSoup target = testing::triangulated(mesh);
-    std::printf("\n%s: %zu triangles\n\n| method | vertices | SDF s | total s | wrap->target | target->wrap | min angle < 20 | status |\n"
-                "|---|---|---|---|---|---|---|---|\n",
-      name.c_str(), target.triangles.size());
-
-    // Ours: the field once (shown apart), then each level with it included in the total.
-    auto start = Clock::now();
-    vtkNew<vtkMeshSignedDistance> sdf;
-    sdf->SetInputData(mesh);
-    sdf->SetResolution(120);
-    sdf->Update();
-    const double sdfSeconds = seconds(start);
-    // The defaults (D = 0, paper Fig. 11), then D = 0.5, which edge flips make stable.
-    for (const double D : { 0.0, 0.5 })
+    const double diagonal = target.bounds().diagonal();
+    if (!out.empty())
     {
-      for (int level = 3; level <= 6; ++level)
-      {
-        vtkNew<vtkShrinkWrapFilter> wrap;
-        wrap->SetInputData(mesh);
-        wrap->SetSubdivisionLevel(level);
-        wrap->SetD(D);
-        start = Clock::now();
-        wrap->Update(); // computes its own field at Resolution 120: the total includes it
-        const double total = seconds(start);
-        vtkPolyData* result = wrap->GetOutput();
-        auto* status = vtkStringArray::SafeDownCast(result->GetFieldData()->GetAbstractArray("Status"));
-        row("Shrink Wrap s=" + std::to_string(level) + (D > 0 ? ", D=0.5" : ""), sdfSeconds, total,
-          testing::triangulated(result), target, status ? status->GetValue(0) : "none");
-        if (!out.empty() && level == 4)
-        {
-          write(testing::triangulated(result), out + "/" + name + "_shrinkwrap_s4" + (D > 0 ? "_D05" : "") + ".vtp");
-        }
-      }
+      write(target, out + "/" + name + "_target.vtp");
     }
+    std::printf("\n%s: %zu triangles, distances in %% of the diagonal %.4g\n\n", name.c_str(), target.triangles.size(), diagonal);
+    header();
 
-    // The Offset Surface start (StartOffset 3, StartClosing 3 cells; vertices follow the field), with
-    // D = 0 and D = 0.5.
-    for (const double D : { 0.0, 0.5 })
+    // Ours: the defaults, then two other target edge lengths.
+    for (const double divisor : ourVariants ? std::vector<double>{ 0, 25, 100 } : std::vector<double>{ 0 })
     {
       vtkNew<vtkShrinkWrapFilter> wrap;
       wrap->SetInputData(mesh);
-      wrap->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
-      wrap->SetD(D);
-      start = Clock::now();
+      for (const auto& s : sets)
+      {
+        setters().at(s.first)(wrap, s.second);
+      }
+      if (divisor > 0)
+      {
+        wrap->SetTargetEdgeLength(diagonal / divisor);
+        // The default cell (Resolution 120 over about 1.25 times the longest side) is near diagonal / 70.
+        wrap->SetResolution(std::max(wrap->GetResolution(), static_cast<int>(120 * divisor / 50)));
+      }
+      const auto start = Clock::now();
       wrap->Update();
       const double total = seconds(start);
       vtkPolyData* result = wrap->GetOutput();
       auto* status = vtkStringArray::SafeDownCast(result->GetFieldData()->GetAbstractArray("Status"));
-      row(std::string("Shrink Wrap, offset start") + (D > 0 ? ", D=0.5" : ""), sdfSeconds, total,
-        testing::triangulated(result), target, status ? status->GetValue(0) : "none");
-      if (!out.empty())
+      const std::string label = divisor > 0
+        ? "Shrink Wrap L = diag/" + std::to_string(static_cast<int>(divisor)) + ", Resolution " + std::to_string(wrap->GetResolution())
+        : std::string("Shrink Wrap, defaults");
+      const TriangleSoup soup = testing::triangulated(result);
+      row(label, total, soup, target, status ? status->GetValue(0) : "none");
+      if (!out.empty() && divisor == 0)
       {
-        write(testing::triangulated(result), out + "/" + name + "_shrinkwrap_offset" + (D > 0 ? "_D05" : "") + ".vtp");
+        write(soup, out + "/" + name + "_shrinkwrap.vtp");
       }
     }
 
@@ -176,33 +243,15 @@ int main(int argc, char* argv[])
     {
       faces.push_back({ static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]), static_cast<std::size_t>(t[2]) });
     }
-    const double diagonal = target.bounds().diagonal();
     for (const int divisor : { 20, 50, 100 })
     {
       const double alpha = diagonal / divisor, offset = alpha / 30;
       CgalMesh wrapped;
-      start = Clock::now();
+      const auto start = Clock::now();
       CGAL::alpha_wrap_3(points, faces, alpha, offset, wrapped);
       const double total = seconds(start);
-      TriangleSoup soup;
-      std::map<CgalMesh::Vertex_index, int> index;
-      for (auto v : wrapped.vertices())
-      {
-        index[v] = static_cast<int>(soup.points.size());
-        const Point& p = wrapped.point(v);
-        soup.points.emplace_back(p.x(), p.y(), p.z());
-      }
-      for (auto f : wrapped.faces())
-      {
-        std::array<int, 3> tri{};
-        int k = 0;
-        for (auto v : CGAL::vertices_around_face(wrapped.halfedge(f), wrapped))
-        {
-          tri[k++ % 3] = index[v];
-        }
-        soup.triangles.push_back(tri);
-      }
-      row("alpha_wrap_3 diag/" + std::to_string(divisor), 0, total, soup, target, "ok");
+      const TriangleSoup soup = soupOf(wrapped);
+      row("alpha_wrap_3 diag/" + std::to_string(divisor), total, soup, target, "ok");
       if (!out.empty() && divisor == 50)
       {
         write(soup, out + "/" + name + "_alphawrap_50.vtp");

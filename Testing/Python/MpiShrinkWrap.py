@@ -13,7 +13,8 @@ LoadPlugin(plugin, ns=globals())
 controller = vtkProcessModule.GetProcessModule().GetGlobalController()
 rank, ranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 
-wrap = ShrinkWrap(Input=OpenDataFile(mesh), NumberOfSteps=20, Resolution=48, SubdivisionLevel=3)
+wrap = ShrinkWrap(Input=OpenDataFile(mesh), NumberOfSteps=20, Resolution=48, SubdivisionLevel=3,
+                  StartingShape="Icosphere", Remeshing=0)
 wrap.UpdatePipeline(20 * wrap.TimeStep)
 local = wrap.GetClientSideObject().GetOutputDataObject(0).GetNumberOfPoints()
 total = wrap.GetDataInformation().GetNumberOfPoints()

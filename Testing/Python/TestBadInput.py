@@ -55,7 +55,7 @@ values = data.GetPointData().GetArray("SignedDistance")
 check(data.GetNumberOfPoints() > 0 and values.GetRange()[0] < 0,
       "Group Datasets -> Mesh Signed Distance: one field (%d nodes, min %.3f)"
       % (data.GetNumberOfPoints(), values.GetRange()[0] if values else float("nan")))
-wrap = ShrinkWrap(Input=group, NumberOfSteps=10, Resolution=32)
+wrap = ShrinkWrap(Input=group, NumberOfSteps=10, Resolution=32, StartingShape="Icosphere", Remeshing=0)
 data = fetched(wrap)
 check(data.IsA("vtkMultiBlockDataSet") and data.GetNumberOfBlocks() == 2 and
       all(data.GetBlock(b).GetNumberOfPoints() == 642 for b in range(2)),
@@ -65,11 +65,11 @@ check(data.IsA("vtkMultiBlockDataSet") and data.GetNumberOfBlocks() == 2 and
 mixed = GroupDatasets(Input=[sphere, Delaunay3D(Input=sphere)])
 mixed_field = MeshSignedDistance(Input=mixed, Resolution=32)
 check(fetched(mixed_field).GetNumberOfPoints() == 0, "a block of tetrahedra -> Mesh Signed Distance: empty output")
-data = fetched(ShrinkWrap(Input=mixed, NumberOfSteps=3, Resolution=32))
+data = fetched(ShrinkWrap(Input=mixed, NumberOfSteps=3, Resolution=32, StartingShape="Icosphere", Remeshing=0))
 check(data.GetBlock(0).GetNumberOfPoints() == 642, "a block of tetrahedra beside a mesh -> Shrink Wrap: the mesh wrapped")
 
 # Optional ports can be cleared.
-lone = ShrinkWrap(Input=sphere, NumberOfSteps=5, Resolution=32)
+lone = ShrinkWrap(Input=sphere, NumberOfSteps=5, Resolution=32, StartingShape="Icosphere", Remeshing=0)
 tight = MeshSignedDistance(Input=sphere, Resolution=16, OffsetFactor=0)
 lone.DistanceField = tight
 check(fetched(lone).GetNumberOfPoints() == 0, "a field too tight for the start: empty output")
@@ -83,12 +83,12 @@ check(lone.GetClientSideObject().GetNumberOfInputConnections(2) == 0 and fetched
       "Initial Surface set to None: disconnected")
 
 # Cache Memory Limit 1 MiB, Subdivision Level 6, 40 steps: played to the end, then step 7 (SIGFPE before).
-starved = ShrinkWrap(Input=sphere, SubdivisionLevel=6, NumberOfSteps=40, CacheMemoryLimitMiB=1, Resolution=32)
+starved = ShrinkWrap(Input=sphere, SubdivisionLevel=6, NumberOfSteps=40, CacheMemoryLimitMiB=1, Resolution=32, StartingShape="Icosphere", Remeshing=0)
 tau = starved.TimeStep
 for k in range(41):
     starved.UpdatePipeline(k * tau)
 data = fetched(starved, 7 * tau)
-fresh = fetched(ShrinkWrap(Input=sphere, SubdivisionLevel=6, NumberOfSteps=7, Resolution=32))
+fresh = fetched(ShrinkWrap(Input=sphere, SubdivisionLevel=6, NumberOfSteps=7, Resolution=32, StartingShape="Icosphere", Remeshing=0))
 same = data.GetNumberOfPoints() == fresh.GetNumberOfPoints() and all(
     data.GetPoint(i) == fresh.GetPoint(i) for i in range(0, data.GetNumberOfPoints(), 97))
 check(step_of(data) == 7 and same, "a 1 MiB cache scrubbed back to step 7: the same surface as a fresh run")

@@ -52,7 +52,7 @@ check(computed(wrap) == 5, "changing C drops the cache (5 steps computed again)"
 
 # During a long run: progress per step; a property edited while it runs (the panel, a callback)
 # applies from the next update; an abort leaves the computed steps cached and the next update resumes.
-long_run = ShrinkWrap(Input=reader, NumberOfSteps=60, Resolution=64)
+long_run = ShrinkWrap(Input=reader, NumberOfSteps=60, Resolution=64, StartingShape="Icosphere", Remeshing=0)
 algorithm = long_run.GetClientSideObject()
 progress = []
 
@@ -90,14 +90,16 @@ _, data = points(long_run)
 check(data.GetNumberOfPoints() == 642 and data.GetFieldData().GetArray("StepIndex").GetValue(0) == 60,
       "asked for the end again, it runs to the end")
 
-# The Offset Surface start, by its panel names; its own properties show only with it.
-offset = ShrinkWrap(Input=reader, StartingShape="Offset Surface", StartOffset=3, StartClosing=3, NumberOfSteps=40)
+# The Offset Surface start with remeshing (the defaults), by the panel names; against the paper's
+# icosphere with a fixed vertex count.
+offset = ShrinkWrap(Input=reader, StartingShape="Offset Surface", StartOffset=3, GapSize=0, Remeshing=1,
+                    TargetEdgeLength=0, NumberOfSteps=40)
 offset.UpdatePipeline(40 * tau)
 _, data = points(offset)
 check(data.GetNumberOfPoints() > 642 and data.GetFieldData().GetAbstractArray("Status").GetValue(0) == "ok",
       "the Offset Surface start wraps (%d vertices)" % data.GetNumberOfPoints())
 distance = data.GetPointData().GetArray("Distance")
-icosphere_run = ShrinkWrap(Input=reader, NumberOfSteps=40)
+icosphere_run = ShrinkWrap(Input=reader, NumberOfSteps=40, StartingShape="Icosphere", Remeshing=0)
 icosphere_run.UpdatePipeline(40 * tau)
 _, near = points(icosphere_run)
 largest = lambda d: max(abs(d.GetPointData().GetArray("Distance").GetValue(i)) for i in range(d.GetNumberOfPoints()))

@@ -101,6 +101,14 @@ SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const Grid
   }
   SignedDistanceResult result = computeSignedDistance(source, lattice, settings, distance, progress);
   result.treeSeconds = treeSeconds;
+  return result;
+}
+
+SignedDistanceResult computeSignedDistance(const TriangleSource& source, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+{
+  SignedDistanceResult result =
+    computeSignedDistance(static_cast<const DistanceSource&>(source), lattice, settings, distance, progress);
   result.boundaryEdges = source.boundaryEdges();
   result.nonManifoldEdges = source.nonManifoldEdges();
   return result;
@@ -216,7 +224,7 @@ Status checkMemory(const GridLattice& lattice, const SignedDistanceSettings& set
 
 Status signedDistanceGrid(const TriangleSoup& soup, const Box& bounds, const GridPlacement& placement,
   const SignedDistanceSettings& settings, DistanceGrid& grid, SignedDistanceResult& result,
-  const Progress& progress)
+  const Progress& progress, std::shared_ptr<const TriangleSource>* target)
 {
   GridLattice lattice;
   Status status = checkSoup(soup);
@@ -232,9 +240,18 @@ Status signedDistanceGrid(const TriangleSoup& soup, const Box& bounds, const Gri
   {
     return status;
   }
+  const auto clock = std::chrono::steady_clock::now();
+  auto source = std::make_shared<const TriangleSource>(soup);
+  const double treeSeconds = secondsSince(clock);
   std::vector<float> values(lattice.nodeCount());
-  result = computeSignedDistance(soup, lattice, settings, values.data(), progress);
+  result = progress.report(0.05) ? computeSignedDistance(*source, lattice, settings, values.data(), progress)
+                                 : SignedDistanceResult();
+  result.treeSeconds = treeSeconds;
   grid = result.completed ? DistanceGrid(lattice, std::move(values)) : DistanceGrid();
+  if (target)
+  {
+    *target = std::move(source);
+  }
   return {};
 }
 

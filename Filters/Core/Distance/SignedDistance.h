@@ -10,6 +10,7 @@
 #include "TriangleSoup.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace shrinkwrap
@@ -49,8 +50,11 @@ int workingBytesPerNode(const SignedDistanceSettings& settings);
 // negative inside, positive outside. The soup must be non-empty with finite coordinates.
 SignedDistanceResult computeSignedDistance(const TriangleSoup& soup, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
-// The same for any distance source (DistanceSource.h); the soup's form builds a TriangleSource.
+// The same for any distance source (DistanceSource.h); the soup's form builds a TriangleSource, and
+// a TriangleSource's form also counts its boundary and non-manifold edges.
 SignedDistanceResult computeSignedDistance(const DistanceSource& source, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
+SignedDistanceResult computeSignedDistance(const TriangleSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 
 // Why a soup has no distance field, if it has none: no triangles, NaN or infinite coordinates,
@@ -63,10 +67,11 @@ Status checkMemory(const GridLattice& lattice, const SignedDistanceSettings& set
 
 // The whole of Mesh Signed Distance for a caller that wants the field itself (Shrink Wrap, without a
 // DistanceField input): checks, the lattice placed around the soup's bounds, and the distances. An
-// aborted run leaves `grid` empty and the result's `completed` false.
+// aborted run leaves `grid` empty and the result's `completed` false. `target`, if given, receives
+// the soup's TriangleSource (its AABB tree answers exact closest-point queries later).
 Status signedDistanceGrid(const TriangleSoup& soup, const Box& bounds, const GridPlacement& placement,
   const SignedDistanceSettings& settings, DistanceGrid& grid, SignedDistanceResult& result,
-  const Progress& progress = {});
+  const Progress& progress = {}, std::shared_ptr<const TriangleSource>* target = nullptr);
 
 } // namespace shrinkwrap
 

@@ -37,6 +37,8 @@ Status validate(const EvolverSettings& settings, double scale, const SurfaceMesh
     return Status::failure("C1, C2, C and D must not be negative");
   if (settings.omegaAngle < 0 || settings.omegaVolume < 0 || settings.rhoA < 0)
     return Status::failure("the redistribution weights must not be negative");
+  if (settings.remeshing.targetLength < 0 || !std::isfinite(settings.remeshing.targetLength))
+    return Status::failure("the target edge length must not be negative");
   if (mesh.vertexCount() < 4)
     return Status::failure("the surface is empty");
   return {};
@@ -65,7 +67,7 @@ struct Evolver::Controls
   std::vector<Vec3> grad;
 };
 
-Evolver::Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const DistanceGrid* field,
+Evolver::Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const TargetDistance* field,
   const Box& domain, double scale, const Vec3& center)
   : Mesh(mesh)
   , Settings(settings)
@@ -281,7 +283,11 @@ StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool 
       this->connectivityChanged(count);
       return mended;
     }
-    report = StepReport{ Failure::None, mended.step, -1, {}, report.flips, report.collapses, mended.smallestAngle };
+    const StepReport adjusted = report;
+    report = mended;
+    report.flips = adjusted.flips;
+    report.collapses = adjusted.collapses;
+    report.splits = adjusted.splits;
   }
   ++this->Steps;
   return report;
@@ -304,10 +310,27 @@ StepReport Evolver::run(int n, const Progress& progress)
 void Evolver::adjustConnectivity(StepReport& report)
 {
   const EvolverSettings& s = this->Settings;
+  if (s.remeshing.targetLength > 0)
+  {
+    const int count = this->Mesh.vertexCount();
+    RemeshSettings r = s.remeshing;
+    r.targetLength *= this->Scale;
+    r.flips = s.flips;
+    r.collapses = s.collapses;
+    const RemeshReport remeshed = remesh(this->Mesh, r);
+    report.splits += remeshed.splits;
+    report.collapses += remeshed.collapses;
+    report.flips += remeshed.flips;
+    if (report.connectivityChanged())
+    {
+      this->connectivityChanged(count);
+    }
+  }
   if (s.edgeFlips)
   {
-    report.flips = flipEdges(this->Mesh, s.flips);
-    if (report.flips > 0)
+    const int flips = flipEdges(this->Mesh, s.flips);
+    report.flips += flips;
+    if (flips > 0)
     {
       this->connectivityChanged(this->Mesh.vertexCount());
     }

@@ -4,20 +4,23 @@
 // (eq. (4)), d the signed distance to the target. One step is semi-implicit finite volumes with
 // barycentric co-volumes and cotangent weights (Section 2.2); per vertex i and coordinate:
 //   (1 + tau eps_i/|V_i| sum_j w_ij) F_i - tau eps_i/|V_i| sum_j w_ij F_j = F_i^old + tau eta_i N_i + tau v_T,i.
-// A step may end with edge flips (EdgeFlips.h), which change the triangles and not the vertices, and
-// edge collapses (EdgeCollapses.h), which merge the ends of the short edges of degenerating triangles;
-// callers may edit the surface between steps (edit()), e.g. split edges.
+// A step may end with remeshing towards a target edge length (Remesher.h: splits, collapses, valence
+// flips, relaxation), so the vertex count follows the surface as it moves into concavities and along
+// thin parts; with edge flips (EdgeFlips.h), which change the triangles and not the vertices; and with
+// edge collapses (EdgeCollapses.h), which merge the ends of the short edges of degenerating triangles.
+// Callers may edit the surface between steps (edit()), e.g. split edges.
 // Positions may be scaled for stability (Section 2.4, StabilityScaling.h): the evolver works in scaled
 // coordinates and callers only ever see their own units.
 #ifndef ShrinkWrap_Evolver_h
 #define ShrinkWrap_Evolver_h
 
-#include "DistanceGrid.h"
 #include "EdgeCollapses.h"
 #include "EdgeFlips.h"
 #include "Progress.h"
+#include "Remesher.h"
 #include "Status.h"
 #include "SurfaceGeometry.h"
+#include "TargetDistance.h"
 
 #include <functional>
 #include <memory>
@@ -61,6 +64,9 @@ struct EvolverSettings
   FlipSettings flips;
   bool edgeCollapses = true;    // collapse the short edges of degenerating triangles (EdgeCollapses.h)
   CollapseSettings collapses;
+  // Remeshing after every step towards remeshing.targetLength (in the caller's units; 0: none).
+  // One iteration per step: the surface moves little in a step, so the steps converge the mesh.
+  RemeshSettings remeshing = duringEvolution();
   bool volumePerArea = true;    // v_T = (integral of grad psi over V_i) / |V_i|; false: the paper's code
   LinearSolver solver = LinearSolver::ConjugateGradient;
   double solverTolerance = 1e-6; // relative residual: positions to about 1e-6 of the scaled size
@@ -75,8 +81,15 @@ struct EvolverSettings
     s.distanceWeight = true;
     s.edgeFlips = false;
     s.edgeCollapses = false;
+    s.remeshing.targetLength = 0;
     s.solverTolerance = 1e-10;
     return s;
+  }
+  static RemeshSettings duringEvolution()
+  {
+    RemeshSettings r;
+    r.iterations = 1;
+    return r;
   }
 };
 
@@ -97,8 +110,10 @@ struct StepReport
   std::string message;
   int flips = 0;     // edges flipped after the step
   int collapses = 0; // edges collapsed after the step (vertices removed)
+  int splits = 0;    // edges split after the step (vertices added)
   double smallestAngle = M_PI; // radians, over the triangles at the end of the step (before any repair)
   bool ok() const { return this->failure == Failure::None; }
+  bool connectivityChanged() const { return this->flips > 0 || this->collapses > 0 || this->splits > 0; }
 };
 
 class Evolver
@@ -107,7 +122,7 @@ public:
   // `field` may be null (then d = 0, grad d = 0: eps = C1 when C2 = 0, eta = 0). `domain` bounds the
   // vertices (in the caller's units); `scale` (phi) and `center` define the scaled coordinates
   // y = phi (x - center). Check `status()` after construction.
-  Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const DistanceGrid* field = nullptr,
+  Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const TargetDistance* field = nullptr,
     const Box& domain = Box(), double scale = 1.0, const Vec3& center = Vec3::Zero());
   ~Evolver();
 
@@ -155,13 +170,13 @@ private:
   bool solve(const Controls& c, const std::vector<Vec3>& vt, std::vector<Vec3>& next);
   StepReport accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool converged);
   StepReport check(const std::vector<Vec3>& y) const;
-  void adjustConnectivity(StepReport& report); // flips, then collapses, as the settings ask
+  void adjustConnectivity(StepReport& report); // remeshing, flips, then collapses, as the settings ask
   void connectivityChanged(int previousVertexCount);
   std::vector<Vec3>& velocity() { return this->Mesh.vertexData("velocity"); }
 
   SurfaceMesh Mesh; // positions: the scaled state; vertex data "velocity": v_T of the last step
   EvolverSettings Settings;
-  const DistanceGrid* Field;
+  const TargetDistance* Field;
   Box Domain; // scaled
   double Scale;
   Vec3 Center;

@@ -27,4 +27,9 @@ double stabilityScale(double timeStep, double radius, int level)
   return stabilityScale(timeStep, radius, icosphereVertexCount(level));
 }
 
+double stabilityScaleForEdgeLength(double timeStep, double edgeLength)
+{
+  return std::sqrt(timeStep / (0.5 * std::sqrt(3.0) * edgeLength * edgeLength));
+}
+
 } // namespace shrinkwrap

@@ -17,6 +17,9 @@ double meanCoVolume(double radius, int level);
 // phi such that phi^2 mu_r(V) = tau.
 double stabilityScale(double timeStep, double radius, long long vertexCount);
 double stabilityScale(double timeStep, double radius, int level);
+// The same for a surface remeshed towards edge length L: its co-volumes are near those of equilateral
+// triangles, (sqrt(3) / 2) L^2 per vertex, whatever its vertex count (which follows the surface).
+double stabilityScaleForEdgeLength(double timeStep, double edgeLength);
 
 } // namespace shrinkwrap
 

@@ -3,7 +3,6 @@
 #include "Components.h"
 #include "Icosphere.h"
 #include "Relaxation.h"
-#include "SignedDistance.h"
 #include "SurfaceGeometry.h"
 
 #include <algorithm>
@@ -11,28 +10,19 @@
 namespace shrinkwrap
 {
 
-Status offsetSurface(
-  const DistanceGrid& field, double offset, double closing, const Contour& contour, TriangleSurface& surface)
+Status offsetSurface(const DistanceGrid& field, double offset, const Contour& contour, TriangleSurface& surface)
 {
-  const TriangleSoup dilated = contour(field, offset + closing);
+  surface = contour(field, offset);
   SurfaceMesh closed;
-  if (dilated.triangles.empty() || !SurfaceMesh::build(dilated.points, dilated.triangles, closed))
+  if (surface.triangles.empty() || !SurfaceMesh::build(surface.points, surface.triangles, closed))
   {
-    return Status::failure("the contour at Start Offset + Start Closing is empty or reaches the border of "
-                           "the distance field; lower them, or enlarge the field");
+    return Status::failure("the contour at Start Offset is empty or reaches the border of the distance "
+                           "field; lower it, or enlarge the field");
   }
-  std::vector<float> distance(field.lattice().nodeCount());
-  const SignedDistanceResult result =
-    computeSignedDistance(dilated, field.lattice(), SignedDistanceSettings(), distance.data());
-  if (!result.isSigned)
-  {
-    return Status::failure("the distance to the contour at Start Offset + Start Closing has no sign");
-  }
-  surface = contour(DistanceGrid(field.lattice(), std::move(distance)), -closing);
   removeCavities(surface);
   if (surface.triangles.empty())
   {
-    return Status::failure("nothing is left of the offset surface after the closing");
+    return Status::failure("nothing is left of the offset surface without its cavities");
   }
   return {};
 }
@@ -64,7 +54,7 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   }
   else if (settings.shape == StartShape::OffsetSurface)
   {
-    if (Status status = offsetSurface(field, settings.offset * h, settings.closing * h, contour, start); !status)
+    if (Status status = offsetSurface(field, settings.offset * h, contour, start); !status)
     {
       return Status::failure("cannot start from the offset surface: " + status.message());
     }

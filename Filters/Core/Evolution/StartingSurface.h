@@ -6,6 +6,7 @@
 
 #include "DistanceGrid.h"
 #include "EdgeFlips.h"
+#include "GapClosing.h"
 #include "Status.h"
 #include "SurfaceMesh.h"
 #include "TriangleSurface.h"
@@ -23,30 +24,24 @@ enum class StartShape
 
 struct StartSettings
 {
-  StartShape shape = StartShape::Icosphere;
+  StartShape shape = StartShape::OffsetSurface;
   int subdivision = 3;   // s, the icosphere's level (642 vertices)
-  double offset = 3;     // the offset surface's distance from the target, in cells of the field
-  double closing = 3;    // and the closing that keeps it from pinching, in cells
+  double offset = 3;     // the offset surface's distance from the (closed) target, in cells of the field
   int relaxation = 10;   // tangential relaxation iterations of a contour or a given surface
 };
 
-// Marching cubes of a distance field at one value (the filters give VTK's Flying Edges).
-using Contour = std::function<TriangleSurface(const DistanceGrid& field, double value)>;
-
-// The paper's Section 5 start, a contour of d near the target, taken as a morphological closing: the
-// target dilated by offset + closing, then eroded by closing (both in the field's units). A plain
-// contour nearly touches itself where two parts are about twice the offset apart, and the thin necks
-// marching cubes leaves there pinch off under curvature at once; the closing fills gaps narrower than
-// 2 (offset + closing). Walls of cavities (an unsigned field's contour has them inside an open target)
-// are left out.
-Status offsetSurface(
-  const DistanceGrid& field, double offset, double closing, const Contour& contour, TriangleSurface& surface);
+// The paper's Section 5 start, a contour of d at `offset` (in the field's units) from the target. Give
+// it the field of the target's closing (GapClosing.h): a contour of the target's own field nearly
+// touches itself where two parts are about twice the offset apart, and the thin necks marching cubes
+// leaves there pinch off under curvature at once. Walls of cavities (an unsigned field's contour has
+// them inside an open target) are left out.
+Status offsetSurface(const DistanceGrid& field, double offset, const Contour& contour, TriangleSurface& surface);
 
 // Outward orientation, which eta N with D > 0 and the output's normals and curvatures rely on.
 Status orientOutwards(SurfaceMesh& mesh);
 
 // The starting surface, ready to evolve: `given` if not null, else the shape of `settings` (the
-// icosphere around `targetBox`); specks smaller than two cells of the field removed (counted in
+// icosphere around `targetBox`, or the offset surface of `field`, which should be the closing's); specks smaller than two cells of the field removed (counted in
 // `specks`), outward oriented, and a contour or a given surface relaxed with `flips`.
 Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSurface* given,
   const StartSettings& settings, const FlipSettings& flips, const Contour& contour, SurfaceMesh& mesh,

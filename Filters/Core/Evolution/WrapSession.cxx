@@ -14,13 +14,70 @@ Status WrapSettings::validate() const
     return Status::failure("TimeStep (tau) must be positive");
   if (this->start.subdivision < 0 || this->start.subdivision > 8)
     return Status::failure("SubdivisionLevel must be between 0 and 8");
+  if (!(this->targetLength >= 0) || !std::isfinite(this->targetLength))
+    return Status::failure("TargetEdgeLength must not be negative (0: automatic)");
+  if (!(this->gapSize >= 0) || !std::isfinite(this->gapSize))
+    return Status::failure("GapSize must not be negative (0: automatic)");
   return {};
 }
 
-Status WrapSession::create(DistanceGrid field, const Box& targetBox, const SurfaceMesh& start,
+WrapSettings WrapSettings::resolved(const Box& targetBox) const
+{
+  WrapSettings s = *this;
+  const double diagonal = targetBox.diagonal();
+  if (s.targetLength <= 0)
+  {
+    s.targetLength = diagonal / kLengthDivisor;
+  }
+  if (s.gapSize <= 0)
+  {
+    s.gapSize = diagonal / kGapDivisor;
+  }
+  s.evolution.remeshing.targetLength = s.remeshing ? s.targetLength : 0;
+  return s;
+}
+
+double WrapSettings::fieldMargin(const Box& targetBox, bool givenStart) const
+{
+  const GridPlacement paper;
+  if (givenStart || this->start.shape != StartShape::OffsetSurface)
+  {
+    return paper.offsetFactor;
+  }
+  // Beyond the box scaled by paper.boxScale, o s on every side (s its longest side) must hold the
+  // start's offset, the closing's radius and three cells of room: o s >= (offset + 3) h + gap / 2, with
+  // h = s (1 + 2 o) / resolution.
+  const double side = paper.boxScale * targetBox.size().maxCoeff();
+  const double cells = (this->start.offset + 3) / std::max(this->resolution, 1);
+  const double room = 1 - 2 * cells;
+  if (!(side > 0) || !(room > 0))
+  {
+    return paper.offsetFactor;
+  }
+  return std::min((cells + 0.5 * this->gapSize / side) / room, paper.offsetFactor);
+}
+
+Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const DistanceSource> exact,
+  const WrapSettings& settings, const Contour& contour, WrapFields& fields)
+{
+  DistanceGrid closed;
+  if (Status status = closingField(grid, 0.5 * settings.gapSize, contour, closed); !status)
+  {
+    return status;
+  }
+  if (!settings.exactNearTarget)
+  {
+    exact.reset();
+  }
+  fields.driving = TargetDistance(std::move(closed), exact, settings.exactBand, isSigned);
+  fields.target = TargetDistance(std::move(grid), exact, settings.exactBand, isSigned);
+  return {};
+}
+
+Status WrapSession::create(WrapFields fields, const Box& targetBox, const SurfaceMesh& start,
   const WrapSettings& settings, std::unique_ptr<WrapSession>& session)
 {
-  const Box domain = field.lattice().bounds();
+  const Box domain = fields.driving.grid().lattice().bounds();
   for (const Vec3& p : start.points())
   {
     if (domain.squaredDistance(p) > 0)
@@ -31,11 +88,11 @@ Status WrapSession::create(DistanceGrid field, const Box& targetBox, const Surfa
   }
   std::unique_ptr<WrapSession> s(new WrapSession());
   s->Settings = settings;
-  s->Field = std::move(field);
+  s->Fields = std::move(fields);
   const Vec3 size = targetBox.size();
   s->Radius = 0.5 * std::max(size.minCoeff(), 1e-3 * size.maxCoeff());
   s->Evolution = std::make_unique<Evolver>(
-    start, settings.evolution, &s->Field, domain, s->scaleFor(start.vertexCount()), targetBox.center());
+    start, settings.evolution, &s->Fields.driving, domain, s->scaleFor(start.vertexCount()), targetBox.center());
   if (!s->Evolution->status())
   {
     return s->Evolution->status();
@@ -47,9 +104,13 @@ Status WrapSession::create(DistanceGrid field, const Box& targetBox, const Surfa
 
 double WrapSession::scaleFor(int vertexCount) const
 {
-  return this->Settings.automaticScaling
-    ? stabilityScale(this->Settings.evolution.timeStep, this->Radius, static_cast<long long>(vertexCount))
-    : 1.0;
+  const EvolverSettings& e = this->Settings.evolution;
+  if (!this->Settings.automaticScaling)
+  {
+    return 1.0;
+  }
+  return e.remeshing.targetLength > 0 ? stabilityScaleForEdgeLength(e.timeStep, e.remeshing.targetLength)
+                                      : stabilityScale(e.timeStep, this->Radius, static_cast<long long>(vertexCount));
 }
 
 void WrapSession::cacheCurrent(bool connectivityChanged, bool edited)
@@ -94,7 +155,7 @@ bool WrapSession::advanceTo(int k, const Progress& progress)
         this->Failure = report.message;
         break;
       }
-      this->cacheCurrent(report.flips > 0 || report.collapses > 0);
+      this->cacheCurrent(report.connectivityChanged());
       if (!progress.report(static_cast<double>(step - first) / (target - first)))
       {
         stopped = true;

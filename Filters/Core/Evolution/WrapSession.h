@@ -24,16 +24,47 @@ struct WrapSettings
   bool automaticScaling = true; // phi of Section 2.4
   int resolution = 120;         // cells along the longest axis of the distance field computed here
   double cacheMiB = 512;        // memory for cached steps
+  // Remeshing after every step towards the target edge length L (EvolverSettings::remeshing), so the
+  // vertex count follows the surface; phi then follows L (StabilityScaling.h).
+  bool remeshing = true;
+  double targetLength = 0;      // L, in the target's units; 0: automatic (kAutomaticDivisor)
+  double gapSize = 0;           // gaps narrower than this are bridged (GapClosing.h); 0: automatic
+  bool exactNearTarget = true;  // d and grad d from the target's closest point near it (TargetDistance.h)
+  double exactBand = 2;         // in cells of the field
+
+  // The automatic sizes: the target's bounding-box diagonal over these.
+  static constexpr double kLengthDivisor = 50;
+  static constexpr double kGapDivisor = 50;
 
   Status validate() const;
+  // These settings with the automatic sizes resolved for a target of this box, and L passed on to
+  // the evolution.
+  WrapSettings resolved(const Box& targetBox) const;
+  // GridPlacement::offsetFactor of the field computed here: a box just large enough for the offset
+  // start and the gap closing (cells spent on the object), or the paper's for the icosphere or a
+  // given start, which may lie anywhere around the target. Resolved settings.
+  double fieldMargin(const Box& targetBox, bool givenStart) const;
 };
+
+// The distances a wrap moves on.
+struct WrapFields
+{
+  TargetDistance driving; // to the target closed over gaps narrower than the gap size
+  TargetDistance target;  // to the target itself: what the output's closeness measures
+};
+
+// The fields of a wrap from the target's grid (signed or not) and, when `exact` is given, the target
+// itself for the near field; `settings` resolved.
+Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const DistanceSource> exact,
+  const WrapSettings& settings, const Contour& contour, WrapFields& fields);
 
 class WrapSession
 {
 public:
-  // `start` ready to evolve (startingSurface()); `targetBox` sizes phi (Section 2.4: the mean
-  // co-volume of the sphere inscribed in the target's box is tau) and centres the scaled coordinates.
-  static Status create(DistanceGrid field, const Box& targetBox, const SurfaceMesh& start,
+  // `start` ready to evolve (startingSurface()); `settings` resolved. `targetBox` centres the scaled
+  // coordinates and, without remeshing, sizes phi (Section 2.4: the mean co-volume of the sphere
+  // inscribed in the target's box is tau).
+  static Status create(WrapFields fields, const Box& targetBox, const SurfaceMesh& start,
     const WrapSettings& settings, std::unique_ptr<WrapSession>& session);
 
   // The step shown for a wanted one: after a failure, the last good step at most.
@@ -54,7 +85,7 @@ public:
   // settings scale automatically, the current step is cached anew and later ones are dropped.
   Status edit(const std::function<void(SurfaceMesh&)>& change);
 
-  const DistanceGrid& field() const { return this->Field; }
+  const WrapFields& fields() const { return this->Fields; }
   const Evolver& evolver() const { return *this->Evolution; }
   int computedSteps() const { return this->Computed; }
   int lastGood() const { return this->LastGood; }
@@ -66,7 +97,7 @@ private:
   void cacheCurrent(bool connectivityChanged, bool edited = false);
 
   WrapSettings Settings;
-  DistanceGrid Field;
+  WrapFields Fields;
   double Radius = 1; // of the sphere inscribed in the target's box
   std::unique_ptr<Evolver> Evolution;
   StepCache Cache;

@@ -103,7 +103,8 @@ void advection()
   settings.C2 = 1.0;
   settings.C = 5.0;
   settings.D = 0.0;
-  Evolver evolver(start, settings, &field, lattice.bounds());
+  const TargetDistance distance(field);
+  Evolver evolver(start, settings, &distance, lattice.bounds());
   for (int k = 0; k < 200; ++k)
   {
     const StepReport r = evolver.step();
@@ -241,7 +242,7 @@ double largestDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
 // same surface bit for bit.
 void splitsBetweenSteps()
 {
-  const DistanceGrid field = unitSphereField();
+  const WrapFields field{ TargetDistance(unitSphereField()), TargetDistance(unitSphereField()) };
   const TriangleSurface sphere = icosphere(2, Vec3::Zero(), 1.6);
   SurfaceMesh split = meshOf(sphere);
   splitEdges(split, edgesOf(split));

@@ -180,7 +180,9 @@ void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
   f->SetFlipDihedralLimit(dice.value(60));
   f->SetStartingShape(dice.between(0, 1));
   f->SetStartOffset(dice.value(3));
-  f->SetStartClosing(dice.value(3));
+  f->SetGapSize(dice.chance(0.5) ? 0 : dice.value(0.2));
+  f->SetRemeshing(dice.chance(0.7));
+  f->SetTargetEdgeLength(dice.chance(0.5) ? 0 : dice.value(0.1));
   f->SetInitialRelaxation(dice.between(-1, 12));
   f->SetAutomaticScaling(dice.chance(0.8));
   f->SetSolverTolerance(dice.value(1e-6));
@@ -367,6 +369,9 @@ int TestFuzzFilters(int argc, char* argv[])
       wrap->SetRhoA(1);
       wrap->SetFlipDihedralLimit(60);
       wrap->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE);
+      wrap->SetRemeshing(false); // 162 vertices throughout
+      wrap->SetGapSize(0);
+      wrap->SetTargetEdgeLength(0);
       wrap->SetInitialRelaxation(10);
       wrap->SetAutomaticScaling(true);
       wrap->SetSolverTolerance(1e-6);

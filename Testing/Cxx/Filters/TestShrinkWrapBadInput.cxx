@@ -89,6 +89,8 @@ vtkSmartPointer<vtkShrinkWrapFilter> wrapOf(vtkDataObject* target, int steps = 5
   auto wrap = vtkSmartPointer<vtkShrinkWrapFilter>::New();
   wrap->SetInputData(target);
   wrap->SetResolution(24);
+  wrap->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE); // a known vertex count (162) to check
+  wrap->SetRemeshing(false);
   wrap->SetSubdivisionLevel(2);
   wrap->SetNumberOfSteps(steps);
   return wrap;

@@ -1,14 +1,18 @@
-// Shrink Wrap with its default parameters on real meshes (CGAL's data set, Debian libcgal-demo) and the
-// paper's "bent chair" (Fig. 3: a deformed cube with holes), at subdivision levels 3 and 4, 200 steps:
-// no failure, a closed 2-manifold in one piece; on bunny00 and armadillo the median |d| within one cell
-// and fewer than 2% of triangles with a minimum angle below 20 degrees (issue #4's bar; CGAL's alpha
-// wrap at similar vertex counts has 5-17%). The 90th percentile of |d| is reported for every mesh, and
-// the other meshes' figures too. The same with D = 0.5. From the Offset Surface start, no failure
-// either, and on bunny00 and armadillo the median |d| within a quarter cell. Settings whose triangles
+// Shrink Wrap on real meshes (CGAL's data set, Debian libcgal-demo) and the paper's "bent chair"
+// (Fig. 3: a deformed cube with holes), 200 steps. From the icosphere without remeshing (the paper's
+// scheme with edge flips and collapses) at subdivision levels 3 and 4: no failure, a closed 2-manifold
+// in one piece; on bunny00 and armadillo the median |d| within one cell (of the paper's field at
+// Resolution 120) and fewer than 2% of triangles with a minimum angle below 20 degrees (issue #4's bar;
+// CGAL's alpha wrap at similar vertex counts has 5-17%). The same with D = 0.5. At the defaults (offset
+// start, remeshing, exact near field, gap closing; issue #10), on bunny00 and armadillo: no failure,
+// closed, one piece, no self-intersection, the median |d| within a tenth of that cell, fewer than
+// 1% of triangles below 20 degrees, and sampled mean distances both ways below 0.25% of the diagonal
+// (alpha_wrap_3 at diag/50: 0.2-0.3%, Testing/Benchmarks/RESULTS.md). Settings whose triangles
 // degenerate (D = 1, C2 = 0.1) run through with edge collapses.
 // Argument: the folder holding CGAL's data/meshes/*.off.
 #include "SurfaceMesh.h"
 #include "TestUtilities.h"
+#include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
 
 #include <vtkCellData.h>
@@ -74,8 +78,10 @@ struct Figures
   vtkIdType vertices = 0;
 };
 
-// The default wrap of `target`, with the settings `set` changes.
-Figures wrap(vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)>& set)
+// The default wrap of `target`, with the settings `set` changes; judged by sampling too (WrapEvaluation.h)
+// when `sampled` and the target's triangles are given.
+Figures wrap(vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)>& set,
+  testing::WrapFigures* sampled = nullptr, const shrinkwrap::TriangleSoup* soup = nullptr)
 {
   vtkNew<vtkShrinkWrapFilter> filter;
   filter->SetInputData(target);
@@ -91,6 +97,10 @@ Figures wrap(vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)
   if (out->GetNumberOfPoints() == 0)
   {
     return f;
+  }
+  if (sampled && soup)
+  {
+    *sampled = testing::evaluateWrap(testing::triangulated(out), *soup);
   }
   const double h = testing::fieldCell(target, 120);
   std::vector<double> d;
@@ -159,6 +169,8 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
       for (int level : { 3, 4 })
       {
         const Figures f = wrap(target, [&](vtkShrinkWrapFilter* w) {
+          w->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE);
+          w->SetRemeshing(false);
           w->SetSubdivisionLevel(level);
           w->SetD(D);
         });
@@ -169,11 +181,28 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
           label << " s=" << level << ": fewer than 2% of triangles with an angle below 20 degrees");
       }
     }
-    // The Offset Surface start (the paper's Section 5) wraps concave parts too: a quarter cell.
-    const Figures f = wrap(target, [](vtkShrinkWrapFilter* w) { w->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE); });
-    report(name, "offset", f);
-    SW_CHECK(!bar || (f.median <= 0.25 && f.smallAngles < 2.0),
-      name << " from the offset surface: median |d| within a quarter cell, fewer than 2% below 20 degrees");
+    // The defaults, held to the bars on bunny00 and armadillo. On knot1 and the bent chair the wrap
+    // self-intersects where strands or bars nearly touch, and on the open elephant it fails (at
+    // Gap Size diagonal / 15 knot1 and the elephant wrap cleanly, knot1 with its strands bridged):
+    // issue #10 stays open for them; their figures are printed.
+    const shrinkwrap::TriangleSoup soup = testing::triangulated(target);
+    testing::WrapFigures sampled;
+    const Figures f = wrap(target, [](vtkShrinkWrapFilter*) {}, &sampled, &soup);
+    std::printf("%-30s %-8s %-8s %6.2f h     %6.2f h       %6.1f %%       %.2f\n", name.c_str(), "defaults",
+      f.ok ? "ok" : "FAILED", f.median, f.p90, f.smallAngles, f.seconds);
+    std::printf("  sampled: mean %.3f%% / %.3f%%, largest %.2f%% / %.2f%% of the diagonal (wrap to target / "
+                "target to wrap), %lld self-intersecting pairs, genus %d, %d vertices\n",
+      sampled.wrapToTarget.mean, sampled.targetToWrap.mean, sampled.wrapToTarget.largest,
+      sampled.targetToWrap.largest, sampled.selfIntersections, sampled.genus, sampled.vertices);
+    if (bar)
+    {
+      report(name, "defaults", f);
+      SW_CHECK(sampled.selfIntersections == 0, name << " at the defaults: no self-intersection");
+      SW_CHECK(f.median <= 0.1 && f.smallAngles < 1.0,
+        name << " at the defaults: median |d| within a tenth of a cell, fewer than 1% below 20 degrees");
+      SW_CHECK(sampled.wrapToTarget.mean < 0.25 && sampled.targetToWrap.mean < 0.25,
+        name << " at the defaults: sampled mean distances below 0.25% of the diagonal both ways");
+    }
   }
 
   // Settings where triangles degenerate as the surface is pulled into pockets (D = 1; C2 = 0.1 on the
@@ -186,13 +215,20 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
   for (const auto& entry : hard)
   {
     const std::string mesh = entry.first.substr(0, entry.first.find(' '));
-    const Figures f = wrap(testing::readOFF(folder + "/" + mesh + ".off"), entry.second);
+    const Figures f = wrap(testing::readOFF(folder + "/" + mesh + ".off"), [&](vtkShrinkWrapFilter* w) {
+      w->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE);
+      w->SetRemeshing(false);
+      w->SetGapSize(1e-9); // below a cell: the target's own field, as these runs were tuned on
+      entry.second(w);
+    });
     report(entry.first, "s=3", f);
-    SW_CHECK(f.vertices < 642, entry.first << ": edges were collapsed (" << f.vertices << " vertices)");
+    // (The elephant at C2 = 0.1 no longer degenerates since d is exact near the target: it runs through
+    // without collapses.)
+    SW_CHECK(mesh != "armadillo" || f.vertices < 642, entry.first << ": edges were collapsed (" << f.vertices << " vertices)");
   }
 
-  // Cached steps then differ in vertex count: a step recomputed from a thinned cache (1 MiB) is still
-  // exactly the step of a fresh run.
+  // With remeshing (the default) cached steps differ in vertex count: a step recomputed from a thinned
+  // cache (1 MiB) is still exactly the step of a fresh run.
   vtkSmartPointer<vtkPolyData> armadillo = testing::readOFF(folder + "/armadillo.off");
   const auto surfaceAt = [&](vtkShrinkWrapFilter* w, int step) {
     w->UpdateTimeStep(step * w->GetTimeStep());
@@ -213,16 +249,15 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
   for (vtkShrinkWrapFilter* w : { thinned.Get(), fresh.Get() })
   {
     w->SetInputData(armadillo);
-    w->SetD(1.0);
   }
   thinned->SetCacheMemoryLimit(1);
   const auto last = surfaceAt(thinned, 200);
   const auto again = surfaceAt(thinned, 150);
   const auto expected = surfaceAt(fresh, 150);
-  std::printf("armadillo D=1: %lld vertices at step 150, %lld at step 200; %d steps computed in all with a "
+  std::printf("armadillo: %lld vertices at step 150, %lld at step 200; %d steps computed in all with a "
               "1 MiB cache\n", static_cast<long long>(expected.first), static_cast<long long>(last.first),
     thinned->GetNumberOfComputedSteps());
-  SW_CHECK(last.first < expected.first, "steps 150 and 200 differ in vertex count (collapses between them)");
+  SW_CHECK(last.first != expected.first, "steps 150 and 200 differ in vertex count (remeshing between them)");
   SW_CHECK(thinned->GetNumberOfComputedSteps() > 200, "step 150 was recomputed from a kept step");
   SW_CHECK(again == expected, "the recomputed step 150 equals a fresh run's");
   return testing::finish("TestShrinkWrapCGALMeshes");

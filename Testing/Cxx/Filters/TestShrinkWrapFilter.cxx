@@ -199,8 +199,12 @@ void cacheWithFlips()
   };
   auto thin = wrapOf(100, 0.5); // MiB: about ten steps of 642 vertices
   const auto lastTriangles = testing::triangulated(thin->GetOutput()).triangles;
+  const vtkIdType lastCount = thin->GetOutput()->GetNumberOfPoints();
   thin->UpdateTimeStep(0);
   SW_CHECK(testing::triangulated(thin->GetOutput()).triangles != lastTriangles, "edges flipped during the evolution");
+  // Remeshing (the default) changes the vertex count too: the cache keeps each step's own triangles.
+  SW_CHECK(thin->GetOutput()->GetNumberOfPoints() != lastCount, "the vertex count changed during the evolution ("
+      << thin->GetOutput()->GetNumberOfPoints() << " at step 0, " << lastCount << " at step 100)");
   thin->UpdateTimeStep(93 * 0.015);
   const int recomputed = thin->GetNumberOfComputedSteps() - 100;
   std::printf("step 93 with a 0.5 MiB cache: %d steps recomputed\n", recomputed);
@@ -263,10 +267,15 @@ void editsAndAbortsWhileRunning(vtkPolyData* box)
 
 void distanceFieldPort(vtkPolyData* box, const std::vector<double>& middle)
 {
-  // The DistanceField port: the same field from Mesh Signed Distance gives the same wrap.
+  // The DistanceField port: the same field from Mesh Signed Distance (on the lattice the filter places
+  // for the offset start) gives the same wrap.
   vtkNew<vtkMeshSignedDistance> sdf;
   sdf->SetInputData(box);
   sdf->SetResolution(64);
+  shrinkwrap::WrapSettings settings;
+  settings.resolution = 64;
+  const shrinkwrap::Box bounds = shrinkwrap::convert::boundsOf(box);
+  sdf->SetOffsetFactor(settings.resolved(bounds).fieldMargin(bounds, false));
   vtkNew<vtkShrinkWrapFilter> withField;
   withField->SetInputData(box);
   withField->SetDistanceFieldConnection(sdf->GetOutputPort());
@@ -281,6 +290,8 @@ void badInputAndStarts(vtkPolyData* box)
 {
   // Bad input: an error and an empty output, or a warning; never a crash.
   vtkNew<vtkShrinkWrapFilter> bad;
+  bad->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE); // the paper's scheme: 642 vertices throughout
+  bad->SetRemeshing(false);
   vtkNew<vtkPolyData> empty;
   bad->SetInputData(empty);
   SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
@@ -373,24 +384,31 @@ void splitSurfaceAsInitialSurface(vtkPolyData* box)
   wrap->SetInputData(box);
   wrap->SetInputData(2, given);
   wrap->SetInitialRelaxation(0);
+  wrap->SetRemeshing(false);
   wrap->SetResolution(48);
   wrap->SetSolverTolerance(1e-12);
   wrap->SetNumberOfSteps(steps);
   wrap->Update();
 
   // The core, as the filter runs it, from the unsplit icosphere split between steps.
-  WrapSettings settings;
-  settings.resolution = 48;
-  settings.evolution.solverTolerance = 1e-12;
+  WrapSettings unresolved; // without remeshing: the edit path, not the remeshing, is under test
+  unresolved.remeshing = false;
+  unresolved.resolution = 48;
+  unresolved.evolution.solverTolerance = 1e-12;
+  const WrapSettings settings = unresolved.resolved(convert::boundsOf(box));
   convert::SoupCounts counts;
   const TriangleSoup soup = convert::soupOf({ box }, counts);
   DistanceGrid field;
   SignedDistanceResult result;
   GridPlacement placement;
   placement.resolution = 48;
-  signedDistanceGrid(soup, convert::surfaceBounds({ box }), placement, {}, field, result);
+  placement.offsetFactor = settings.fieldMargin(convert::boundsOf(box), true);
+  std::shared_ptr<const TriangleSource> exact;
+  signedDistanceGrid(soup, convert::surfaceBounds({ box }), placement, {}, field, result, {}, &exact);
+  WrapFields fields;
+  SW_CHECK(wrapFields(field, true, exact, settings, convert::contour, fields), "the wrap's fields");
   std::unique_ptr<WrapSession> session;
-  SW_CHECK(WrapSession::create(field, convert::boundsOf(box), testing::meshOf(sphere), settings, session), "a session");
+  SW_CHECK(WrapSession::create(fields, convert::boundsOf(box), testing::meshOf(sphere), settings, session), "a session");
   if (!session)
   {
     return;

@@ -5,8 +5,8 @@
 //   and keeps its vertices near the level set;
 // - the filter wraps a torus from a contour, keeping the hole (Euler characteristic 0) where the
 //   icosphere closes it over (2), and starts from the relaxed contour;
-// - the Offset Surface start does the same by itself, and closes the hole over when it is narrower
-//   than 2 (StartOffset + StartClosing) cells.
+// - the Offset Surface start (the default) does the same by itself, and closes the hole over when it is
+//   narrower than the Gap Size.
 #include "Icosphere.h"
 #include "Relaxation.h"
 #include "StartingSurface.h"
@@ -15,7 +15,10 @@
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
 
+#include <vtkAppendPolyData.h>
 #include <vtkContourFilter.h>
+#include <vtkPolyDataConnectivityFilter.h>
+#include <vtkSphereSource.h>
 #include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkStringArray.h>
@@ -169,6 +172,8 @@ void wrapsATorusFromAContour()
   vtkNew<vtkShrinkWrapFilter> sphere;
   sphere->SetInputData(target);
   sphere->SetDistanceFieldConnection(field->GetOutputPort());
+  sphere->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE);
+  sphere->SetRemeshing(false);
   sphere->Update();
   SW_CHECK(eulerCharacteristic(sphere->GetOutput()) == 2, "from the icosphere the hole is spanned over");
 
@@ -185,43 +190,59 @@ void wrapsATorusFromAContour()
   SW_CHECK(relaxed > 15 && given >= 0 && given < 5, "the filter relaxes the InitialSurface before it evolves");
 }
 
-// The Offset Surface start: the torus's hole (1.3 across) stays open while it is wider than
-// 2 (StartOffset + StartClosing) cells and is filled when it is narrower.
+// The Offset Surface start (the default) keeps the torus's hole open; a slot narrower than the Gap Size
+// is bridged, a wider one is not. (A closing by a ball never bridges a ring's hole: balls from both
+// sides cover its middle whatever their size.)
 void wrapsATorusFromItsOffset()
 {
   vtkSmartPointer<vtkPolyData> target = torus();
-  for (const int resolution : { 120, 60 })
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputData(target);
+  wrap->Update();
+  vtkPolyData* out = wrap->GetOutput();
+  vtkDataArray* distance = out->GetPointData()->GetArray("Distance");
+  double largest = 0;
+  for (vtkIdType i = 0; distance && i < distance->GetNumberOfTuples(); ++i)
   {
-    vtkNew<vtkShrinkWrapFilter> wrap;
-    wrap->SetInputData(target);
-    wrap->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
-    wrap->SetResolution(resolution);
-    wrap->Update();
-    vtkPolyData* out = wrap->GetOutput();
-    vtkDataArray* distance = out->GetPointData()->GetArray("Distance");
-    double largest = 0;
-    for (vtkIdType i = 0; distance && i < distance->GetNumberOfTuples(); ++i)
-    {
-      largest = std::max(largest, std::abs(distance->GetTuple1(i)));
-    }
-    vtkNew<vtkMeshSignedDistance> field; // the same lattice as the filter's own field
-    field->SetInputData(target);
-    field->SetResolution(resolution);
-    field->Update();
-    const double h = field->GetOutput()->GetSpacing()[0];
-    const double gap = 2 * (wrap->GetStartOffset() + wrap->GetStartClosing()) * h;
-    std::cout << "torus from its offset surface, Resolution " << resolution << ": " << statusOf(out) << ", "
-              << out->GetNumberOfPoints() << " vertices, Euler characteristic " << eulerCharacteristic(out)
-              << ", largest |d| " << largest / h << " h; gaps up to " << gap << " are filled" << std::endl;
-    SW_CHECK(statusOf(out) == "ok", "200 steps from the offset surface");
-    if (gap < 2 * (R - r))
-    {
-      SW_CHECK(eulerCharacteristic(out) == 0 && largest < 0.5 * h, "the hole stays open, the wrap on the torus");
-    }
-    else
-    {
-      SW_CHECK(eulerCharacteristic(out) == 2, "the narrower hole is closed over");
-    }
+    largest = std::max(largest, std::abs(distance->GetTuple1(i)));
+  }
+  std::cout << "torus from its offset surface: " << statusOf(out) << ", " << out->GetNumberOfPoints()
+            << " vertices, Euler characteristic " << eulerCharacteristic(out) << ", largest |d| at a vertex "
+            << largest << " (tube radius " << r << ")" << std::endl;
+  SW_CHECK(statusOf(out) == "ok", "200 steps from the offset surface");
+  // 0.03 r is about half a cell of the field.
+  SW_CHECK(eulerCharacteristic(out) == 0 && largest < 0.03 * r, "the hole stays open, the wrap on the torus");
+
+  // Two spheres of radius 1 with a slot of 0.3 between them.
+  vtkNew<vtkSphereSource> left, right;
+  left->SetCenter(-1.15, 0, 0);
+  right->SetCenter(1.15, 0, 0);
+  for (vtkSphereSource* s : { left.Get(), right.Get() })
+  {
+    s->SetRadius(1);
+    s->SetThetaResolution(48);
+    s->SetPhiResolution(24);
+  }
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputConnection(left->GetOutputPort());
+  both->AddInputConnection(right->GetOutputPort());
+  for (const double gap : { 0.15, 0.6 })
+  {
+    vtkNew<vtkShrinkWrapFilter> spheres;
+    spheres->SetInputConnection(both->GetOutputPort());
+    spheres->SetGapSize(gap);
+    spheres->SetNumberOfSteps(100);
+    spheres->Update();
+    vtkNew<vtkPolyDataConnectivityFilter> pieces;
+    pieces->SetInputData(spheres->GetOutput());
+    pieces->SetExtractionModeToAllRegions();
+    pieces->Update();
+    const int count = pieces->GetNumberOfExtractedRegions();
+    std::cout << "two spheres 0.3 apart, Gap Size " << gap << ": " << statusOf(spheres->GetOutput()) << ", "
+              << count << " piece(s), Euler characteristic " << eulerCharacteristic(spheres->GetOutput()) << std::endl;
+    SW_CHECK(statusOf(spheres->GetOutput()) == "ok", "the two spheres wrap");
+    const std::string expected = gap < 0.3 ? "a slot wider than the Gap Size stays open" : "a slot narrower than the Gap Size is bridged";
+    SW_CHECK(count == (gap < 0.3 ? 2 : 1), expected);
   }
 }
 

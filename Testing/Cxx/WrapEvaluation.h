@@ -11,6 +11,7 @@
 #include "SurfaceMesh.h"
 #include "TriangleSoup.h"
 
+#include <functional>
 #include <random>
 #include <set>
 

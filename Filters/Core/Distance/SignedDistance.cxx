@@ -88,20 +88,35 @@ int workingBytesPerNode(const SignedDistanceSettings& settings)
   return 1 + (settings.sweep == SweepMethod::ClosestPoint ? 4 : 0);
 }
 
+namespace
+{
+// Algorithm 1, line 1 (the tree, and the pseudonormals that sign the band), then the rest; the source
+// is handed to `keep` when asked for.
+SignedDistanceResult fromSoup(const TriangleSoup& input, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress,
+  std::shared_ptr<const TriangleSource>* keep)
+{
+  const auto clock = std::chrono::steady_clock::now();
+  auto source = std::make_shared<const TriangleSource>(input);
+  const double treeSeconds = secondsSince(clock);
+  SignedDistanceResult result;
+  if (progress.report(0.05))
+  {
+    result = computeSignedDistance(*source, lattice, settings, distance, progress);
+  }
+  result.treeSeconds = treeSeconds;
+  if (keep)
+  {
+    *keep = std::move(source);
+  }
+  return result;
+}
+} // namespace
+
 SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress)
 {
-  // Algorithm 1, line 1: the tree, and the pseudonormals that sign the band.
-  const auto clock = std::chrono::steady_clock::now();
-  const TriangleSource source(input);
-  const double treeSeconds = secondsSince(clock);
-  if (!progress.report(0.05))
-  {
-    return {};
-  }
-  SignedDistanceResult result = computeSignedDistance(source, lattice, settings, distance, progress);
-  result.treeSeconds = treeSeconds;
-  return result;
+  return fromSoup(input, lattice, settings, distance, progress, nullptr);
 }
 
 SignedDistanceResult computeSignedDistance(const TriangleSource& source, const GridLattice& lattice,
@@ -240,18 +255,9 @@ Status signedDistanceGrid(const TriangleSoup& soup, const Box& bounds, const Gri
   {
     return status;
   }
-  const auto clock = std::chrono::steady_clock::now();
-  auto source = std::make_shared<const TriangleSource>(soup);
-  const double treeSeconds = secondsSince(clock);
   std::vector<float> values(lattice.nodeCount());
-  result = progress.report(0.05) ? computeSignedDistance(*source, lattice, settings, values.data(), progress)
-                                 : SignedDistanceResult();
-  result.treeSeconds = treeSeconds;
+  result = fromSoup(soup, lattice, settings, values.data(), progress, target);
   grid = result.completed ? DistanceGrid(lattice, std::move(values)) : DistanceGrid();
-  if (target)
-  {
-    *target = std::move(source);
-  }
   return {};
 }
 

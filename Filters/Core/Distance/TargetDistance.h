@@ -25,7 +25,6 @@ public:
 
   const DistanceGrid& grid() const { return this->Grid; }
   bool empty() const { return this->Grid.empty(); }
-  bool exactNearTarget() const { return this->Exact != nullptr; }
   DistanceSample sample(const Vec3& x) const;
 
 private:

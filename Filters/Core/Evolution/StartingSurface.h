@@ -41,8 +41,9 @@ Status offsetSurface(const DistanceGrid& field, double offset, const Contour& co
 Status orientOutwards(SurfaceMesh& mesh);
 
 // The starting surface, ready to evolve: `given` if not null, else the shape of `settings` (the
-// icosphere around `targetBox`, or the offset surface of `field`, which should be the closing's); specks smaller than two cells of the field removed (counted in
-// `specks`), outward oriented, and a contour or a given surface relaxed with `flips`.
+// icosphere around `targetBox`, or the offset surface of `field`, which should be the closing's);
+// specks smaller than two cells of the field removed (counted in `specks`), outward oriented, and a
+// contour or a given surface relaxed with `flips`.
 Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSurface* given,
   const StartSettings& settings, const FlipSettings& flips, const Contour& contour, SurfaceMesh& mesh,
   int& specks);

@@ -185,6 +185,11 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     return false;
   }
   const WrapSettings settings = this->CoreSettings().resolved(targetBox);
+  if (const Status fits = settings.fits(targetBox); !fits)
+  {
+    vtkErrorMacro(<< fits.message() << ".");
+    return false;
+  }
   WrapFields fields;
   if (!this->FieldsOf(target, vtkImageData::GetData(inputVector[1], 0), initial != nullptr, settings, fields))
   {

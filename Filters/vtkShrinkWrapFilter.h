@@ -27,8 +27,8 @@
  * are empty.
  *
  * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
- * NumberOfSteps N_t = 200, SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 1 and D = 0
- * (eq. (4)), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
+ * NumberOfSteps N_t = 100 (Fig. 11: 200), SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 3 and
+ * D = 0.5 (eq. (4); Fig. 11: 1 and 0), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
  * DistanceWeighting off (rho(d) of eq. (10)) with RhoA = 1 (its A), EdgeFlips on with FlipDihedralLimit
  * 60 degrees (flips change the triangles from step to step, never the vertices), EdgeCollapses on
  * (a collapse removes a vertex), StartingShape
@@ -152,8 +152,8 @@ public:
   ///@}
   ///@{
   /// The starting surface when no InitialSurface is connected: OFFSET_SURFACE (default), a contour at
-  /// StartOffset cells (default 3) of the field outside the target closed over gaps narrower than
-  /// GapSize (the paper's Section 5), which starts close, wraps concave parts and keeps wider holes
+  /// StartOffset cells (default 3, at most GapSize / 2 and at least one cell) of the field outside the
+  /// target closed over gaps narrower than GapSize (the paper's Section 5), which starts close, wraps concave parts and keeps wider holes
   /// open; or ICOSPHERE, a geodesic icosphere of SubdivisionLevel around the target (the paper's
   /// Algorithm 3 and Fig. 11), which spans concave parts and holes like a membrane.
   vtkSetClampMacro(StartingShape, int, ICOSPHERE, OFFSET_SURFACE);

@@ -36,6 +36,10 @@ struct Box
     return s.x() * s.y() + s.y() * s.z() + s.z() * s.x();
   }
   // Squared distance from p to the box (0 inside).
+  bool overlaps(const Box& b) const
+  {
+    return (this->min.array() <= b.max.array()).all() && (b.min.array() <= this->max.array()).all();
+  }
   double squaredDistance(const Vec3& p) const
   {
     const Vec3 d = (this->min - p).cwiseMax(p - this->max).cwiseMax(0.0);

@@ -4,6 +4,7 @@
 #include "CotanLaplacian.h"
 #include "EdgeFlips.h"
 #include "Parallel.h"
+#include "SelfIntersections.h"
 #include "TangentialRedistribution.h"
 
 #include <Eigen/IterativeLinearSolvers>
@@ -253,7 +254,9 @@ StepReport Evolver::step()
 StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool converged)
 {
   const EvolverSettings& s = this->Settings;
+  const int held = s.holdCrossings && converged ? this->holdBack(next) : 0;
   StepReport report = this->check(next);
+  report.held = held;
   if (report.ok() && !converged)
   {
     report.failure = Failure::SolverFailed;
@@ -288,9 +291,42 @@ StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool 
     report.flips = adjusted.flips;
     report.collapses = adjusted.collapses;
     report.splits = adjusted.splits;
+    report.held = adjusted.held;
   }
   ++this->Steps;
   return report;
+}
+
+// Vertices stop where their step would break the surface: where it would cross itself
+// (holdNewCrossings) or a triangle would degenerate below minAngle that did not before; held vertices
+// keep their positions, and holding one can break another triangle, so the rounds repeat.
+int Evolver::holdBack(std::vector<Vec3>& next) const
+{
+  const std::vector<Vec3>& y = this->Mesh.points();
+  const auto& triangles = this->Mesh.triangles();
+  int held = 0;
+  for (int round = 0; round < 16; ++round)
+  {
+    int moved = holdNewCrossings(y, next, triangles);
+    for (const auto& t : triangles)
+    {
+      if (smallestAngle(next[t[0]], next[t[1]], next[t[2]]) < this->Settings.minAngle &&
+        smallestAngle(y[t[0]], y[t[1]], y[t[2]]) >= this->Settings.minAngle)
+      {
+        for (int v : t)
+        {
+          moved += next[v] != y[v];
+          next[v] = y[v];
+        }
+      }
+    }
+    held += moved;
+    if (moved == 0)
+    {
+      break;
+    }
+  }
+  return held;
 }
 
 StepReport Evolver::run(int n, const Progress& progress)

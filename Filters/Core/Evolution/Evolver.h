@@ -50,8 +50,12 @@ struct EvolverSettings
   double timeStep = 0.015; // tau (paper Fig. 11)
   double C1 = 1.0;         // eq. (3); C2 = 0 makes eps = C1 everywhere (pure MCF: C1 = 1, C2 = 0, C = 0)
   double C2 = 1.0;
-  double C = 1.0;          // eq. (4)
-  double D = 0.0;
+  // Eq. (4). Shrink Wrap's: C = 3 (the paper's 1) lands the offset start on the target in 100 steps,
+  // since advection closes a share tau C of the remaining distance per step; D = 0.5 (the paper's 0)
+  // pushes the membranes D = 0 spans over concave parts inwards. Measured on CGAL meshes
+  // (Testing/Benchmarks/RESULTS.md, issue #10).
+  double C = 3.0;
+  double D = 0.5;
   Redistribution redistribution = Redistribution::Angle; // the paper's tables also run None and Volume
   double omegaAngle = 0.5;      // omega_angle (paper Fig. 11)
   double omegaVolume = 1.0;     // omega_vol (paper Table 3)
@@ -67,13 +71,17 @@ struct EvolverSettings
   // Remeshing after every step towards remeshing.targetLength (in the caller's units; 0: none).
   // One iteration per step: the surface moves little in a step, so the steps converge the mesh.
   RemeshSettings remeshing = duringEvolution();
+  // Fronts stop where they meet (SelfIntersections.h: holdNewCrossings), so the surface never passes
+  // through itself where two of its parts come together; and vertices whose step would degenerate a
+  // triangle stay where they were.
+  bool holdCrossings = true;
   bool volumePerArea = true;    // v_T = (integral of grad psi over V_i) / |V_i|; false: the paper's code
   LinearSolver solver = LinearSolver::ConjugateGradient;
   double solverTolerance = 1e-6; // relative residual: positions to about 1e-6 of the scaled size
   double minAngle = 1e-3;        // radians: a smaller triangle angle is a failure (scale free)
 
-  // The paper's scheme: no redistribution (its tables set it), rho(d) on, no connectivity changes,
-  // solves to 1e-10.
+  // The paper's scheme: C = 1, D = 0, no redistribution (its tables set it), rho(d) on, no
+  // connectivity changes, solves to 1e-10.
   static EvolverSettings paper()
   {
     EvolverSettings s;
@@ -81,7 +89,10 @@ struct EvolverSettings
     s.distanceWeight = true;
     s.edgeFlips = false;
     s.edgeCollapses = false;
+    s.C = 1.0;
+    s.D = 0.0;
     s.remeshing.targetLength = 0;
+    s.holdCrossings = false;
     s.solverTolerance = 1e-10;
     return s;
   }
@@ -89,6 +100,9 @@ struct EvolverSettings
   {
     RemeshSettings r;
     r.iterations = 1;
+    // No relaxation: the angle redistribution already moves vertices tangentially, and relaxing where
+    // two parts of the surface nearly touch let them cross (camel, hand).
+    r.relaxWeight = 0;
     return r;
   }
 };
@@ -111,6 +125,7 @@ struct StepReport
   int flips = 0;     // edges flipped after the step
   int collapses = 0; // edges collapsed after the step (vertices removed)
   int splits = 0;    // edges split after the step (vertices added)
+  int held = 0;      // vertices held back where fronts met
   double smallestAngle = M_PI; // radians, over the triangles at the end of the step (before any repair)
   bool ok() const { return this->failure == Failure::None; }
   bool connectivityChanged() const { return this->flips > 0 || this->collapses > 0 || this->splits > 0; }
@@ -170,6 +185,7 @@ private:
   bool solve(const Controls& c, const std::vector<Vec3>& vt, std::vector<Vec3>& next);
   StepReport accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool converged);
   StepReport check(const std::vector<Vec3>& y) const;
+  int holdBack(std::vector<Vec3>& next) const;
   void adjustConnectivity(StepReport& report); // remeshing, flips, then collapses, as the settings ask
   void connectivityChanged(int previousVertexCount);
   std::vector<Vec3>& velocity() { return this->Mesh.vertexData("velocity"); }

@@ -3,6 +3,7 @@
 #include "Components.h"
 #include "Icosphere.h"
 #include "Relaxation.h"
+#include "SelfIntersections.h"
 #include "SurfaceGeometry.h"
 
 #include <algorithm>
@@ -54,7 +55,8 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   }
   else if (settings.shape == StartShape::OffsetSurface)
   {
-    if (Status status = offsetSurface(field, settings.offset * h, contour, start); !status)
+    const double offset = std::max(std::min(settings.offset * h, settings.maxOffset), std::min(settings.offset, 1.0) * h);
+    if (Status status = offsetSurface(field, offset, contour, start); !status)
     {
       return Status::failure("cannot start from the offset surface: " + status.message());
     }
@@ -74,13 +76,25 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   {
     return Status::failure("the starting surface cannot evolve: " + status.message());
   }
-  // A contour's slivers would fail the first step (the icosphere needs no relaxation).
+  // A contour's slivers would fail the first step (the icosphere needs no relaxation). Where two parts
+  // of a contour nearly touch, relaxing can make them cross: then fewer iterations, down to none (a
+  // contour never crosses itself; a given surface is taken as it is).
   if (settings.shape != StartShape::Icosphere || given)
   {
+    const long long crossing = findSelfIntersections(mesh.points(), mesh.triangles()).pairs;
     RelaxSettings relax;
-    relax.iterations = settings.relaxation;
     relax.flips = flips;
-    relaxTangentially(mesh, relax);
+    for (int iterations = settings.relaxation; iterations > 0; iterations /= 2)
+    {
+      SurfaceMesh relaxed = mesh;
+      relax.iterations = iterations;
+      relaxTangentially(relaxed, relax);
+      if (findSelfIntersections(relaxed.points(), relaxed.triangles()).pairs <= crossing)
+      {
+        mesh = std::move(relaxed);
+        break;
+      }
+    }
   }
   return {};
 }

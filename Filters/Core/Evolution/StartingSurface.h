@@ -12,6 +12,7 @@
 #include "TriangleSurface.h"
 
 #include <functional>
+#include <limits>
 
 namespace shrinkwrap
 {
@@ -26,7 +27,9 @@ struct StartSettings
 {
   StartShape shape = StartShape::OffsetSurface;
   int subdivision = 3;   // s, the icosphere's level (642 vertices)
-  double offset = 3;     // the offset surface's distance from the (closed) target, in cells of the field
+  double offset = 3;     // the offset surface's distance from the (closed) target, in cells of the field,
+  double maxOffset = std::numeric_limits<double>::infinity(); // at most this (in the field's units) and
+                                                              // at least one cell
   int relaxation = 10;   // tangential relaxation iterations of a contour or a given surface
 };
 

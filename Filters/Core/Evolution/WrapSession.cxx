@@ -4,6 +4,7 @@
 #include "StabilityScaling.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace shrinkwrap
 {
@@ -21,6 +22,25 @@ Status WrapSettings::validate() const
   return {};
 }
 
+Status WrapSettings::fits(const Box& targetBox) const
+{
+  if (!this->remeshing || !(this->targetLength > 0))
+  {
+    return {};
+  }
+  // Equilateral triangles of edge L over the target box's surface (more than the wrap's): vertices
+  // about 2 A / (sqrt(3) L^2).
+  const double vertices = 2 * 2 * targetBox.halfArea() / (std::sqrt(3.0) * this->targetLength * this->targetLength);
+  if (!(vertices <= kMaxVertices))
+  {
+    std::ostringstream message;
+    message << "TargetEdgeLength " << this->targetLength << " would make about " << vertices
+            << " vertices on this target (at most " << kMaxVertices << "); raise it";
+    return Status::failure(message.str());
+  }
+  return {};
+}
+
 WrapSettings WrapSettings::resolved(const Box& targetBox) const
 {
   WrapSettings s = *this;
@@ -34,6 +54,9 @@ WrapSettings WrapSettings::resolved(const Box& targetBox) const
     s.gapSize = diagonal / kGapDivisor;
   }
   s.evolution.remeshing.targetLength = s.remeshing ? s.targetLength : 0;
+  // A start farther out than half the gap would merge parts the closing keeps apart (and give the
+  // wrap handles the target does not have, as between knot1's strands).
+  s.start.maxOffset = 0.5 * s.gapSize;
   return s;
 }
 

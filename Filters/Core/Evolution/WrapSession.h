@@ -20,7 +20,7 @@ struct WrapSettings
 {
   EvolverSettings evolution;
   StartSettings start;
-  int steps = 200;              // N_t
+  int steps = 100;              // N_t (the paper's Fig. 11: 200, from an icosphere at C = 1)
   bool automaticScaling = true; // phi of Section 2.4
   int resolution = 120;         // cells along the longest axis of the distance field computed here
   double cacheMiB = 512;        // memory for cached steps
@@ -35,11 +35,14 @@ struct WrapSettings
   // The automatic sizes: the target's bounding-box diagonal over these.
   static constexpr double kLengthDivisor = 50;
   static constexpr double kGapDivisor = 50;
+  static constexpr double kMaxVertices = 4e6; // a Target Edge Length that would make more is refused
 
   Status validate() const;
   // These settings with the automatic sizes resolved for a target of this box, and L passed on to
   // the evolution.
   WrapSettings resolved(const Box& targetBox) const;
+  // Resolved settings: whether the Target Edge Length is sane for a target of this box.
+  Status fits(const Box& targetBox) const;
   // GridPlacement::offsetFactor of the field computed here: a box just large enough for the offset
   // start and the gap closing (cells spent on the object), or the paper's for the icosphere or a
   // given start, which may lie anywhere around the target. Resolved settings.

@@ -2,6 +2,9 @@
 
 #include "EdgeSplits.h"
 #include "Relaxation.h"
+#include "SelfIntersections.h"
+
+#include <memory>
 
 #include <cmath>
 #include <cstdlib>
@@ -50,9 +53,34 @@ bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, int 
   return true;
 }
 
-int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings)
+// The triangles (m, u, w) that merging a and b at m makes: the rims of both rings without a and b.
+std::vector<std::array<int, 2>> fanRim(const SurfaceMesh& mesh, int a, int b)
+{
+  std::vector<std::array<int, 2>> rim;
+  for (int v : { a, b })
+  {
+    for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
+    {
+      const int u = mesh.ring(p), w = mesh.ring(mesh.next(v, p));
+      if (u != a && u != b && w != a && w != b)
+      {
+        rim.push_back({ u, w });
+      }
+    }
+  }
+  return rim;
+}
+
+int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings,
+  bool avoidCrossings)
 {
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
+  const std::vector<std::array<int, 3>> triangles = mesh.triangles();
+  std::unique_ptr<CrossingGuard> guard;
+  if (avoidCrossings)
+  {
+    guard = std::make_unique<CrossingGuard>(x, triangles);
+  }
   std::vector<char> touched(mesh.vertexCount(), 0);
   int collapses = 0;
   for (const auto& e : edgesOf(mesh))
@@ -60,7 +88,7 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
     const int a = e[0], b = e[1];
     const Vec3 m = 0.5 * (x[a] + x[b]);
     if (!touched[a] && !touched[b] && mesh.vertexCount() - collapses > 4 && (x[a] - x[b]).norm() < minLength &&
-      staysShort(mesh, x, a, b, m, maxLength))
+      staysShort(mesh, x, a, b, m, maxLength) && !(guard && guard->fanCrosses(m, fanRim(mesh, a, b), a, b)))
     {
       collapses += collapseInPass(mesh, x, a, b, m, settings, touched);
     }
@@ -69,12 +97,13 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
 }
 } // namespace
 
-int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings)
+int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings,
+  bool avoidCrossings)
 {
   int collapses = 0;
   for (int pass = 0; pass < 16; ++pass)
   {
-    const int made = collapsePass(mesh, minLength, maxLength, settings);
+    const int made = collapsePass(mesh, minLength, maxLength, settings, avoidCrossings);
     collapses += made;
     if (made == 0)
     {
@@ -131,8 +160,8 @@ RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings)
   for (int k = 0; k < settings.iterations; ++k)
   {
     report.splits += splitLongEdges(mesh, settings.splitAbove * L);
-    report.collapses +=
-      collapseShortEdges(mesh, settings.collapseBelow * L, settings.splitAbove * L, settings.collapses);
+    report.collapses += collapseShortEdges(
+      mesh, settings.collapseBelow * L, settings.splitAbove * L, settings.collapses, settings.avoidCrossings);
     report.flips += equalizeValences(mesh, settings.flips);
     relaxTangentially(mesh, relax);
   }

@@ -273,6 +273,28 @@ void absurdStepsAndTimes()
   }
 }
 
+// Sizes that would make no wrap or an absurd one: a clear error, an empty output, and the pipeline lives on.
+void absurdSizes()
+{
+  auto wrap = wrapOf(sphere());
+  wrap->SetRemeshing(true);
+  wrap->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
+  const std::pair<std::string, std::function<void()>> cases[] = {
+    { "Target Edge Length 1e-9", [&] { wrap->SetTargetEdgeLength(1e-9); } },
+    { "Gap Size 1e6", [&] { wrap->SetTargetEdgeLength(0); wrap->SetGapSize(1e6); } },
+  };
+  for (const auto& c : cases)
+  {
+    c.second();
+    const Said said = whileSaying(wrap, [&] { wrap->Update(); });
+    std::cout << c.first << ": " << said.text.substr(said.text.find("): ") + 3) << std::endl;
+    SW_CHECK(said.errors > 0 && wrap->GetOutput()->GetNumberOfPoints() == 0, c.first << ": an error, empty output");
+  }
+  wrap->SetGapSize(0);
+  wrap->Update();
+  SW_CHECK(wrap->GetOutput()->GetNumberOfPoints() > 0 && stepOf(wrap->GetOutput()) == 5, "then the defaults wrap");
+}
+
 void badDistanceFields()
 {
   vtkNew<vtkMeshSignedDistance> sdf;
@@ -403,6 +425,7 @@ int TestShrinkWrapBadInput(int, char*[])
   starvedCache();
   corruptStartingSurfaces();
   absurdStepsAndTimes();
+  absurdSizes();
   badDistanceFields();
   coordinatesTooLarge();
   aborts();

@@ -4,10 +4,11 @@
 // in one piece; on bunny00 and armadillo the median |d| within one cell (of the paper's field at
 // Resolution 120) and fewer than 2% of triangles with a minimum angle below 20 degrees (issue #4's bar;
 // CGAL's alpha wrap at similar vertex counts has 5-17%). The same with D = 0.5. At the defaults (offset
-// start, remeshing, exact near field, gap closing; issue #10), on bunny00 and armadillo: no failure,
-// closed, one piece, no self-intersection, the median |d| within a tenth of that cell, fewer than
-// 1% of triangles below 20 degrees, and sampled mean distances both ways below 0.25% of the diagonal
-// (alpha_wrap_3 at diag/50: 0.2-0.3%, Testing/Benchmarks/RESULTS.md). Settings whose triangles
+// start, remeshing, exact near field, gap closing, fronts that stop where they meet; issue #10), on
+// bunny00, armadillo and knot1: no failure, closed, one piece, no self-intersection, the median |d|
+// within a tenth of that cell, fewer than 1% of triangles below 20 degrees, and sampled mean distances
+// both ways below 0.15% of the diagonal (alpha_wrap_3 at diag/50: 0.07-0.23%,
+// Testing/Benchmarks/RESULTS.md); the bunny keeps its ears and knot1 its genus. Settings whose triangles
 // degenerate (D = 1, C2 = 0.1) run through with edge collapses.
 // Argument: the folder holding CGAL's data/meshes/*.off.
 #include "SurfaceMesh.h"
@@ -162,6 +163,7 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
       continue;
     }
     const bool bar = name == "bunny00" || name == "armadillo";
+    const bool defaultsBar = bar || name == "knot1";
     // D = 0 is the default (paper Fig. 11); D = 0.5, stable with edge flips, is what the README
     // recommends for closer wraps, so it is held to the same bars.
     for (const double D : { 0.0, 0.5 })
@@ -181,14 +183,13 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
           label << " s=" << level << ": fewer than 2% of triangles with an angle below 20 degrees");
       }
     }
-    // The defaults, held to the bars on bunny00 and armadillo. On knot1 and the bent chair the wrap
-    // self-intersects where strands or bars nearly touch, and on the open elephant it fails (at
-    // Gap Size diagonal / 15 knot1 and the elephant wrap cleanly, knot1 with its strands bridged):
-    // issue #10 stays open for them; their figures are printed.
+    // The defaults, held to the bars on bunny00, armadillo and knot1 (genus 1, strands nearly
+    // touching). On the bent chair the wrap still crosses itself where the start's contour did, and on
+    // the open elephant it enters the holes (issue #10 stays open for them); their figures are printed.
     const shrinkwrap::TriangleSoup soup = testing::triangulated(target);
     testing::WrapFigures sampled;
     const Figures f = wrap(target, [](vtkShrinkWrapFilter*) {}, &sampled, &soup);
-    if (!bar)
+    if (!defaultsBar)
     {
       std::printf("%-30s %-8s %-8s %6.2f h     %6.2f h       %6.1f %%       %.2f\n", name.c_str(), "defaults",
         f.ok ? "ok" : "FAILED", f.median, f.p90, f.smallAngles, f.seconds);
@@ -201,14 +202,19 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
                 "target to wrap), %lld self-intersecting pairs, genus %d, %d vertices\n",
       sampled.wrapToTarget.mean, sampled.targetToWrap.mean, sampled.wrapToTarget.largest,
       sampled.targetToWrap.largest, sampled.selfIntersections, sampled.genus, sampled.vertices);
-    if (bar)
+    if (defaultsBar)
     {
       SW_CHECK(sampled.selfIntersections == 0, name << " at the defaults: no self-intersection");
       SW_CHECK(f.median <= 0.1 && f.smallAngles < 1.0,
         name << " at the defaults: median |d| within a tenth of a cell, fewer than 1% below 20 degrees");
-      SW_CHECK(sampled.wrapToTarget.mean < 0.25 && sampled.targetToWrap.mean < 0.25,
-        name << " at the defaults: sampled mean distances below 0.25% of the diagonal both ways");
+      SW_CHECK(sampled.wrapToTarget.mean < 0.15 && sampled.targetToWrap.mean < 0.15,
+        name << " at the defaults: sampled mean distances below 0.15% of the diagonal both ways");
     }
+    // Thin parts kept: the bunny's tall ear (lost, the largest distance from the target to the wrap
+    // was 8-12% of the diagonal from the icosphere), knot1's genus.
+    SW_CHECK(name != "bunny00" || sampled.targetToWrap.largest < 2.0, "bunny00: the ears kept (largest target to wrap "
+      << sampled.targetToWrap.largest << "% of the diagonal)");
+    SW_CHECK(name != "knot1" || sampled.genus == 1, "knot1: genus 1 kept (" << sampled.genus << ")");
   }
 
   // Settings where triangles degenerate as the surface is pulled into pockets (D = 1; C2 = 0.1 on the
@@ -255,6 +261,7 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
   for (vtkShrinkWrapFilter* w : { thinned.Get(), fresh.Get() })
   {
     w->SetInputData(armadillo);
+    w->SetNumberOfSteps(200);
   }
   thinned->SetCacheMemoryLimit(1);
   const auto last = surfaceAt(thinned, 200);

@@ -360,9 +360,11 @@ void badInputAndStarts(vtkPolyData* box)
   bad->SetD(0);
   bad->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
   bad->SetStartOffset(1000);
+  bad->SetGapSize(1000); // the offset is at most half the gap
   SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
     "an offset surface beyond the distance field: error");
   bad->SetStartOffset(3);
+  bad->SetGapSize(0);
   bad->Update();
   SW_CHECK(statusOf(bad->GetOutput()) == "ok" && bad->GetOutput()->GetNumberOfPoints() > 0,
     "then a sane offset wraps");

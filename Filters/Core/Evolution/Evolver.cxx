@@ -254,7 +254,7 @@ StepReport Evolver::step()
 StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool converged)
 {
   const EvolverSettings& s = this->Settings;
-  const int held = s.holdCrossings && converged ? this->holdBack(next) : 0;
+  const int held = s.holdBack && converged ? this->holdBack(next) : 0;
   StepReport report = this->check(next);
   report.held = held;
   if (report.ok() && !converged)

@@ -71,10 +71,10 @@ struct EvolverSettings
   // Remeshing after every step towards remeshing.targetLength (in the caller's units; 0: none).
   // One iteration per step: the surface moves little in a step, so the steps converge the mesh.
   RemeshSettings remeshing = duringEvolution();
-  // Fronts stop where they meet (SelfIntersections.h: holdNewCrossings), so the surface never passes
-  // through itself where two of its parts come together; and vertices whose step would degenerate a
-  // triangle stay where they were.
-  bool holdCrossings = true;
+  // Vertices hold back where their step would break the surface: fronts stop where they meet
+  // (SelfIntersections.h: holdNewCrossings), so the surface never passes through itself where two of
+  // its parts come together, and a vertex whose step would degenerate a triangle stays where it was.
+  bool holdBack = true;
   bool volumePerArea = true;    // v_T = (integral of grad psi over V_i) / |V_i|; false: the paper's code
   LinearSolver solver = LinearSolver::ConjugateGradient;
   double solverTolerance = 1e-6; // relative residual: positions to about 1e-6 of the scaled size
@@ -92,7 +92,7 @@ struct EvolverSettings
     s.C = 1.0;
     s.D = 0.0;
     s.remeshing.targetLength = 0;
-    s.holdCrossings = false;
+    s.holdBack = false;
     s.solverTolerance = 1e-10;
     return s;
   }

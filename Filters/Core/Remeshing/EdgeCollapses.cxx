@@ -24,29 +24,18 @@ bool linkCondition(const SurfaceMesh& mesh, int a, int b)
 bool keepsNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, int b, const Vec3& m,
   const CollapseSettings& settings)
 {
-  for (int v : { a, b })
-  {
-    for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
+  bool keeps = true;
+  forEachFanTriangle(mesh, a, b, [&](int v, int u, int w) {
+    if (!keeps || smallestAngle(x[v], x[u], x[w]) < settings.maxAngle)
     {
-      const int u = mesh.ring(p), w = mesh.ring(mesh.next(v, p));
-      if (u == a || u == b || w == a || w == b)
-      {
-        continue;
-      }
-      if (smallestAngle(x[v], x[u], x[w]) < settings.maxAngle)
-      {
-        continue;
-      }
-      const Vec3 before = (x[u] - x[v]).cross(x[w] - x[v]);
-      const Vec3 after = (x[u] - m).cross(x[w] - m);
-      const double lengths = before.norm() * after.norm();
-      if (!(lengths > 0) || before.dot(after) < settings.minNormalDot * lengths)
-      {
-        return false;
-      }
+      return;
     }
-  }
-  return true;
+    const Vec3 before = (x[u] - x[v]).cross(x[w] - x[v]);
+    const Vec3 after = (x[u] - m).cross(x[w] - m);
+    const double lengths = before.norm() * after.norm();
+    keeps = lengths > 0 && before.dot(after) >= settings.minNormalDot * lengths;
+  });
+  return keeps;
 }
 
 } // namespace

@@ -21,6 +21,24 @@ struct CollapseSettings
   int maxPasses = 10;        // passes per step (the evolver's)
 };
 
+// Calls f(v, u, w) for every triangle (v, u, w) around a or b (v in {a, b}) other than the two on the
+// edge (a, b): the triangles that merging a and b turns into (m, u, w).
+template <typename F>
+void forEachFanTriangle(const SurfaceMesh& mesh, int a, int b, F&& f)
+{
+  for (int v : { a, b })
+  {
+    for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
+    {
+      const int u = mesh.ring(p), w = mesh.ring(mesh.next(v, p));
+      if (u != a && u != b && w != a && w != b)
+      {
+        f(v, u, w);
+      }
+    }
+  }
+}
+
 // Whether merging `gone` into `keep` at m keeps a closed 2-manifold of the same genus with the
 // orientations kept: the two vertices opposite the edge keep valence above 3, the merged vertex has
 // at least 3, only those two are neighbours of both (link condition), and no other triangle around

@@ -53,21 +53,11 @@ bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, int 
   return true;
 }
 
-// The triangles (m, u, w) that merging a and b at m makes: the rims of both rings without a and b.
+// The rims (u, w) of the triangles (m, u, w) that merging a and b at m makes.
 std::vector<std::array<int, 2>> fanRim(const SurfaceMesh& mesh, int a, int b)
 {
   std::vector<std::array<int, 2>> rim;
-  for (int v : { a, b })
-  {
-    for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
-    {
-      const int u = mesh.ring(p), w = mesh.ring(mesh.next(v, p));
-      if (u != a && u != b && w != a && w != b)
-      {
-        rim.push_back({ u, w });
-      }
-    }
-  }
+  forEachFanTriangle(mesh, a, b, [&](int, int u, int w) { rim.push_back({ u, w }); });
   return rim;
 }
 

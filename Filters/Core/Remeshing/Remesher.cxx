@@ -65,12 +65,20 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
   bool avoidCrossings)
 {
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
-  const std::vector<std::array<int, 3>> triangles = mesh.triangles();
-  std::unique_ptr<CrossingGuard> guard;
-  if (avoidCrossings)
-  {
-    guard = std::make_unique<CrossingGuard>(x, triangles);
-  }
+  std::vector<std::array<int, 3>> triangles; // as they are before the pass, for the guard
+  std::unique_ptr<CrossingGuard> guard;      // built at the first collapse it is asked about
+  auto crossing = [&](int a, int b, const Vec3& m) {
+    if (!avoidCrossings)
+    {
+      return false;
+    }
+    if (!guard)
+    {
+      triangles = mesh.triangles();
+      guard = std::make_unique<CrossingGuard>(x, triangles);
+    }
+    return guard->fanCrosses(m, fanRim(mesh, a, b), a, b);
+  };
   std::vector<char> touched(mesh.vertexCount(), 0);
   int collapses = 0;
   for (const auto& e : edgesOf(mesh))
@@ -78,7 +86,7 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
     const int a = e[0], b = e[1];
     const Vec3 m = 0.5 * (x[a] + x[b]);
     if (!touched[a] && !touched[b] && mesh.vertexCount() - collapses > 4 && (x[a] - x[b]).norm() < minLength &&
-      staysShort(mesh, x, a, b, m, maxLength) && !(guard && guard->fanCrosses(m, fanRim(mesh, a, b), a, b)))
+      staysShort(mesh, x, a, b, m, maxLength) && collapseIsOk(mesh, x, a, b, m, settings) && !crossing(a, b, m))
     {
       collapses += collapseInPass(mesh, x, a, b, m, settings, touched);
     }

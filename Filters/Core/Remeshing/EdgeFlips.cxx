@@ -1,5 +1,6 @@
 #include "EdgeFlips.h"
 
+#include "SelfIntersections.h"
 #include "SurfaceGeometry.h"
 
 #include <algorithm>
@@ -32,6 +33,7 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
 {
   const std::vector<Vec3>& x = mesh.points();
   const double cosMax = std::cos(settings.maxDihedral * M_PI / 180.0);
+  CrossingGuard guard(x, mesh.triangles());
   std::vector<char> touched(mesh.vertexCount(), 0);
   int flips = 0;
   for (int i = 0; i < mesh.vertexCount(); ++i)
@@ -58,7 +60,7 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
       {
         continue;
       }
-      if (!flipKeepsShape(x, i, j, c, d, cosMax))
+      if (!flipKeepsShape(x, i, j, c, d, cosMax) || (settings.avoidCrossings && guard.flipCrosses(i, j, c, d)))
       {
         continue;
       }
@@ -66,6 +68,7 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
       {
         touched[i] = touched[j] = touched[c] = touched[d] = 1;
         ++flips;
+        guard.addFlip(i, j, c, d);
       }
     }
   }

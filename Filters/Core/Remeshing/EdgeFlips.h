@@ -18,6 +18,7 @@ struct FlipSettings
 {
   double maxDihedral = 60;       // degrees between the normals of the two triangles, before and after
   double minGain = 0.01;         // radians the smallest angle of the pair must gain
+  bool avoidCrossings = true;    // no flip whose new triangles would cross the surface (CrossingGuard)
 };
 
 // Whether flipping edge (i, j) of triangles (i, j, c) and (i, d, j) to (c, d) keeps the shape: both

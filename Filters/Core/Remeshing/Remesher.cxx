@@ -4,8 +4,6 @@
 #include "Relaxation.h"
 #include "SelfIntersections.h"
 
-#include <memory>
-
 #include <cmath>
 #include <cstdlib>
 
@@ -65,30 +63,27 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
   bool avoidCrossings)
 {
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
-  std::vector<std::array<int, 3>> triangles; // as they are before the pass, for the guard
-  std::unique_ptr<CrossingGuard> guard;      // built at the first collapse it is asked about
-  auto crossing = [&](int a, int b, const Vec3& m) {
-    if (!avoidCrossings)
-    {
-      return false;
-    }
-    if (!guard)
-    {
-      triangles = mesh.triangles();
-      guard = std::make_unique<CrossingGuard>(x, triangles);
-    }
-    return guard->fanCrosses(m, fanRim(mesh, a, b), a, b);
-  };
+  CrossingGuard guard(x, mesh.triangles());
   std::vector<char> touched(mesh.vertexCount(), 0);
   int collapses = 0;
   for (const auto& e : edgesOf(mesh))
   {
     const int a = e[0], b = e[1];
     const Vec3 m = 0.5 * (x[a] + x[b]);
-    if (!touched[a] && !touched[b] && mesh.vertexCount() - collapses > 4 && (x[a] - x[b]).norm() < minLength &&
-      staysShort(mesh, x, a, b, m, maxLength) && collapseIsOk(mesh, x, a, b, m, settings) && !crossing(a, b, m))
+    if (touched[a] || touched[b] || mesh.vertexCount() - collapses <= 4 || !((x[a] - x[b]).norm() < minLength) ||
+      !staysShort(mesh, x, a, b, m, maxLength) || !collapseIsOk(mesh, x, a, b, m, settings))
     {
-      collapses += collapseInPass(mesh, x, a, b, m, settings, touched);
+      continue;
+    }
+    const std::vector<std::array<int, 2>> rim = avoidCrossings ? fanRim(mesh, a, b) : std::vector<std::array<int, 2>>();
+    if (avoidCrossings && guard.fanCrosses(m, rim, a, b))
+    {
+      continue;
+    }
+    if (collapseInPass(mesh, x, a, b, m, settings, touched))
+    {
+      ++collapses;
+      guard.addFan(m, a, rim);
     }
   }
   return collapses > 0 && mesh.commit() ? collapses : 0;
@@ -115,6 +110,7 @@ int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings)
 {
   const std::vector<Vec3>& x = mesh.points();
   const double cosMax = std::cos(settings.maxDihedral * M_PI / 180.0);
+  CrossingGuard guard(x, mesh.triangles());
   std::vector<char> touched(mesh.vertexCount(), 0);
   auto deviation = [](int a, int b, int c, int d) {
     return std::abs(a - 6) + std::abs(b - 6) + std::abs(c - 6) + std::abs(d - 6);
@@ -132,12 +128,14 @@ int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings)
     }
     const int vi = mesh.valence(i), vj = mesh.valence(j), vc = mesh.valence(c), vd = mesh.valence(d);
     if (deviation(vi - 1, vj - 1, vc + 1, vd + 1) >= deviation(vi, vj, vc, vd) ||
-      !flipKeepsShape(x, i, j, c, d, cosMax) || !mesh.flip(i, j))
+      !flipKeepsShape(x, i, j, c, d, cosMax) || (settings.avoidCrossings && guard.flipCrosses(i, j, c, d)) ||
+      !mesh.flip(i, j))
     {
       continue;
     }
     touched[i] = touched[j] = touched[c] = touched[d] = 1;
     ++flips;
+    guard.addFlip(i, j, c, d);
   }
   return flips > 0 && mesh.commit() ? flips : 0;
 }

@@ -2,11 +2,13 @@
 
 #include "Box.h"
 #include "Parallel.h"
+#include "TriangleGrid.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 
 namespace shrinkwrap
 {
@@ -99,201 +101,274 @@ bool crosses(const Facet& s, const Facet& t, double margin)
 // Closer to a plane than this goes the exact way (orientations) rather than the plane test.
 double roundingMargin(const TriangleGrid& grid)
 {
-  return 1e-7 * grid.Cell;
+  return 1e-7 * grid.cell();
+}
+
+// The pairs of triangles that cross at x, found through the grid (boxes at x or containing them).
+std::vector<std::pair<int, int>> crossingPairs(
+  const TriangleGrid& grid, const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+{
+  std::vector<Facet> facets(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    facets[t] = facetOf(x, triangles[t]);
+  }
+  const double margin = roundingMargin(grid);
+  std::vector<std::pair<int, int>> pairs;
+  std::mutex lock;
+  parallelFor(0, grid.bucketCount(), [&](int begin, int end) {
+    std::vector<std::pair<int, int>> crossing;
+    grid.forEachOverlappingPair(begin, end, [&](int s, int t) {
+      if (crosses(facets[s], facets[t], margin))
+      {
+        crossing.emplace_back(s, t);
+      }
+    });
+    const std::lock_guard<std::mutex> guard(lock);
+    pairs.insert(pairs.end(), crossing.begin(), crossing.end());
+  });
+  return pairs;
 }
 } // namespace
-
-TriangleGrid::TriangleGrid(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
-{
-  const int nt = static_cast<int>(triangles.size());
-  Box all;
-  double edges = 0, longest = 0;
-  for (const auto& t : triangles)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      all.extend(x[t[k]]);
-      const double length = (x[t[k]] - x[t[(k + 1) % 3]]).norm();
-      edges += length;
-      longest = std::max(longest, length);
-    }
-  }
-  // Two mean edges wide, and no triangle in more than 9 x 9 x 9 cells.
-  this->Cell = nt > 0 ? std::max({ 2 * edges / (3.0 * nt), longest / 8, 1e-9 * all.diagonal() }) : 0;
-  if (!(this->Cell > 0) || !std::isfinite(this->Cell) || !std::isfinite(all.diagonal()))
-  {
-    return;
-  }
-  this->Origin = all.min;
-  this->Boxes.resize(nt);
-  this->Ranges.resize(nt);
-  this->Entries.reserve(8 * static_cast<std::size_t>(nt));
-  for (int t = 0; t < nt; ++t)
-  {
-    Box& b = this->Boxes[t];
-    for (int v : triangles[t])
-    {
-      b.extend(x[v]);
-    }
-    const auto& r = this->Ranges[t] = this->rangeOf(b);
-    for (std::uint64_t k = r[2]; k <= r[5]; ++k)
-      for (std::uint64_t j = r[1]; j <= r[4]; ++j)
-        for (std::uint64_t i = r[0]; i <= r[3]; ++i)
-        {
-          this->Entries.emplace_back(key(i, j, k), t);
-        }
-  }
-  std::sort(this->Entries.begin(), this->Entries.end());
-}
-
-std::array<std::uint64_t, 6> TriangleGrid::rangeOf(const Box& box) const
-{
-  std::array<std::uint64_t, 6> r{};
-  for (int a = 0; a < 3; ++a)
-  {
-    // Clamped to the grid's 2^21 cells an axis (a query box may reach beyond the surface's).
-    const auto cellOf = [&](double v) {
-      return static_cast<std::uint64_t>(std::clamp((v - this->Origin[a]) / this->Cell, 0.0, 2097151.0));
-    };
-    r[a] = cellOf(box.min[a]);
-    r[a + 3] = cellOf(box.max[a]);
-  }
-  return r;
-}
 
 SelfIntersections findSelfIntersections(
   const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
 {
   SelfIntersections found;
-  const int nt = static_cast<int>(triangles.size());
-  found.intersecting.assign(nt, 0);
+  found.intersecting.assign(triangles.size(), 0);
   const TriangleGrid grid(x, triangles);
-  if (nt < 2 || grid.empty())
+  if (triangles.size() < 2 || grid.empty())
   {
     return found;
   }
-  const auto& entries = grid.Entries;
-  std::vector<std::size_t> runs; // where each cell's run of two or more begins, then its end
-  for (std::size_t e = 0; e < entries.size();)
+  for (const auto& st : crossingPairs(grid, x, triangles))
   {
-    std::size_t end = e + 1;
-    while (end < entries.size() && entries[end].first == entries[e].first)
-    {
-      ++end;
-    }
-    if (end - e > 1)
-    {
-      runs.push_back(e);
-      runs.push_back(end);
-    }
-    e = end;
+    ++found.pairs;
+    found.intersecting[st.first] = found.intersecting[st.second] = 1;
   }
-  // A pair is tested in the first cell (lowest i, j, k) both boxes share, so once.
-  const auto& ranges = grid.Ranges;
-  auto firstShared = [&](int s, int t) {
-    return TriangleGrid::key(std::max(ranges[s][0], ranges[t][0]), std::max(ranges[s][1], ranges[t][1]),
-      std::max(ranges[s][2], ranges[t][2]));
-  };
-  std::vector<Facet> facets(nt);
-  for (int t = 0; t < nt; ++t)
-  {
-    facets[t] = facetOf(x, triangles[t]);
-  }
-  const double margin = roundingMargin(grid);
-  std::mutex lock;
-  parallelFor(0, static_cast<int>(runs.size() / 2), [&](int begin, int end) {
-    std::vector<std::pair<int, int>> crossing;
-    for (int c = begin; c < end; ++c)
-    {
-      for (std::size_t p = runs[2 * c]; p < runs[2 * c + 1]; ++p)
-      {
-        for (std::size_t q = p + 1; q < runs[2 * c + 1]; ++q)
-        {
-          const int s = entries[p].second, t = entries[q].second;
-          if (grid.Boxes[s].overlaps(grid.Boxes[t]) && firstShared(s, t) == entries[p].first &&
-            crosses(facets[s], facets[t], margin))
-          {
-            crossing.emplace_back(s, t);
-          }
-        }
-      }
-    }
-    std::lock_guard<std::mutex> guard(lock);
-    for (const auto& st : crossing)
-    {
-      ++found.pairs;
-      found.intersecting[st.first] = found.intersecting[st.second] = 1;
-    }
-  });
   return found;
 }
 
 CrossingGuard::CrossingGuard(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles)
   : Points(points)
   , Triangles(triangles)
-  , Grid(points, triangles)
 {
 }
 
-bool CrossingGuard::fanCrosses(const Vec3& m, const std::vector<std::array<int, 2>>& rim, int a, int b) const
+namespace
 {
-  const std::vector<Vec3>& x = this->Points;
+template <typename Corners>
+Box boxOf(const Corners& p)
+{
+  Box box;
+  for (const Vec3& q : p)
+  {
+    box.extend(q);
+  }
+  return box;
+}
+} // namespace
+
+bool CrossingGuard::fanCrosses(const Vec3& m, const std::vector<std::array<int, 2>>& rim, int a, int b)
+{
+  std::vector<Made> fan;
   for (const auto& uw : rim)
   {
-    const Facet fan = facetAt({ m, x[uw[0]], x[uw[1]] }, { -1, uw[0], uw[1] });
-    Box box;
-    for (const Vec3& p : fan.p)
-    {
-      box.extend(p);
-    }
-    bool crossing = false;
-    this->Grid.forEachNear(box, [&](int t) {
-      const auto& tri = this->Triangles[t];
-      if (!crossing && !has(tri, a) && !has(tri, b))
-      {
-        crossing = crosses(fan, facetOf(x, tri), roundingMargin(this->Grid));
-      }
-    });
-    if (crossing)
-    {
-      return true;
-    }
+    const std::array<Vec3, 3> p{ m, this->Points[uw[0]], this->Points[uw[1]] };
+    fan.push_back({ p, { -1, uw[0], uw[1] }, boxOf(p) });
   }
-  return false;
+  return this->anyCrosses(fan, a, b);
+}
+
+void CrossingGuard::addFan(const Vec3& m, int keep, const std::vector<std::array<int, 2>>& rim)
+{
+  for (const auto& uw : rim)
+  {
+    const std::array<Vec3, 3> p{ m, this->Points[uw[0]], this->Points[uw[1]] };
+    this->add({ p, { keep, uw[0], uw[1] }, boxOf(p) });
+  }
+}
+
+// The new triangles share two vertices with each old one, so `crosses` passes over those.
+bool CrossingGuard::flipCrosses(int i, int j, int c, int d)
+{
+  const std::vector<Vec3>& x = this->Points;
+  const std::array<Vec3, 3> p{ x[i], x[c], x[d] }, q{ x[j], x[d], x[c] };
+  return this->anyCrosses({ { p, { i, c, d }, boxOf(p) }, { q, { j, d, c }, boxOf(q) } }, -1, -1);
+}
+
+void CrossingGuard::addFlip(int i, int j, int c, int d)
+{
+  const std::vector<Vec3>& x = this->Points;
+  const std::array<Vec3, 3> p{ x[i], x[c], x[d] }, q{ x[j], x[d], x[c] };
+  this->add({ p, { i, c, d }, boxOf(p) });
+  this->add({ q, { j, d, c }, boxOf(q) });
+}
+
+// One grid query for all the new triangles; each is then tested against the candidates its own box
+// overlaps.
+bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
+{
+  if (!this->Grid)
+  {
+    this->Grid = std::make_unique<TriangleGrid>(this->Points, this->Triangles);
+  }
+  std::vector<Facet> facets;
+  Box all;
+  for (const Made& m : made)
+  {
+    facets.push_back(facetAt(m.p, m.id));
+    all.extend(m.box);
+  }
+  const double margin = roundingMargin(*this->Grid);
+  bool crossing = false;
+  auto test = [&](const Box& box, const auto& facetOfOther) {
+    std::optional<Facet> other; // made for the first new triangle whose box it overlaps
+    for (std::size_t f = 0; f < made.size() && !crossing; ++f)
+    {
+      if (made[f].box.overlaps(box))
+      {
+        if (!other)
+        {
+          other = facetOfOther();
+        }
+        crossing = crosses(facets[f], *other, margin);
+      }
+    }
+  };
+  this->Grid->forEachNear(all, [&](int t) {
+    const auto& tri = this->Triangles[t];
+    if (!crossing && !has(tri, a) && !has(tri, b))
+    {
+      test(this->Grid->box(t), [&] { return facetOf(this->Points, tri); });
+    }
+  });
+  // The pass's own edits, binned in the same cells.
+  std::vector<int> earlier;
+  const TriangleGrid::Range r = this->Grid->rangeOf(all);
+  for (std::uint32_t k = r[2]; k <= r[5] && !crossing && !this->EditCells.empty(); ++k)
+    for (std::uint32_t j = r[1]; j <= r[4]; ++j)
+      for (std::uint32_t i = r[0]; i <= r[3]; ++i)
+      {
+        const auto cell = this->EditCells.find(TriangleGrid::key(i, j, k));
+        if (cell != this->EditCells.end())
+        {
+          earlier.insert(earlier.end(), cell->second.begin(), cell->second.end());
+        }
+      }
+  std::sort(earlier.begin(), earlier.end());
+  earlier.erase(std::unique(earlier.begin(), earlier.end()), earlier.end());
+  for (std::size_t n = 0; n < earlier.size() && !crossing; ++n)
+  {
+    const Made& e = this->Edits[earlier[n]];
+    test(e.box, [&] { return facetAt(e.p, e.id); });
+  }
+  return crossing;
+}
+
+void CrossingGuard::add(const Made& made)
+{
+  if (!this->Grid)
+  {
+    this->Grid = std::make_unique<TriangleGrid>(this->Points, this->Triangles);
+  }
+  this->Edits.push_back(made);
+  const TriangleGrid::Range r = this->Grid->rangeOf(made.box);
+  for (std::uint32_t k = r[2]; k <= r[5]; ++k)
+    for (std::uint32_t j = r[1]; j <= r[4]; ++j)
+      for (std::uint32_t i = r[0]; i <= r[3]; ++i)
+      {
+        this->EditCells[TriangleGrid::key(i, j, k)].push_back(static_cast<int>(this->Edits.size()) - 1);
+      }
 }
 
 int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   const std::vector<std::array<int, 3>>& triangles)
 {
-  SelfIntersections now = findSelfIntersections(next, triangles);
-  if (now.pairs == 0)
+  const int nt = static_cast<int>(triangles.size());
+  std::vector<Box> swept(nt);
+  for (int t = 0; t < nt; ++t)
+  {
+    for (int v : triangles[t])
+    {
+      swept[t].extend(previous[v]);
+      swept[t].extend(next[v]);
+    }
+  }
+  const TriangleGrid grid(std::move(swept), TriangleGrid::cellSizeFor(next, triangles));
+  if (nt < 2 || grid.empty())
   {
     return 0;
   }
-  const SelfIntersections before = findSelfIntersections(previous, triangles);
+  const double margin = roundingMargin(grid);
+  auto isNew = [&](int s, int t) {
+    return !crosses(facetOf(previous, triangles[s]), facetOf(previous, triangles[t]), margin);
+  };
+  std::vector<std::pair<int, int>> found = crossingPairs(grid, next, triangles);
+  std::vector<std::vector<int>> trianglesAt; // per vertex, built when a first vertex is held
   int held = 0;
-  for (bool moved = true; moved && now.pairs > 0;)
+  while (!found.empty())
   {
-    moved = false;
-    for (std::size_t t = 0; t < triangles.size(); ++t)
+    std::vector<int> moved; // the vertices this round holds
+    for (const auto& st : found)
     {
-      if (!now.intersecting[t] || before.intersecting[t])
+      if (!isNew(st.first, st.second))
       {
         continue;
       }
-      for (int v : triangles[t])
+      for (int t : { st.first, st.second })
       {
-        if (next[v] != previous[v])
+        for (int v : triangles[t])
         {
-          next[v] = previous[v];
-          ++held;
-          moved = true;
+          if (next[v] != previous[v])
+          {
+            next[v] = previous[v];
+            moved.push_back(v);
+          }
         }
       }
     }
-    if (moved)
+    if (moved.empty())
     {
-      now = findSelfIntersections(next, triangles);
+      break;
+    }
+    held += static_cast<int>(moved.size());
+    if (trianglesAt.empty())
+    {
+      trianglesAt.resize(next.size());
+      for (int t = 0; t < nt; ++t)
+      {
+        for (int v : triangles[t])
+        {
+          trianglesAt[v].push_back(t);
+        }
+      }
+    }
+    // Only the triangles around the held vertices changed: re-test them against their neighbours.
+    std::vector<int> changed;
+    for (int v : moved)
+    {
+      changed.insert(changed.end(), trianglesAt[v].begin(), trianglesAt[v].end());
+    }
+    std::sort(changed.begin(), changed.end());
+    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    found.clear();
+    for (int s : changed)
+    {
+      const Facet fs = facetOf(next, triangles[s]);
+      Box box;
+      for (const Vec3& p : fs.p)
+      {
+        box.extend(p);
+      }
+      grid.forEachNear(box, [&](int t) {
+        // A pair of two changed triangles is met twice; it is kept once.
+        const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
+        if (t != s && !counted && crosses(fs, facetOf(next, triangles[t]), margin))
+        {
+          found.emplace_back(s, t);
+        }
+      });
     }
   }
   return held;

@@ -6,11 +6,13 @@
 #ifndef ShrinkWrap_SelfIntersections_h
 #define ShrinkWrap_SelfIntersections_h
 
-#include "Box.h"
+#include "TriangleGrid.h"
 #include "Vec3.h"
 
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace shrinkwrap
@@ -25,73 +27,47 @@ struct SelfIntersections
 SelfIntersections findSelfIntersections(
   const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
 
-// Fronts stop where they meet: the vertices of triangles that cross at `next` but did not at
-// `previous` (the same triangles) go back to their `previous` positions, again until no new crossing
-// is left (at worst every vertex of a crossing stays where it was). Returns how many were held.
+// Fronts stop where they meet: the vertices of each pair of triangles that crosses at `next` but did
+// not at `previous` (the same triangles) go back to their `previous` positions, again until no new
+// crossing is left (at worst every vertex of a crossing stays where it was). One grid of the boxes swept
+// over the step serves every round; a round re-tests only the triangles it moved. Returns how many
+// vertices were held.
 int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   const std::vector<std::array<int, 3>>& triangles);
 
-// The triangles of a surface binned in a uniform grid of their boxes.
-class TriangleGrid
-{
-public:
-  TriangleGrid(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
-  bool empty() const { return this->Entries.empty(); }
-  // Calls f(triangle) for every triangle whose box overlaps `box` (once each).
-  template <typename F>
-  void forEachNear(const Box& box, F&& f) const;
-
-  // (cell key, triangle), sorted by key; cells keyed 21 bits an axis.
-  std::vector<std::pair<std::uint64_t, int>> Entries;
-  std::vector<Box> Boxes;
-  std::vector<std::array<std::uint64_t, 6>> Ranges; // per triangle: first and last cell per axis
-  Vec3 Origin = Vec3::Zero();
-  double Cell = 0;
-  std::array<std::uint64_t, 6> rangeOf(const Box& box) const;
-  static std::uint64_t key(std::uint64_t i, std::uint64_t j, std::uint64_t k) { return (k << 42) | (j << 21) | i; }
-};
-
-// For the local edits of a pass (collapses): whether the fan of triangles (m, u, w) that merging a and b
-// at m would make crosses the rest of the surface as it was when the pass began.
+// For the local edits of a pass (collapses, flips): whether the triangles an edit would make cross the
+// surface: the surface as it was when the pass began (points and triangles that stay put until the
+// pass commits), and what the pass already made (two edits of one pass can meet across a thin part).
+// The grid is built at the first question: most passes of an evolution ask none.
 class CrossingGuard
 {
 public:
   CrossingGuard(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
-  // rim: the (u, w) of each new triangle (m, u, w).
-  bool fanCrosses(const Vec3& m, const std::vector<std::array<int, 2>>& rim, int a, int b) const;
+  // Merging a and b at m, which makes the triangles (m, u, w) of the rim's (u, w).
+  bool fanCrosses(const Vec3& m, const std::vector<std::array<int, 2>>& rim, int a, int b);
+  void addFan(const Vec3& m, int keep, const std::vector<std::array<int, 2>>& rim);
+  // Flipping edge (i, j) of triangles (i, j, c) and (j, i, d) to (c, d).
+  bool flipCrosses(int i, int j, int c, int d);
+  void addFlip(int i, int j, int c, int d);
 
 private:
+  struct Made
+  {
+    std::array<Vec3, 3> p;
+    std::array<int, 3> id;
+    Box box;
+  };
+  // Whether any of `made` crosses a triangle of the surface not incident to a or b (the edit's
+  // vertices whose triangles it replaces; -1: none), or an earlier edit's triangle.
+  bool anyCrosses(const std::vector<Made>& made, int a, int b);
+  void add(const Made& made);
+
   const std::vector<Vec3>& Points;
   const std::vector<std::array<int, 3>>& Triangles;
-  TriangleGrid Grid;
+  std::unique_ptr<TriangleGrid> Grid;
+  std::vector<Made> Edits;
+  std::unordered_map<std::uint64_t, std::vector<int>> EditCells; // in the grid's cells
 };
-
-template <typename F>
-void TriangleGrid::forEachNear(const Box& box, F&& f) const
-{
-  if (this->Entries.empty())
-  {
-    return;
-  }
-  const auto r = this->rangeOf(box);
-  std::vector<int> seen;
-  for (std::uint64_t k = r[2]; k <= r[5]; ++k)
-    for (std::uint64_t j = r[1]; j <= r[4]; ++j)
-      for (std::uint64_t i = r[0]; i <= r[3]; ++i)
-      {
-        const std::uint64_t at = key(i, j, k);
-        auto e = std::lower_bound(this->Entries.begin(), this->Entries.end(), std::make_pair(at, -1));
-        for (; e != this->Entries.end() && e->first == at; ++e)
-        {
-          if (this->Boxes[e->second].overlaps(box) &&
-            std::find(seen.begin(), seen.end(), e->second) == seen.end())
-          {
-            seen.push_back(e->second);
-            f(e->second);
-          }
-        }
-      }
-}
 
 } // namespace shrinkwrap
 

@@ -1,12 +1,18 @@
 // Self-intersections of a surface (issue #10): an icosphere has none; two icospheres that overlap
 // cross along a circle, and exactly the triangles near it are flagged; one vertex pushed through the
 // opposite side makes its fan cross; shared vertices and edges are never counted.
+// The grid behind them reports every overlapping box once (against brute force); fronts that meet are
+// held back pair by pair; the guard of a pass's edits refuses a flip whose new triangles would cross
+// the surface, and remembers the pass's own edits.
 // And TargetDistance: near the target, d and grad d are the exact distance and direction to it.
 #include "Icosphere.h"
 #include "SelfIntersections.h"
 #include "SignedDistance.h"
 #include "TargetDistance.h"
 #include "TestUtilities.h"
+#include "TriangleGrid.h"
+
+#include <algorithm>
 
 namespace
 {
@@ -41,6 +47,108 @@ void selfIntersections()
   TriangleSurface pushed = sphere;
   pushed.points[0] = -1.3 * pushed.points[0]; // through the other side
   SW_CHECK(findSelfIntersections(pushed.points, pushed.triangles).pairs > 0, "a vertex pushed through the sphere");
+}
+
+void triangleGrid()
+{
+  // Small random triangles in a unit cube: their boxes overlap in clusters.
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+  unsigned state = 7;
+  auto random = [&] { return (state = state * 1664525u + 1013904223u) / 4294967296.0; };
+  for (int t = 0; t < 600; ++t)
+  {
+    const Vec3 c(random(), random(), random());
+    for (int k = 0; k < 3; ++k)
+    {
+      points.push_back(c + 0.12 * Vec3(random(), random(), random()));
+    }
+    triangles.push_back({ 3 * t, 3 * t + 1, 3 * t + 2 });
+  }
+  const TriangleGrid grid(points, triangles);
+  std::vector<Box> boxes(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (int v : triangles[t])
+    {
+      boxes[t].extend(points[v]);
+    }
+  }
+  long long expected = 0, reported = 0, wrong = 0;
+  std::vector<int> times(triangles.size() * triangles.size(), 0);
+  grid.forEachOverlappingPair(0, grid.bucketCount(), [&](int s, int t) {
+    ++reported;
+    ++times[std::min(s, t) * triangles.size() + std::max(s, t)];
+  });
+  for (std::size_t s = 0; s < triangles.size(); ++s)
+  {
+    for (std::size_t t = s + 1; t < triangles.size(); ++t)
+    {
+      const bool overlap = boxes[s].overlaps(boxes[t]);
+      expected += overlap;
+      wrong += times[s * triangles.size() + t] != (overlap ? 1 : 0);
+    }
+  }
+  std::printf("grid of 600 random triangles: %lld overlapping pairs by brute force, %lld reported, %lld wrong\n",
+    expected, reported, wrong);
+  SW_CHECK(expected > 100 && reported == expected && wrong == 0, "every overlapping pair once, and no other");
+  Box query;
+  query.extend(Vec3(0.3, 0.3, 0.3));
+  query.extend(Vec3(0.6, 0.5, 0.7));
+  std::vector<int> near;
+  grid.forEachNear(query, [&](int t) { near.push_back(t); });
+  std::vector<int> brute;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    if (boxes[t].overlaps(query))
+    {
+      brute.push_back(static_cast<int>(t));
+    }
+  }
+  std::sort(near.begin(), near.end());
+  SW_CHECK(!brute.empty() && near == brute, "a box query finds every overlapping triangle once");
+}
+
+void heldFronts()
+{
+  const TriangleSurface sphere = icosphere(3, Vec3::Zero(), 1.0);
+  std::vector<Vec3> next;
+  for (const Vec3& p : sphere.points)
+  {
+    next.push_back(0.99 * p); // every vertex moves
+  }
+  next[0] = -1.3 * sphere.points[0]; // and one through the other side
+  SW_CHECK(findSelfIntersections(next, sphere.triangles).pairs > 0, "the step would cross");
+  const int held = holdNewCrossings(sphere.points, next, sphere.triangles);
+  int unmoved = 0;
+  for (std::size_t v = 0; v < next.size(); ++v)
+  {
+    unmoved += next[v] == sphere.points[v];
+  }
+  std::printf("a step through the sphere: %d vertices held, %d of %zu at their old positions\n", held, unmoved,
+    next.size());
+  SW_CHECK(findSelfIntersections(next, sphere.triangles).pairs == 0 && next[0] == sphere.points[0],
+    "the crossing vertex is held, and no crossing is left");
+  SW_CHECK(held == unmoved && held < 30, "only the vertices of crossing pairs are held");
+}
+
+void guardedEdits()
+{
+  // A roof: ridge i-j at z = 0.2 over the corners c, d at z = 0. Flipping to c-d makes a valley, and
+  // a small upright triangle under the roof at (0.45, 0.35) would pierce it.
+  const std::vector<Vec3> x{ { 0, 0, 0.2 }, { 1, 1, 0.2 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0.43, 0.35, 0.0 },
+    { 0.47, 0.35, 0.0 }, { 0.45, 0.35, 0.1 } };
+  const std::vector<std::array<int, 3>> roof{ { 0, 1, 2 }, { 1, 0, 3 } };
+  std::vector<std::array<int, 3>> withPost = roof;
+  withPost.push_back({ 4, 5, 6 });
+  CrossingGuard open(x, roof), blocked(x, withPost);
+  SW_CHECK(!open.flipCrosses(0, 1, 2, 3), "a flip with nothing under the roof is allowed");
+  SW_CHECK(blocked.flipCrosses(0, 1, 2, 3), "a flip whose valley would pierce the post is refused");
+  // The post made by a later collapse in the same pass (m = its tip, rim (4, 5)) meets the flipped
+  // valley, which the surface of the pass's beginning does not hold.
+  SW_CHECK(!open.fanCrosses(x[6], { { 4, 5 } }, 6, 6), "the post misses the roof as it was");
+  open.addFlip(0, 1, 2, 3);
+  SW_CHECK(open.fanCrosses(x[6], { { 4, 5 } }, 6, 6), "but meets the valley the pass flipped");
 }
 
 void exactNearTarget()
@@ -78,6 +186,9 @@ void exactNearTarget()
 int TestSelfIntersections(int, char*[])
 {
   selfIntersections();
+  triangleGrid();
+  heldFronts();
+  guardedEdits();
   exactNearTarget();
   return testing::finish("TestSelfIntersections");
 }

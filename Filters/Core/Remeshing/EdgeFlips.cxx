@@ -68,7 +68,10 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
       {
         touched[i] = touched[j] = touched[c] = touched[d] = 1;
         ++flips;
-        guard.addFlip(i, j, c, d);
+        if (settings.avoidCrossings)
+        {
+          guard.addFlip(i, j, c, d);
+        }
       }
     }
   }

@@ -1,7 +1,8 @@
 // Edge flips that raise the smallest angle of a triangle pair, for a Lagrangian surface whose fixed
 // connectivity cannot follow large tangential stretching (the paper's Section 5 names connectivity
 // adjustments as the missing piece). A flip keeps the vertices, so the surface stays closed and
-// 2-manifold; it is refused where the two triangles are not nearly coplanar, so the shape is kept.
+// 2-manifold; it is refused where the two triangles are not nearly coplanar, so the shape is kept, and
+// where the new triangles would cross another part of the surface.
 #ifndef ShrinkWrap_EdgeFlips_h
 #define ShrinkWrap_EdgeFlips_h
 

@@ -83,7 +83,7 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
     if (collapseInPass(mesh, x, a, b, m, settings, touched))
     {
       ++collapses;
-      guard.addFan(m, a, rim);
+      guard.addFan(m, a, b, rim);
     }
   }
   return collapses > 0 && mesh.commit() ? collapses : 0;
@@ -135,7 +135,10 @@ int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings)
     }
     touched[i] = touched[j] = touched[c] = touched[d] = 1;
     ++flips;
-    guard.addFlip(i, j, c, d);
+    if (settings.avoidCrossings)
+    {
+      guard.addFlip(i, j, c, d);
+    }
   }
   return flips > 0 && mesh.commit() ? flips : 0;
 }

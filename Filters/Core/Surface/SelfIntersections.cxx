@@ -169,24 +169,36 @@ Box boxOf(const Corners& p)
 }
 } // namespace
 
+const Vec3& CrossingGuard::position(int v) const
+{
+  const auto moved = this->MovedTo.find(v);
+  return moved == this->MovedTo.end() ? this->Points[v] : moved->second;
+}
+
 bool CrossingGuard::fanCrosses(const Vec3& m, const std::vector<std::array<int, 2>>& rim, int a, int b)
 {
   std::vector<Made> fan;
   for (const auto& uw : rim)
   {
-    const std::array<Vec3, 3> p{ m, this->Points[uw[0]], this->Points[uw[1]] };
+    const std::array<Vec3, 3> p{ m, this->position(uw[0]), this->position(uw[1]) };
     fan.push_back({ p, { -1, uw[0], uw[1] }, boxOf(p) });
   }
   return this->anyCrosses(fan, a, b);
 }
 
-void CrossingGuard::addFan(const Vec3& m, int keep, const std::vector<std::array<int, 2>>& rim)
+void CrossingGuard::addFan(const Vec3& m, int keep, int gone, const std::vector<std::array<int, 2>>& rim)
 {
   for (const auto& uw : rim)
   {
-    const std::array<Vec3, 3> p{ m, this->Points[uw[0]], this->Points[uw[1]] };
+    const std::array<Vec3, 3> p{ m, this->position(uw[0]), this->position(uw[1]) };
     this->add({ p, { keep, uw[0], uw[1] }, boxOf(p) });
   }
+  if (this->Merged.empty())
+  {
+    this->Merged.assign(this->Points.size(), 0);
+  }
+  this->Merged[keep] = this->Merged[gone] = 1;
+  this->MovedTo[keep] = m;
 }
 
 // The new triangles share two vertices with each old one, so `crosses` passes over those.
@@ -238,7 +250,9 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
   };
   this->Grid->forEachNear(all, [&](int t) {
     const auto& tri = this->Triangles[t];
-    if (!crossing && !has(tri, a) && !has(tri, b))
+    const bool replaced =
+      !this->Merged.empty() && (this->Merged[tri[0]] || this->Merged[tri[1]] || this->Merged[tri[2]]);
+    if (!crossing && !replaced && !has(tri, a) && !has(tri, b))
     {
       test(this->Grid->box(t), [&] { return facetOf(this->Points, tri); });
     }

@@ -45,7 +45,8 @@ public:
   CrossingGuard(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
   // Merging a and b at m, which makes the triangles (m, u, w) of the rim's (u, w).
   bool fanCrosses(const Vec3& m, const std::vector<std::array<int, 2>>& rim, int a, int b);
-  void addFan(const Vec3& m, int keep, const std::vector<std::array<int, 2>>& rim);
+  // After the merge: the fan replaces every triangle around keep and gone, and keep lies at m.
+  void addFan(const Vec3& m, int keep, int gone, const std::vector<std::array<int, 2>>& rim);
   // Flipping edge (i, j) of triangles (i, j, c) and (j, i, d) to (c, d).
   bool flipCrosses(int i, int j, int c, int d);
   void addFlip(int i, int j, int c, int d);
@@ -61,11 +62,14 @@ private:
   // vertices whose triangles it replaces; -1: none), or an earlier edit's triangle.
   bool anyCrosses(const std::vector<Made>& made, int a, int b);
   void add(const Made& made);
+  const Vec3& position(int v) const; // where the pass's merges put it
 
   const std::vector<Vec3>& Points;
   const std::vector<std::array<int, 3>>& Triangles;
   std::unique_ptr<TriangleGrid> Grid;
   std::vector<Made> Edits;
+  std::vector<char> Merged;                  // per vertex: merged by the pass (its old triangles are gone)
+  std::unordered_map<int, Vec3> MovedTo;     // the kept vertices of the pass's merges
   std::unordered_map<std::uint64_t, std::vector<int>> EditCells; // in the grid's cells
 };
 

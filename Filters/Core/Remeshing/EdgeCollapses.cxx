@@ -1,5 +1,6 @@
 #include "EdgeCollapses.h"
 
+#include "SelfIntersections.h"
 #include "SurfaceGeometry.h"
 
 namespace shrinkwrap
@@ -74,9 +75,23 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
   const std::vector<std::array<int, 3>> triangles = mesh.triangles();
   const int nv = mesh.vertexCount();
   std::vector<char> touched(nv, 0);
+  CrossingGuard guard(x, triangles);
   int collapses = 0;
   auto collapse = [&](int keep, int gone, const Vec3& m) {
-    collapses += collapseInPass(mesh, x, keep, gone, m, settings, touched);
+    std::vector<std::array<int, 2>> rim;
+    if (settings.avoidCrossings && !touched[keep] && !touched[gone])
+    {
+      rim = fanRim(mesh, keep, gone);
+      if (guard.fanCrosses(m, rim, keep, gone))
+      {
+        return;
+      }
+    }
+    if (collapseInPass(mesh, x, keep, gone, m, settings, touched))
+    {
+      ++collapses;
+      guard.addFan(m, keep, gone, rim);
+    }
   };
   for (const auto& t : triangles)
   {

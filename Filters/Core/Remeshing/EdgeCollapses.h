@@ -19,6 +19,7 @@ struct CollapseSettings
   double maxAngle = 0.1;     // radians: triangles with a smaller angle have their shortest edge collapsed
   double minNormalDot = 0.5; // every triangle around the merged vertex keeps its normal within 60 degrees
   int maxPasses = 10;        // passes per step (the evolver's)
+  bool avoidCrossings = true; // no collapse whose new triangles would cross the surface (CrossingGuard)
 };
 
 // Calls f(v, u, w) for every triangle (v, u, w) around a or b (v in {a, b}) other than the two on the
@@ -37,6 +38,14 @@ void forEachFanTriangle(const SurfaceMesh& mesh, int a, int b, F&& f)
       }
     }
   }
+}
+
+// The rims (u, w) of the triangles (m, u, w) that merging a and b at m makes.
+inline std::vector<std::array<int, 2>> fanRim(const SurfaceMesh& mesh, int a, int b)
+{
+  std::vector<std::array<int, 2>> rim;
+  forEachFanTriangle(mesh, a, b, [&](int, int u, int w) { rim.push_back({ u, w }); });
+  return rim;
 }
 
 // Whether merging `gone` into `keep` at m keeps a closed 2-manifold of the same genus with the

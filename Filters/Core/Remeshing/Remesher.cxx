@@ -51,14 +51,6 @@ bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, int 
   return true;
 }
 
-// The rims (u, w) of the triangles (m, u, w) that merging a and b at m makes.
-std::vector<std::array<int, 2>> fanRim(const SurfaceMesh& mesh, int a, int b)
-{
-  std::vector<std::array<int, 2>> rim;
-  forEachFanTriangle(mesh, a, b, [&](int, int u, int w) { rim.push_back({ u, w }); });
-  return rim;
-}
-
 int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings,
   bool avoidCrossings)
 {

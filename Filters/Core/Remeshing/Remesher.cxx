@@ -55,7 +55,8 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
   bool avoidCrossings)
 {
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
-  CrossingGuard guard(x, mesh.triangles());
+  const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // edits change the mesh's own
+  CrossingGuard guard(x, triangles);
   std::vector<char> touched(mesh.vertexCount(), 0);
   int collapses = 0;
   for (const auto& e : edgesOf(mesh))
@@ -102,7 +103,8 @@ int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings)
 {
   const std::vector<Vec3>& x = mesh.points();
   const double cosMax = std::cos(settings.maxDihedral * M_PI / 180.0);
-  CrossingGuard guard(x, mesh.triangles());
+  const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // flips change the mesh's own
+  CrossingGuard guard(x, triangles);
   std::vector<char> touched(mesh.vertexCount(), 0);
   auto deviation = [](int a, int b, int c, int d) {
     return std::abs(a - 6) + std::abs(b - 6) + std::abs(c - 6) + std::abs(d - 6);

@@ -36,8 +36,8 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   const std::vector<std::array<int, 3>>& triangles);
 
 // For the local edits of a pass (collapses, flips): whether the triangles an edit would make cross the
-// surface: the surface as it was when the pass began (points and triangles that stay put until the
-// pass commits), and what the pass already made (two edits of one pass can meet across a thin part).
+// surface: the surface as it was when the pass began (points and triangles the guard only refers to:
+// copies, not the mesh's own, which its edits change), and what the pass already made (two edits of one pass can meet across a thin part).
 // The grid is built at the first question: most passes of an evolution ask none.
 class CrossingGuard
 {

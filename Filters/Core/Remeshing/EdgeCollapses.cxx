@@ -1,6 +1,5 @@
 #include "EdgeCollapses.h"
 
-#include "SelfIntersections.h"
 #include "SurfaceGeometry.h"
 
 namespace shrinkwrap
@@ -51,11 +50,20 @@ bool collapseIsOk(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep,
 }
 
 bool collapseInPass(SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
-  const CollapseSettings& settings, std::vector<char>& touched)
+  const CollapseSettings& settings, std::vector<char>& touched, CrossingGuard& guard)
 {
   if (touched[keep] || touched[gone] || !collapseIsOk(mesh, x, keep, gone, m, settings))
   {
     return false;
+  }
+  std::vector<std::array<int, 2>> rim; // of the fan (m, u, w) the merge makes
+  if (settings.avoidCrossings)
+  {
+    forEachFanTriangle(mesh, keep, gone, [&](int, int u, int w) { rim.push_back({ u, w }); });
+    if (guard.collapseCrosses(keep, gone, m, rim))
+    {
+      return false;
+    }
   }
   for (int v : { keep, gone })
   {
@@ -65,7 +73,15 @@ bool collapseInPass(SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int
       touched[mesh.ring(q)] = 1;
     }
   }
-  return mesh.collapse(keep, gone, m);
+  if (!mesh.collapse(keep, gone, m))
+  {
+    return false;
+  }
+  if (settings.avoidCrossings)
+  {
+    guard.addCollapse(keep, gone, m, rim);
+  }
+  return true;
 }
 
 int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
@@ -78,20 +94,7 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
   CrossingGuard guard(x, triangles);
   int collapses = 0;
   auto collapse = [&](int keep, int gone, const Vec3& m) {
-    std::vector<std::array<int, 2>> rim;
-    if (settings.avoidCrossings && !touched[keep] && !touched[gone])
-    {
-      rim = fanRim(mesh, keep, gone);
-      if (guard.fanCrosses(m, rim, keep, gone))
-      {
-        return;
-      }
-    }
-    if (collapseInPass(mesh, x, keep, gone, m, settings, touched))
-    {
-      ++collapses;
-      guard.addFan(m, keep, gone, rim);
-    }
+    collapses += collapseInPass(mesh, x, keep, gone, m, settings, touched, guard);
   };
   for (const auto& t : triangles)
   {

@@ -6,6 +6,7 @@
 #ifndef ShrinkWrap_EdgeCollapses_h
 #define ShrinkWrap_EdgeCollapses_h
 
+#include "SelfIntersections.h"
 #include "SurfaceMesh.h"
 
 #include <array>
@@ -40,14 +41,6 @@ void forEachFanTriangle(const SurfaceMesh& mesh, int a, int b, F&& f)
   }
 }
 
-// The rims (u, w) of the triangles (m, u, w) that merging a and b at m makes.
-inline std::vector<std::array<int, 2>> fanRim(const SurfaceMesh& mesh, int a, int b)
-{
-  std::vector<std::array<int, 2>> rim;
-  forEachFanTriangle(mesh, a, b, [&](int, int u, int w) { rim.push_back({ u, w }); });
-  return rim;
-}
-
 // Whether merging `gone` into `keep` at m keeps a closed 2-manifold of the same genus with the
 // orientations kept: the two vertices opposite the edge keep valence above 3, the merged vertex has
 // at least 3, only those two are neighbours of both (link condition), and no other triangle around
@@ -57,10 +50,12 @@ bool collapseIsOk(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep,
   const CollapseSettings& settings);
 
 // One collapse of a pass: merges `gone` into `keep` at m unless either was touched by an earlier
-// collapse of the pass or collapseIsOk fails; then marks both and their neighbours touched, so that
-// every ring the pass reads is current (x: the positions before the pass). True if it collapsed.
+// collapse of the pass, collapseIsOk fails or (with avoidCrossings) the pass's guard finds the new
+// triangles crossing the surface; then marks both and their neighbours touched, so that every ring
+// the pass reads is current (x: the positions before the pass), and tells the guard. True if it
+// collapsed.
 bool collapseInPass(SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
-  const CollapseSettings& settings, std::vector<char>& touched);
+  const CollapseSettings& settings, std::vector<char>& touched, CrossingGuard& guard);
 
 // One pass over the triangles of `mesh` (a vertex takes part in at most one collapse), committed: the
 // vertex data of a merged pair is the kept vertex's. Returns the number of collapses.

@@ -51,8 +51,7 @@ bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, int 
   return true;
 }
 
-int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings,
-  bool avoidCrossings)
+int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings)
 {
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
   const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // edits change the mesh's own
@@ -63,33 +62,22 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
   {
     const int a = e[0], b = e[1];
     const Vec3 m = 0.5 * (x[a] + x[b]);
-    if (touched[a] || touched[b] || mesh.vertexCount() - collapses <= 4 || !((x[a] - x[b]).norm() < minLength) ||
-      !staysShort(mesh, x, a, b, m, maxLength) || !collapseIsOk(mesh, x, a, b, m, settings))
+    if (mesh.vertexCount() - collapses > 4 && (x[a] - x[b]).norm() < minLength &&
+      staysShort(mesh, x, a, b, m, maxLength))
     {
-      continue;
-    }
-    const std::vector<std::array<int, 2>> rim = avoidCrossings ? fanRim(mesh, a, b) : std::vector<std::array<int, 2>>();
-    if (avoidCrossings && guard.fanCrosses(m, rim, a, b))
-    {
-      continue;
-    }
-    if (collapseInPass(mesh, x, a, b, m, settings, touched))
-    {
-      ++collapses;
-      guard.addFan(m, a, b, rim);
+      collapses += collapseInPass(mesh, x, a, b, m, settings, touched, guard);
     }
   }
   return collapses > 0 && mesh.commit() ? collapses : 0;
 }
 } // namespace
 
-int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings,
-  bool avoidCrossings)
+int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings)
 {
   int collapses = 0;
   for (int pass = 0; pass < 16; ++pass)
   {
-    const int made = collapsePass(mesh, minLength, maxLength, settings, avoidCrossings);
+    const int made = collapsePass(mesh, minLength, maxLength, settings);
     collapses += made;
     if (made == 0)
     {
@@ -154,7 +142,7 @@ RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings)
   {
     report.splits += splitLongEdges(mesh, settings.splitAbove * L);
     report.collapses += collapseShortEdges(
-      mesh, settings.collapseBelow * L, settings.splitAbove * L, settings.collapses, settings.avoidCrossings);
+      mesh, settings.collapseBelow * L, settings.splitAbove * L, settings.collapses);
     report.flips += equalizeValences(mesh, settings.flips);
     relaxTangentially(mesh, relax);
   }

@@ -23,8 +23,7 @@ struct RemeshSettings
   int iterations = 5;
   double relaxWeight = 0.5;        // share of the way to the tangential centroid; 0: no relaxation
   FlipSettings flips;              // the dihedral guard of every flip
-  CollapseSettings collapses;      // the normal guard of every collapse
-  bool avoidCrossings = true;      // no collapse whose new triangles cross the surface (SelfIntersections.h)
+  CollapseSettings collapses;      // the normal and crossing guards of every collapse
 };
 
 struct RemeshReport
@@ -36,10 +35,8 @@ struct RemeshReport
 // Splits every edge longer than maxLength at its midpoint, in passes until none is left (at most 16).
 int splitLongEdges(SurfaceMesh& mesh, double maxLength);
 // Collapses edges shorter than minLength into their midpoints where no edge then exceeds maxLength
-// and collapseIsOk holds (and, with avoidCrossings, the new triangles cross no other triangle of the
-// surface as the pass found it), in passes until none is left (at most 16).
-int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings,
-  bool avoidCrossings = false);
+// and collapseInPass allows it, in passes until none is left (at most 16).
+int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings);
 // One pass of flips that bring the four valences of an edge's triangles closer to 6, within the
 // dihedral guard.
 int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings);

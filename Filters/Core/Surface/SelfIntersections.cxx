@@ -98,6 +98,17 @@ bool crosses(const Facet& s, const Facet& t, double margin)
   return edgesThrough(s, t) || edgesThrough(t, s);
 }
 
+template <typename Corners>
+Box boxOf(const Corners& p)
+{
+  Box box;
+  for (const Vec3& q : p)
+  {
+    box.extend(q);
+  }
+  return box;
+}
+
 // Closer to a plane than this goes the exact way (orientations) rather than the plane test.
 double roundingMargin(const TriangleGrid& grid)
 {
@@ -155,19 +166,14 @@ CrossingGuard::CrossingGuard(const std::vector<Vec3>& points, const std::vector<
 {
 }
 
-namespace
+const TriangleGrid& CrossingGuard::grid()
 {
-template <typename Corners>
-Box boxOf(const Corners& p)
-{
-  Box box;
-  for (const Vec3& q : p)
+  if (!this->Grid)
   {
-    box.extend(q);
+    this->Grid = std::make_unique<TriangleGrid>(this->Points, this->Triangles);
   }
-  return box;
+  return *this->Grid;
 }
-} // namespace
 
 const Vec3& CrossingGuard::position(int v) const
 {
@@ -175,24 +181,36 @@ const Vec3& CrossingGuard::position(int v) const
   return moved == this->MovedTo.end() ? this->Points[v] : moved->second;
 }
 
-bool CrossingGuard::fanCrosses(const Vec3& m, const std::vector<std::array<int, 2>>& rim, int a, int b)
+// The merged vertex keeps keep's id: no triangle of the surface asked about holds it (they are
+// skipped as replaced), nor does an earlier edit (keep was untouched by the pass).
+std::vector<CrossingGuard::Made> CrossingGuard::fan(
+  int keep, const Vec3& m, const std::vector<std::array<int, 2>>& rim) const
 {
-  std::vector<Made> fan;
+  std::vector<Made> made;
   for (const auto& uw : rim)
   {
     const std::array<Vec3, 3> p{ m, this->position(uw[0]), this->position(uw[1]) };
-    fan.push_back({ p, { -1, uw[0], uw[1] }, boxOf(p) });
+    made.push_back({ p, { keep, uw[0], uw[1] }, boxOf(p) });
   }
-  return this->anyCrosses(fan, a, b);
+  return made;
 }
 
-void CrossingGuard::addFan(const Vec3& m, int keep, int gone, const std::vector<std::array<int, 2>>& rim)
+// The new triangles share two vertices with each old one, so `crosses` passes over those.
+std::vector<CrossingGuard::Made> CrossingGuard::flipped(int i, int j, int c, int d) const
 {
-  for (const auto& uw : rim)
-  {
-    const std::array<Vec3, 3> p{ m, this->position(uw[0]), this->position(uw[1]) };
-    this->add({ p, { keep, uw[0], uw[1] }, boxOf(p) });
-  }
+  const std::vector<Vec3>& x = this->Points;
+  const std::array<Vec3, 3> p{ x[i], x[c], x[d] }, q{ x[j], x[d], x[c] };
+  return { { p, { i, c, d }, boxOf(p) }, { q, { j, d, c }, boxOf(q) } };
+}
+
+bool CrossingGuard::collapseCrosses(int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim)
+{
+  return this->anyCrosses(this->fan(keep, m, rim), keep, gone);
+}
+
+void CrossingGuard::addCollapse(int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim)
+{
+  this->add(this->fan(keep, m, rim));
   if (this->Merged.empty())
   {
     this->Merged.assign(this->Points.size(), 0);
@@ -201,30 +219,21 @@ void CrossingGuard::addFan(const Vec3& m, int keep, int gone, const std::vector<
   this->MovedTo[keep] = m;
 }
 
-// The new triangles share two vertices with each old one, so `crosses` passes over those.
 bool CrossingGuard::flipCrosses(int i, int j, int c, int d)
 {
-  const std::vector<Vec3>& x = this->Points;
-  const std::array<Vec3, 3> p{ x[i], x[c], x[d] }, q{ x[j], x[d], x[c] };
-  return this->anyCrosses({ { p, { i, c, d }, boxOf(p) }, { q, { j, d, c }, boxOf(q) } }, -1, -1);
+  return this->anyCrosses(this->flipped(i, j, c, d), -1, -1);
 }
 
 void CrossingGuard::addFlip(int i, int j, int c, int d)
 {
-  const std::vector<Vec3>& x = this->Points;
-  const std::array<Vec3, 3> p{ x[i], x[c], x[d] }, q{ x[j], x[d], x[c] };
-  this->add({ p, { i, c, d }, boxOf(p) });
-  this->add({ q, { j, d, c }, boxOf(q) });
+  this->add(this->flipped(i, j, c, d));
 }
 
 // One grid query for all the new triangles; each is then tested against the candidates its own box
 // overlaps.
 bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
 {
-  if (!this->Grid)
-  {
-    this->Grid = std::make_unique<TriangleGrid>(this->Points, this->Triangles);
-  }
+  const TriangleGrid& grid = this->grid();
   std::vector<Facet> facets;
   Box all;
   for (const Made& m : made)
@@ -232,7 +241,7 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
     facets.push_back(facetAt(m.p, m.id));
     all.extend(m.box);
   }
-  const double margin = roundingMargin(*this->Grid);
+  const double margin = roundingMargin(grid);
   bool crossing = false;
   auto test = [&](const Box& box, const auto& facetOfOther) {
     std::optional<Facet> other; // made for the first new triangle whose box it overlaps
@@ -248,18 +257,18 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
       }
     }
   };
-  this->Grid->forEachNear(all, [&](int t) {
+  grid.forEachNear(all, [&](int t) {
     const auto& tri = this->Triangles[t];
     const bool replaced =
       !this->Merged.empty() && (this->Merged[tri[0]] || this->Merged[tri[1]] || this->Merged[tri[2]]);
     if (!crossing && !replaced && !has(tri, a) && !has(tri, b))
     {
-      test(this->Grid->box(t), [&] { return facetOf(this->Points, tri); });
+      test(grid.box(t), [&] { return facetOf(this->Points, tri); });
     }
   });
   // The pass's own edits, binned in the same cells.
   std::vector<int> earlier;
-  const TriangleGrid::Range r = this->Grid->rangeOf(all);
+  const TriangleGrid::Range r = grid.rangeOf(all);
   for (std::uint32_t k = r[2]; k <= r[5] && !crossing && !this->EditCells.empty(); ++k)
     for (std::uint32_t j = r[1]; j <= r[4]; ++j)
       for (std::uint32_t i = r[0]; i <= r[3]; ++i)
@@ -280,20 +289,20 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
   return crossing;
 }
 
-void CrossingGuard::add(const Made& made)
+void CrossingGuard::add(const std::vector<Made>& made)
 {
-  if (!this->Grid)
+  const TriangleGrid& grid = this->grid();
+  for (const Made& m : made)
   {
-    this->Grid = std::make_unique<TriangleGrid>(this->Points, this->Triangles);
+    this->Edits.push_back(m);
+    const TriangleGrid::Range r = grid.rangeOf(m.box);
+    for (std::uint32_t k = r[2]; k <= r[5]; ++k)
+      for (std::uint32_t j = r[1]; j <= r[4]; ++j)
+        for (std::uint32_t i = r[0]; i <= r[3]; ++i)
+        {
+          this->EditCells[TriangleGrid::key(i, j, k)].push_back(static_cast<int>(this->Edits.size()) - 1);
+        }
   }
-  this->Edits.push_back(made);
-  const TriangleGrid::Range r = this->Grid->rangeOf(made.box);
-  for (std::uint32_t k = r[2]; k <= r[5]; ++k)
-    for (std::uint32_t j = r[1]; j <= r[4]; ++j)
-      for (std::uint32_t i = r[0]; i <= r[3]; ++i)
-      {
-        this->EditCells[TriangleGrid::key(i, j, k)].push_back(static_cast<int>(this->Edits.size()) - 1);
-      }
 }
 
 int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
@@ -370,12 +379,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
     for (int s : changed)
     {
       const Facet fs = facetOf(next, triangles[s]);
-      Box box;
-      for (const Vec3& p : fs.p)
-      {
-        box.extend(p);
-      }
-      grid.forEachNear(box, [&](int t) {
+      grid.forEachNear(boxOf(fs.p), [&](int t) {
         // A pair of two changed triangles is met twice; it is kept once.
         const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
         if (t != s && !counted && crosses(fs, facetOf(next, triangles[t]), margin))

@@ -43,10 +43,10 @@ class CrossingGuard
 {
 public:
   CrossingGuard(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
-  // Merging a and b at m, which makes the triangles (m, u, w) of the rim's (u, w).
-  bool fanCrosses(const Vec3& m, const std::vector<std::array<int, 2>>& rim, int a, int b);
-  // After the merge: the fan replaces every triangle around keep and gone, and keep lies at m.
-  void addFan(const Vec3& m, int keep, int gone, const std::vector<std::array<int, 2>>& rim);
+  // Merging gone into keep at m, which turns the triangles around them into (m, u, w), one for each
+  // (u, w) of the rim. Once made, the fan replaces every triangle around keep and gone.
+  bool collapseCrosses(int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim);
+  void addCollapse(int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim);
   // Flipping edge (i, j) of triangles (i, j, c) and (j, i, d) to (c, d).
   bool flipCrosses(int i, int j, int c, int d);
   void addFlip(int i, int j, int c, int d);
@@ -58,10 +58,13 @@ private:
     std::array<int, 3> id;
     Box box;
   };
+  std::vector<Made> fan(int keep, const Vec3& m, const std::vector<std::array<int, 2>>& rim) const;
+  std::vector<Made> flipped(int i, int j, int c, int d) const;
   // Whether any of `made` crosses a triangle of the surface not incident to a or b (the edit's
   // vertices whose triangles it replaces; -1: none), or an earlier edit's triangle.
   bool anyCrosses(const std::vector<Made>& made, int a, int b);
-  void add(const Made& made);
+  void add(const std::vector<Made>& made);
+  const TriangleGrid& grid(); // built at the first question
   const Vec3& position(int v) const; // where the pass's merges put it
 
   const std::vector<Vec3>& Points;

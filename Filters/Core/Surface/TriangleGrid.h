@@ -8,6 +8,7 @@
 #include "Box.h"
 #include "Vec3.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -51,7 +52,7 @@ private:
     const std::uint64_t h = (i * 73856093ull) ^ (j * 19349663ull) ^ (k * 83492791ull);
     return static_cast<std::uint32_t>(h & this->Mask);
   }
-  // The first cell both ranges hold, as its bucket, and whether it is (i, j, k).
+  // Whether (i, j, k) is the first cell (lowest on every axis) that both ranges hold.
   static bool firstSharedIs(const Range& a, const Range& b, std::uint32_t i, std::uint32_t j, std::uint32_t k)
   {
     return std::max(a[0], b[0]) == i && std::max(a[1], b[1]) == j && std::max(a[2], b[2]) == k;

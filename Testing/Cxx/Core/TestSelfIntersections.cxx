@@ -146,9 +146,9 @@ void guardedEdits()
   SW_CHECK(blocked.flipCrosses(0, 1, 2, 3), "a flip whose valley would pierce the post is refused");
   // The post made by a later collapse in the same pass (m = its tip, rim (4, 5)) meets the flipped
   // valley, which the surface of the pass's beginning does not hold.
-  SW_CHECK(!open.fanCrosses(x[6], { { 4, 5 } }, 6, 6), "the post misses the roof as it was");
+  SW_CHECK(!open.collapseCrosses(6, 6, x[6], { { 4, 5 } }), "the post misses the roof as it was");
   open.addFlip(0, 1, 2, 3);
-  SW_CHECK(open.fanCrosses(x[6], { { 4, 5 } }, 6, 6), "but meets the valley the pass flipped");
+  SW_CHECK(open.collapseCrosses(6, 6, x[6], { { 4, 5 } }), "but meets the valley the pass flipped");
 }
 
 void exactNearTarget()

@@ -27,7 +27,7 @@
  * are empty.
  *
  * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
- * NumberOfSteps N_t = 100 (Fig. 11: 200), SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 3 and
+ * NumberOfSteps N_t = 25 (Fig. 11: 200), SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 12 and
  * D = 0.5 (eq. (4); Fig. 11: 1 and 0), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
  * DistanceWeighting off (rho(d) of eq. (10)) with RhoA = 1 (its A), EdgeFlips on with FlipDihedralLimit
  * 60 degrees (flips change the triangles from step to step, never the vertices), EdgeCollapses on
@@ -35,7 +35,7 @@
  * OFFSET_SURFACE with StartOffset 3 cells (or ICOSPHERE), GapSize automatic (diagonal / 50), Remeshing
  * on with TargetEdgeLength automatic (diagonal / 50), InitialRelaxation 10,
  * AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates scaled so that the mean
- * co-volume of the sphere inscribed in the target's box is tau), SolverTolerance 1e-6, Resolution 120
+ * co-volume of the sphere inscribed in the target's box is tau), SolverTolerance 1e-6, Resolution 80
  * (of the internal distance field), CacheMemoryLimit 512 MiB.
  */
 #ifndef vtkShrinkWrapFilter_h
@@ -201,7 +201,7 @@ public:
   vtkGetMacro(SolverTolerance, double);
   ///@}
   ///@{
-  /// Cells along the longest axis of the internal distance field (no DistanceField input). Default 120.
+  /// Cells along the longest axis of the internal distance field (no DistanceField input). Default 80.
   vtkSetMacro(Resolution, int);
   vtkGetMacro(Resolution, int);
   ///@}

@@ -9,7 +9,8 @@
 // triangle pairs (ours, and CGAL's does_self_intersect), closed and manifold, genus, the share of
 // triangles with a minimum angle below 20 degrees. --set applies a property to our wraps (D, C, C1,
 // C2, TimeStep, NumberOfSteps, Resolution, StartOffset, GapSize, TargetEdgeLength, Remeshing,
-// StartingShape, SubdivisionLevel), for tuning.
+// StartingShape, SubdivisionLevel, InitialRelaxation), for tuning. --time-only runs our defaults alone and prints their
+// time and vertex count, without evaluation or peers (for profiling).
 #include "TestUtilities.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
@@ -129,6 +130,7 @@ const std::map<std::string, Setter>& setters()
     { "TargetEdgeLength", [](vtkShrinkWrapFilter* w, double v) { w->SetTargetEdgeLength(v); } },
     { "Remeshing", [](vtkShrinkWrapFilter* w, double v) { w->SetRemeshing(v != 0); } },
     { "StartingShape", [](vtkShrinkWrapFilter* w, double v) { w->SetStartingShape(static_cast<int>(v)); } },
+    { "InitialRelaxation", [](vtkShrinkWrapFilter* w, double v) { w->SetInitialRelaxation(static_cast<int>(v)); } },
     { "SubdivisionLevel", [](vtkShrinkWrapFilter* w, double v) { w->SetSubdivisionLevel(static_cast<int>(v)); } },
   };
   return s;
@@ -148,6 +150,7 @@ int main(int argc, char* argv[])
     "elephant-with-holes", "armadillo" };
   std::vector<std::pair<std::string, double>> sets;
   bool ourVariants = true;
+  bool timeOnly = false;
   for (int a = 2; a < argc; ++a)
   {
     const std::string arg = argv[a];
@@ -179,6 +182,11 @@ int main(int argc, char* argv[])
     {
       ourVariants = false;
     }
+    else if (arg == "--time-only")
+    {
+      ourVariants = false;
+      timeOnly = true;
+    }
     else
     {
       std::cerr << "unknown argument " << arg << "\n";
@@ -198,8 +206,11 @@ int main(int argc, char* argv[])
     {
       write(target, out + "/" + name + "_target.vtp");
     }
-    std::printf("\n%s: %zu triangles, distances in %% of the diagonal %.4g\n\n", name.c_str(), target.triangles.size(), diagonal);
-    header();
+    if (!timeOnly)
+    {
+      std::printf("\n%s: %zu triangles, distances in %% of the diagonal %.4g\n\n", name.c_str(), target.triangles.size(), diagonal);
+      header();
+    }
 
     // Ours: the defaults, then two other target edge lengths.
     for (const double divisor : ourVariants ? std::vector<double>{ 0, 25, 100 } : std::vector<double>{ 0 })
@@ -213,8 +224,9 @@ int main(int argc, char* argv[])
       if (divisor > 0)
       {
         wrap->SetTargetEdgeLength(diagonal / divisor);
-        // The default cell (Resolution 120 over about 1.25 times the longest side) is near diagonal / 70.
-        wrap->SetResolution(std::max(wrap->GetResolution(), static_cast<int>(120 * divisor / 50)));
+        // The field's cell follows L: the default Resolution belongs to L = diagonal / 50 (never coarser).
+        const int resolution = wrap->GetResolution();
+        wrap->SetResolution(std::max(resolution, static_cast<int>(resolution * divisor / 50)));
       }
       const auto start = Clock::now();
       wrap->Update();
@@ -224,6 +236,11 @@ int main(int argc, char* argv[])
       const std::string label = divisor > 0
         ? "Shrink Wrap L = diag/" + std::to_string(static_cast<int>(divisor)) + ", Resolution " + std::to_string(wrap->GetResolution())
         : std::string("Shrink Wrap, defaults");
+      if (timeOnly)
+      {
+        std::printf("%s: %lld vertices, %.3f s\n", name.c_str(), result->GetNumberOfPoints(), total);
+        continue;
+      }
       const TriangleSoup soup = testing::triangulated(result);
       row(label, total, soup, target, status ? status->GetValue(0) : "none");
       if (!out.empty() && divisor == 0)
@@ -232,6 +249,10 @@ int main(int argc, char* argv[])
       }
     }
 
+    if (timeOnly)
+    {
+      continue;
+    }
     // CGAL's alpha wrap on the same triangles.
     std::vector<Point> points;
     for (const Vec3& p : target.points)

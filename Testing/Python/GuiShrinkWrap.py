@@ -20,7 +20,7 @@ try:
     frames = os.environ["SHRINKWRAP_FRAMES"]
     os.makedirs(frames, exist_ok=True)
     reader = OpenDataFile(os.environ["SHRINKWRAP_MESH"])
-    wrap = ShrinkWrap(Input=reader, NumberOfSteps=100, Resolution=80)
+    wrap = ShrinkWrap(Input=reader)  # the defaults: 25 steps, Resolution 80
     view = GetActiveView()
     b = reader.GetDataInformation().GetBounds()
     show_wrap(reader, wrap, view, 3.3 * max(b[1] - b[0], b[3] - b[2], b[5] - b[4]) / 80)  # h of the field

@@ -307,7 +307,9 @@ int Evolver::holdBack(std::vector<Vec3>& next) const
   int held = 0;
   for (int round = 0; round < 16; ++round)
   {
-    int moved = holdNewCrossings(y, next, triangles);
+    // holdNewCrossings settles its own rounds; only the vertices held for angles may make new crossings.
+    held += holdNewCrossings(y, next, triangles);
+    int moved = 0;
     for (const auto& t : triangles)
     {
       if (smallestAngle(next[t[0]], next[t[1]], next[t[2]]) < this->Settings.minAngle &&
@@ -343,47 +345,71 @@ StepReport Evolver::run(int n, const Progress& progress)
   return report;
 }
 
-void Evolver::adjustConnectivity(StepReport& report)
+namespace
 {
-  const EvolverSettings& s = this->Settings;
+// Remeshing, flips, then the mending collapses, as the settings ask; counts into `report`.
+void editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scale, StepReport& report)
+{
   if (s.remeshing.targetLength > 0)
   {
-    const int count = this->Mesh.vertexCount();
     RemeshSettings r = s.remeshing;
-    r.targetLength *= this->Scale;
+    r.targetLength *= scale;
     r.flips = s.flips;
     r.collapses = s.collapses;
-    const RemeshReport remeshed = remesh(this->Mesh, r);
+    const RemeshReport remeshed = remesh(mesh, r);
     report.splits += remeshed.splits;
     report.collapses += remeshed.collapses;
     report.flips += remeshed.flips;
-    if (report.connectivityChanged())
-    {
-      this->connectivityChanged(count);
-    }
   }
   if (s.edgeFlips)
   {
-    const int flips = flipEdges(this->Mesh, s.flips);
-    report.flips += flips;
-    if (flips > 0)
-    {
-      this->connectivityChanged(this->Mesh.vertexCount());
-    }
+    report.flips += flipEdges(mesh, s.flips);
   }
   // Degenerating triangles cluster where the surface folds, and a pass collapses one edge per
   // neighbourhood: passes repeat while they find edges to collapse.
   const bool degenerating = !(report.smallestAngle >= s.collapses.maxAngle);
   for (int pass = 0; s.edgeCollapses && degenerating && pass < s.collapses.maxPasses; ++pass)
   {
-    const int count = this->Mesh.vertexCount();
-    const int collapses = collapseEdges(this->Mesh, s.collapses);
+    const int collapses = collapseEdges(mesh, s.collapses);
     if (collapses == 0)
     {
       break;
     }
-    this->connectivityChanged(count);
     report.collapses += collapses;
+  }
+}
+} // namespace
+
+// Edits rarely make the surface cross itself, and guarding each one costs more than checking the
+// whole surface once: the edits are tried unguarded on a copy first, and made again with every edit
+// guarded (CrossingGuard) only when that copy crosses itself.
+void Evolver::adjustConnectivity(StepReport& report)
+{
+  const EvolverSettings& s = this->Settings;
+  const int count = this->Mesh.vertexCount();
+  const bool guarded = s.flips.avoidCrossings || s.collapses.avoidCrossings;
+  bool done = false;
+  if (guarded)
+  {
+    EvolverSettings unguarded = s;
+    unguarded.flips.avoidCrossings = unguarded.collapses.avoidCrossings = false;
+    SurfaceMesh trial = this->Mesh;
+    StepReport tried = report;
+    editConnectivity(trial, unguarded, this->Scale, tried);
+    if (!tried.connectivityChanged() || findSelfIntersections(trial.points(), trial.triangles()).pairs == 0)
+    {
+      this->Mesh = std::move(trial);
+      report = tried;
+      done = true;
+    }
+  }
+  if (!done)
+  {
+    editConnectivity(this->Mesh, s, this->Scale, report);
+  }
+  if (report.connectivityChanged())
+  {
+    this->connectivityChanged(report.splits > 0 || report.collapses > 0 ? -1 : count);
   }
 }
 

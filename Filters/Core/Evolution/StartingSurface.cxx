@@ -84,6 +84,7 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
     const long long crossing = findSelfIntersections(mesh.points(), mesh.triangles()).pairs;
     RelaxSettings relax;
     relax.flips = flips;
+    relax.flips.avoidCrossings = false; // the relaxed surface as a whole is checked below
     for (int iterations = settings.relaxation; iterations > 0; iterations /= 2)
     {
       SurfaceMesh relaxed = mesh;

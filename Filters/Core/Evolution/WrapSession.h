@@ -20,9 +20,12 @@ struct WrapSettings
 {
   EvolverSettings evolution;
   StartSettings start;
-  int steps = 100;              // N_t (the paper's Fig. 11: 200, from an icosphere at C = 1)
+  int steps = 25;               // N_t (the paper's Fig. 11: 200, from an icosphere at C = 1)
   bool automaticScaling = true; // phi of Section 2.4
-  int resolution = 120;         // cells along the longest axis of the distance field computed here
+  // Cells along the longest axis of the distance field computed here. 80 (over the offset start's box,
+  // about 1.25 times the target) rather than 120: the exact near field lands the wrap, the grid serves
+  // the far field, the start and the gap closing, and its cost is most of a wrap's fixed time.
+  int resolution = 80;
   double cacheMiB = 512;        // memory for cached steps
   // Remeshing after every step towards the target edge length L (EvolverSettings::remeshing), so the
   // vertex count follows the surface; phi then follows L (StabilityScaling.h).

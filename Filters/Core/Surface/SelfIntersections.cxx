@@ -67,12 +67,22 @@ bool has(const std::array<int, 3>& ids, int v)
   return v >= 0 && (v == ids[0] || v == ids[1] || v == ids[2]);
 }
 
-// Whether all three corners of f lie clearly (beyond `margin`) on one side of the plane of e, so that
-// the two cannot cross.
+// Whether the corners of f that e does not share lie clearly (beyond `margin`) on one side of the
+// plane of e: then f meets that plane at most in the shared corner, so the two cannot cross.
 bool oneSide(const Facet& e, const Facet& f, double margin)
 {
-  const double a = e.n.dot(f.p[0]) - e.offset, b = e.n.dot(f.p[1]) - e.offset, c = e.n.dot(f.p[2]) - e.offset;
-  return (a > margin && b > margin && c > margin) || (a < -margin && b < -margin && c < -margin);
+  int above = 0, below = 0, own = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (!has(e.id, f.id[k]))
+    {
+      const double h = e.n.dot(f.p[k]) - e.offset;
+      above += h > margin;
+      below += h < -margin;
+      ++own;
+    }
+  }
+  return above == own || below == own;
 }
 
 // Whether triangles s and t cross, ignoring what they share: with one shared vertex only the edges
@@ -80,7 +90,7 @@ bool oneSide(const Facet& e, const Facet& f, double margin)
 bool crosses(const Facet& s, const Facet& t, double margin)
 {
   const int shared = has(t.id, s.id[0]) + has(t.id, s.id[1]) + has(t.id, s.id[2]);
-  if (shared >= 2 || (shared == 0 && (oneSide(s, t, margin) || oneSide(t, s, margin))))
+  if (shared >= 2 || oneSide(s, t, margin) || oneSide(t, s, margin))
   {
     return false;
   }

@@ -210,7 +210,7 @@ void wrapsATorusFromItsOffset()
             << " vertices, Euler characteristic " << eulerCharacteristic(out) << ", largest |d| at a vertex "
             << largest << " (tube radius " << r << ")" << std::endl;
   SW_CHECK(statusOf(out) == "ok", "200 steps from the offset surface");
-  // 0.03 r is about a third of a cell of the filter's field (Resolution 120 over 1.25 times the torus).
+  // 0.03 r is a fraction of a cell of the filter's field (Resolution 80 over 1.25 times the torus).
   SW_CHECK(eulerCharacteristic(out) == 0 && largest < 0.03 * r, "the hole stays open, the wrap on the torus");
 
   // Two spheres of radius 1 with a slot of 0.3 between them.

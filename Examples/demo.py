@@ -2,8 +2,8 @@
 
 Usage: pvbatch Examples/demo.py <ShrinkWrap plugin .so> [mesh] [output folder]
 Writes, in the output folder: <name>_sdf.vti and <name>_sdf.png (the zero contour, and a slice coloured
-by signed distance with isolines); <name>_wrap.vtp (the final wrap), <name>_wrap.pvd with every 20th
-step in <name>_wrap/, and <name>_wrap.png (the wrap over the target); and prints a short report.
+by signed distance with isolines); <name>_wrap.vtp (the final wrap), <name>_wrap.pvd with about 25
+steps in <name>_wrap/ (every step at the default 25), and <name>_wrap.png (the wrap over the target); and prints a short report.
 """
 import os
 import sys
@@ -78,11 +78,11 @@ def shrink_wrap(reader, sdf, out, name, h):
     final = servermanager.Fetch(wrap)
     SaveData(os.path.join(out, name + "_wrap.vtp"), proxy=wrap)
 
-    # A series of every 20th step, for ParaView's animation.
+    # A series of about 25 steps (every step at the default 25), for ParaView's animation.
     folder = os.path.join(out, name + "_wrap")
     os.makedirs(folder, exist_ok=True)
     entries = []
-    for k in range(0, steps + 1, 20):
+    for k in range(0, steps + 1, max(1, steps // 25)):
         wrap.UpdatePipeline(k * tau)
         file = "step_%04d.vtp" % k
         SaveData(os.path.join(folder, file), proxy=wrap)
@@ -121,7 +121,7 @@ def shrink_wrap(reader, sdf, out, name, h):
         "  triangles with a minimum angle below 20 degrees: %.1f%%" % (100.0 * small / angles.GetNumberOfTuples()),
         "  genus %d (Euler characteristic %d), %d self-intersecting triangle pairs" % (
             (2 - euler) // 2, euler, final.GetFieldData().GetArray("SelfIntersections").GetValue(0)),
-        "  wrote %s_wrap.vtp, %s_wrap.pvd (every 20th step) and %s" % (name, name, png)])
+        "  wrote %s_wrap.vtp, %s_wrap.pvd (about 25 steps) and %s" % (name, name, png)])
 
 
 def main():

@@ -10,6 +10,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
+#include <vtkMatrix3x3.h>
 #include <vtkIntArray.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkFloatArray.h>
@@ -221,6 +222,15 @@ Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid)
   {
     lattice.dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
     lattice.origin[a] += extent[2 * a] * lattice.spacing[a];
+  }
+  const double* direction = image->GetDirectionMatrix()->GetData();
+  for (int k = 0; k < 9; ++k)
+  {
+    if (direction[k] != (k % 4 == 0 ? 1.0 : 0.0))
+    {
+      return Status::failure("the distance field's image is rotated (its direction matrix is not the identity); "
+                             "resample it to an axis-aligned image first (Resample To Image)");
+    }
   }
   if (lattice.dims[0] < 2 || lattice.dims[1] < 2 || lattice.dims[2] < 2 || !(lattice.spacing.minCoeff() > 0))
   {

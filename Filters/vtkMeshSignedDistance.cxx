@@ -233,25 +233,10 @@ bool vtkMeshSignedDistance::Compute(const shrinkwrap::TriangleSoup& soup, const 
 void vtkMeshSignedDistance::AddStatus(const shrinkwrap::SignedDistanceResult& result, vtkImageData* output)
 {
   std::ostringstream status;
-  if (result.isSigned)
+  status << shrinkwrap::signStatus(result, this->ComputeSign != 0);
+  if (shrinkwrap::signNeedsWarning(result, this->ComputeSign != 0))
   {
-    status << "signed";
-    if (result.invertedOrientation)
-    {
-      status << " (the triangles face inwards; the signs follow the geometry)";
-      vtkWarningMacro("The mesh's triangles face inwards; the signs follow the geometry (negative inside).");
-    }
-  }
-  else if (!this->ComputeSign)
-  {
-    status << "unsigned: ComputeSign is off";
-  }
-  else
-  {
-    status << "unsigned: the outside reaches the inside (" << result.boundaryEdges << " boundary edges, "
-           << result.nonManifoldEdges << " non-manifold edges, " << result.signDisagreements
-           << " band sign disagreements)";
-    vtkWarningMacro("The mesh is not closed, so the distance field is " << status.str() << ".");
+    vtkWarningMacro("The distance field is " << status.str() << ".");
   }
   vtkNew<vtkIntArray> isSigned;
   isSigned->SetName("Signed");

@@ -44,6 +44,7 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   this->StartingShape = static_cast<int>(defaults.start.shape); // ICOSPHERE, OFFSET_SURFACE in order
   this->StartOffset = defaults.start.offset;
   this->GapSize = defaults.gapSize;
+  this->CloseHoles = defaults.closeHoles;
   this->Remeshing = defaults.remeshing;
   this->TargetEdgeLength = defaults.targetLength;
   this->InitialRelaxation = defaults.start.relaxation;
@@ -77,6 +78,7 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
   s.start.shape = static_cast<StartShape>(this->StartingShape);
   s.start.offset = this->StartOffset;
   s.gapSize = this->GapSize;
+  s.closeHoles = this->CloseHoles;
   s.remeshing = this->Remeshing;
   s.targetLength = this->TargetEdgeLength;
   s.start.relaxation = this->InitialRelaxation;
@@ -245,6 +247,17 @@ bool vtkShrinkWrapFilter::FieldsOf(
       return false;
     }
     isSigned = std::any_of(grid.values().begin(), grid.values().end(), [](float d) { return d < 0; });
+    if (std::all_of(grid.values().begin(), grid.values().end(), [](float d) { return d < 0; }))
+    {
+      vtkErrorMacro("Cannot wrap: the DistanceField has no outside (every value is negative), so no surface "
+                    "can start around the target.");
+      return false;
+    }
+    if (!isSigned)
+    {
+      vtkWarningMacro("The DistanceField has no inside (no negative value): it is taken as unsigned, and the wrap "
+                      "stops at the distance it reaches from outside and inside alike.");
+    }
     if (settings.exactNearTarget && checkSoup(soup))
     {
       exact = std::make_shared<const TriangleSource>(soup);
@@ -256,18 +269,21 @@ bool vtkShrinkWrapFilter::FieldsOf(
     placement.resolution = settings.resolution;
     placement.offsetFactor = settings.fieldMargin(convert::surfaceBounds({ target }), givenStart);
     SignedDistanceResult result;
+    SignedDistanceSettings distance;
+    distance.windingNumber = settings.closeHoles;
     const Status status = signedDistanceGrid(
-      soup, convert::surfaceBounds({ target }), placement, SignedDistanceSettings(), grid, result, {}, &exact);
+      soup, convert::surfaceBounds({ target }), placement, distance, grid, result, {}, &exact);
     if (!status)
     {
       vtkErrorMacro("Cannot wrap: the target's distance field: " << status.message() << ".");
       return false;
     }
     isSigned = result.isSigned;
-    if (!result.isSigned)
+    if (shrinkwrap::signNeedsWarning(result, true))
     {
-      vtkWarningMacro("The target is not closed, so its distance field is unsigned: the wrap stops at the "
-                      "distance it reaches from outside and inside alike.");
+      vtkWarningMacro("The target's distance field is "
+        << shrinkwrap::signStatus(result, true)
+        << (result.isSigned ? "." : ": the wrap stops at the distance it reaches from outside and inside alike."));
     }
   }
   const Status status = wrapFields(std::move(grid), isSigned, exact, settings, convert::contour, fields);
@@ -432,6 +448,7 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StartingShape: " << (this->StartingShape == ICOSPHERE ? "Icosphere" : "Offset Surface") << "\n";
   os << indent << "StartOffset: " << this->StartOffset << "\n";
   os << indent << "GapSize: " << this->GapSize << (this->GapSize > 0 ? "\n" : " (automatic)\n");
+  os << indent << "CloseHoles: " << this->CloseHoles << "\n";
   os << indent << "Remeshing: " << this->Remeshing << "\n";
   os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << (this->TargetEdgeLength > 0 ? "\n" : " (automatic)\n");
   os << indent << "InitialRelaxation: " << this->InitialRelaxation << "\n";

@@ -32,7 +32,7 @@
  * DistanceWeighting off (rho(d) of eq. (10)) with RhoA = 1 (its A), EdgeFlips on with FlipDihedralLimit
  * 60 degrees (flips change the triangles from step to step, never the vertices), EdgeCollapses on
  * (a collapse removes a vertex), StartingShape
- * OFFSET_SURFACE with StartOffset 3 cells (or ICOSPHERE), GapSize automatic (diagonal / 50), Remeshing
+ * OFFSET_SURFACE with StartOffset 3 cells (or ICOSPHERE), GapSize automatic (diagonal / 50), CloseHoles off, Remeshing
  * on with TargetEdgeLength automatic (diagonal / 50), InitialRelaxation 10,
  * AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates scaled so that the mean
  * co-volume of the sphere inscribed in the target's box is tau), SolverTolerance 1e-6, Resolution 80
@@ -170,6 +170,15 @@ public:
   vtkGetMacro(GapSize, double);
   ///@}
   ///@{
+  /// For a target that is open or crosses itself (its distance field computed here): on, its holes are
+  /// closed, inside being where its generalized winding number exceeds 1/2 (a scan with missing
+  /// patches); off (default), holes wider than GapSize stay open and the wrap enters them, wrapping
+  /// open sheets from both sides.
+  vtkSetMacro(CloseHoles, bool);
+  vtkGetMacro(CloseHoles, bool);
+  vtkBooleanMacro(CloseHoles, bool);
+  ///@}
+  ///@{
   /// Remeshing after every step towards TargetEdgeLength L (splits above 4/3 L, collapses below 4/5 L,
   /// flips towards valence 6, tangential relaxation), so the vertex count follows the surface and
   /// the triangles stay near equilateral as it moves into concavities and along thin parts; the
@@ -251,6 +260,7 @@ protected:
   int StartingShape;
   double StartOffset;
   double GapSize;
+  bool CloseHoles;
   bool Remeshing;
   double TargetEdgeLength;
   int InitialRelaxation;

@@ -9,7 +9,7 @@
 // triangle pairs (ours, and CGAL's does_self_intersect), closed and manifold, genus, the share of
 // triangles with a minimum angle below 20 degrees. --set applies a property to our wraps (D, C, C1,
 // C2, TimeStep, NumberOfSteps, Resolution, StartOffset, GapSize, TargetEdgeLength, Remeshing,
-// StartingShape, SubdivisionLevel, InitialRelaxation), for tuning. --time-only runs our defaults alone and prints their
+// StartingShape, SubdivisionLevel, InitialRelaxation, CloseHoles), for tuning. --time-only runs our defaults alone and prints their
 // time and vertex count, without evaluation or peers (for profiling).
 #include "TestUtilities.h"
 #include "WrapEvaluation.h"
@@ -130,6 +130,7 @@ const std::map<std::string, Setter>& setters()
     { "TargetEdgeLength", [](vtkShrinkWrapFilter* w, double v) { w->SetTargetEdgeLength(v); } },
     { "Remeshing", [](vtkShrinkWrapFilter* w, double v) { w->SetRemeshing(v != 0); } },
     { "StartingShape", [](vtkShrinkWrapFilter* w, double v) { w->SetStartingShape(static_cast<int>(v)); } },
+    { "CloseHoles", [](vtkShrinkWrapFilter* w, double v) { w->SetCloseHoles(v != 0); } },
     { "InitialRelaxation", [](vtkShrinkWrapFilter* w, double v) { w->SetInitialRelaxation(static_cast<int>(v)); } },
     { "SubdivisionLevel", [](vtkShrinkWrapFilter* w, double v) { w->SetSubdivisionLevel(static_cast<int>(v)); } },
   };

@@ -205,8 +205,9 @@ int main(int argc, char* argv[])
   std::printf("mesh %s: %zu triangles, %d runs per figure (median), %d threads\n\n", argv[1], soup.triangles.size(),
     runs, std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
   std::printf("| grid | nodes | tree | outline | band | sweep | sign | **ours total** | mean err | max err "
-              "| VDB band 3 | VDB band+sweep | VDB mean err | VDB max err | ratio VDB b+s / ours | vtkImplicitPolyDataDistance | ratio VTK / ours |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "| VDB band 3 | VDB band+sweep | VDB mean err | VDB max err | ratio VDB b+s / ours | vtkImplicitPolyDataDistance | ratio VTK / ours "
+              "| signed by | core | core without winding number | ratio |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   double vtkSecondsPerNode = 0;
   for (int resolution : resolutions)
   {
@@ -222,13 +223,23 @@ int main(int argc, char* argv[])
     vtkImageData* image = filter->GetOutput();
     const shrinkwrap::GridLattice lattice = testing::latticeOf(image);
 
-    // Stage times from the core on the same grid.
+    // Stage times from the core on the same grid, and the core's time without the winding-number sign
+    // (where the votes disagree the field then stays unsigned, as before issue #11), interleaved.
     std::vector<shrinkwrap::SignedDistanceResult> stages;
     std::vector<float> scratch(lattice.nodeCount());
+    std::vector<double> core, votesOnly;
+    shrinkwrap::SignedDistanceSettings withoutWinding;
+    withoutWinding.windingNumber = false;
     for (int r = 0; r < runs; ++r)
     {
-      shrinkwrap::onAllCores([&] { stages.push_back(shrinkwrap::computeSignedDistance(soup, lattice, {}, scratch.data())); });
+      shrinkwrap::onAllCores([&] {
+        core.push_back(seconds([&] { stages.push_back(shrinkwrap::computeSignedDistance(soup, lattice, {}, scratch.data())); }));
+        votesOnly.push_back(seconds([&] { shrinkwrap::computeSignedDistance(soup, lattice, withoutWinding, scratch.data()); }));
+      });
     }
+    const shrinkwrap::SignedDistanceResult& last = stages.back();
+    const char* signedBy = !last.isSigned ? "unsigned"
+      : (last.signMethod == shrinkwrap::SignMethod::WindingNumber ? "winding number" : "votes");
     auto stage = [&](double shrinkwrap::SignedDistanceResult::*field) {
       std::vector<double> v;
       for (const auto& s : stages)
@@ -311,12 +322,13 @@ int main(int argc, char* argv[])
       }
     }
 
-    std::printf("| %dx%dx%d | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | **%.3f** | %.3f h | %.3f h | %.3f | %.3f | %.3f h | %.3f h | %.1f | %s | %s |\n",
+    std::printf("| %dx%dx%d | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | **%.3f** | %.3f h | %.3f h | %.3f | %.3f | %.3f h | %.3f h | %.1f | %s | %s | %s | %.3f | %.3f | %.2f |\n",
       lattice.dims[0] - 1, lattice.dims[1] - 1, lattice.dims[2] - 1, static_cast<long long>(lattice.nodeCount()),
       stage(&shrinkwrap::SignedDistanceResult::treeSeconds), stage(&shrinkwrap::SignedDistanceResult::outlineSeconds),
       stage(&shrinkwrap::SignedDistanceResult::bandSeconds), stage(&shrinkwrap::SignedDistanceResult::sweepSeconds),
       stage(&shrinkwrap::SignedDistanceResult::signSeconds), median(totals), ours.mean, ours.max, median(band),
-      median(full), vdb.mean, vdb.max, median(full) / median(totals), vtkCell.c_str(), vtkRatio.c_str());
+      median(full), vdb.mean, vdb.max, median(full) / median(totals), vtkCell.c_str(), vtkRatio.c_str(), signedBy,
+      median(core), median(votesOnly), median(core) / median(votesOnly));
     std::fflush(stdout);
   }
   return 0;

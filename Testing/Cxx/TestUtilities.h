@@ -8,6 +8,7 @@
 #include "GridLattice.h"
 #include "TriangleDistance.h"
 #include "TriangleSoup.h"
+#include "WindingNumber.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -27,6 +28,7 @@
 #include <fstream>
 #include <iostream>
 #include <mutex>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -217,6 +219,50 @@ inline std::vector<int> windingNumbers(const shrinkwrap::TriangleSoup& soup, con
     }
   }
   return winding;
+}
+
+struct SignSample
+{
+  long long far = 0;        // sampled nodes farther than a cell from the surface
+  long long disagreeing = 0; // of those, on the other side of the brute-force winding number (|w| > 1/2)
+};
+
+// The sign of `samples` random nodes (a fixed seed) against the generalized winding number summed
+// over every triangle.
+inline SignSample sampleSigns(vtkImageData* image, const shrinkwrap::TriangleSoup& soup, int samples)
+{
+  const shrinkwrap::GridLattice lattice = latticeOf(image);
+  auto* values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("SignedDistance"));
+  SignSample result;
+  if (!values)
+  {
+    result.disagreeing = result.far = 1;
+    return result;
+  }
+  const shrinkwrap::WindingNumber winding(soup);
+  std::mt19937_64 random(11);
+  std::vector<std::int64_t> nodes;
+  for (int s = 0; s < samples; ++s)
+  {
+    const std::int64_t n = static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(lattice.nodeCount()));
+    if (std::abs(values->GetValue(n)) > lattice.minSpacing())
+    {
+      nodes.push_back(n);
+    }
+  }
+  std::atomic<long long> disagreeing{ 0 };
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [&] {
+    vtkSMPTools::For(0, static_cast<vtkIdType>(nodes.size()), [&](vtkIdType b, vtkIdType e) {
+      for (vtkIdType s = b; s < e; ++s)
+      {
+        const double w = winding.exactAt(lattice.position(lattice.coordinates(nodes[s])));
+        disagreeing += (values->GetValue(nodes[s]) < 0) != (std::abs(w) > 0.5);
+      }
+    });
+  });
+  result.far = static_cast<long long>(nodes.size());
+  result.disagreeing = disagreeing;
+  return result;
 }
 
 struct FieldErrors

@@ -29,7 +29,9 @@ struct Envelope
 {
   struct Parabola
   {
-    double vertex; // the site's coordinate along the line
+    // The site's coordinate along the line, from the line's first node: the envelope's cuts subtract
+    // squares of it, which far from the origin (1e9) would lose every digit a cell has.
+    double vertex;
     double offset; // squared distance from the line to the site
     std::int32_t site;
   };
@@ -49,7 +51,7 @@ struct Envelope
       const std::int32_t s = line.site[t * line.stride];
       if (s >= 0 && (this->candidates.empty() || this->candidates.back().site != s))
       {
-        this->candidates.push_back({ sites[s][axis], offsetOf(sites[s]), s });
+        this->candidates.push_back({ sites[s][axis] - line.origin, offsetOf(sites[s]), s });
       }
     }
     if (this->candidates.empty())
@@ -111,7 +113,7 @@ struct Envelope
     std::size_t k = 0;
     for (int t = 0; t < line.length; ++t)
     {
-      const double x = line.origin + t * line.step;
+      const double x = t * line.step;
       while (k + 1 < this->hull.size() && this->boundary[k + 1] < x)
       {
         ++k;

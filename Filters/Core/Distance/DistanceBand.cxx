@@ -65,6 +65,9 @@ bool computeBand(const DistanceSource& source, const GridLattice& lattice,
   band.closest.resize(n);
   band.distance.resize(n);
   band.sign.resize(n);
+  band.normal.resize(n);
+  band.element.resize(n);
+  band.sure.resize(n);
   return forChunks(static_cast<long long>(n), 16, progress, [&](long long b, long long e) {
     for (long long k = b; k < e; ++k)
     {
@@ -80,6 +83,10 @@ bool computeBand(const DistanceSource& source, const GridLattice& lattice,
       band.distance[k] = static_cast<float>(std::sqrt(hit.squaredDistance));
       const double side = hit.side;
       band.sign[k] = side < 0 ? -1 : 1;
+      const Vec3 unit = hit.normal.normalized();
+      band.normal[k] = { static_cast<float>(unit.x()), static_cast<float>(unit.y()), static_cast<float>(unit.z()) };
+      band.element[k] = hit.element;
+      band.sure[k] = hit.sure;
       state[node] = band.distance[k] <= onSurface ? BandOnSurface : (side < 0 ? BandInside : BandOutside);
     }
   });

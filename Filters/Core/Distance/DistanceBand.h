@@ -8,6 +8,7 @@
 #include "GridLattice.h"
 #include "Progress.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct DistanceBand
   std::vector<Vec3> closest;       // closest surface point of each band node
   std::vector<float> distance;     // exact unsigned distance
   std::vector<signed char> sign;   // +1 outside, -1 inside, from the closest feature's pseudonormal
+  std::vector<std::array<float, 3>> normal; // the pseudonormal there (unit length)
+  std::vector<std::int32_t> element; // the triangle the closest point lies on
+  std::vector<char> sure;          // SourcePoint::sure: whether `sign` can be trusted
 };
 
 // Marks the nodes of the given cells (and `extraLayers` rings of 6-neighbours) as band nodes in

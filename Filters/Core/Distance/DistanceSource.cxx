@@ -1,12 +1,26 @@
 #include "DistanceSource.h"
 
+#include "ConfirmedSides.h"
+#include "ConsistentOrientation.h"
 #include "Outline.h"
+
+#include <cmath>
 
 namespace shrinkwrap
 {
 
+namespace
+{
+TriangleSoup weldedAndOriented(const TriangleSoup& soup, long long& reoriented)
+{
+  TriangleSoup welded = weldDuplicatePoints(soup);
+  reoriented = orientConsistently(welded);
+  return welded;
+}
+} // namespace
+
 TriangleSource::TriangleSource(const TriangleSoup& soup)
-  : Soup(weldDuplicatePoints(soup))
+  : Soup(weldedAndOriented(soup, this->Reoriented))
   , Tree(this->Soup)
   , Normals(this->Soup)
 {
@@ -28,8 +42,31 @@ SourcePoint TriangleSource::closestPoint(const Vec3& x, double maxSquaredDistanc
   p.found = true;
   p.squaredDistance = hit.squaredDistance;
   p.point = hit.point;
-  p.side = (x - hit.point).dot(this->Normals.at(hit.triangle, hit.feature));
+  p.normal = this->Normals.at(hit.triangle, hit.feature);
+  p.side = (x - hit.point).dot(p.normal);
+  p.element = hit.triangle;
+  p.sure = this->Normals.sure(hit.triangle, hit.feature);
   return p;
+}
+
+const WindingNumber& TriangleSource::winding() const
+{
+  std::call_once(this->WindingBuilt, [this] { this->Winding = std::make_unique<WindingNumber>(this->Soup, this->Tree); });
+  return *this->Winding;
+}
+
+// Where the fast value is within its error of 1/2 (in the plane of a hole, say), again with a far
+// field three times farther out, so that the side agrees with the exact sum.
+double TriangleSource::windingNumber(const Vec3& x) const
+{
+  const double w = this->winding().at(x);
+  return std::abs(std::abs(w) - 0.5) < 0.05 ? this->winding().at(x, -1, 9.0) : w;
+}
+
+const std::vector<char>& TriangleSource::sidesConfirmed() const
+{
+  std::call_once(this->SidesBuilt, [this] { this->Sides = confirmSides(this->Soup, this->winding()); });
+  return this->Sides;
 }
 
 } // namespace shrinkwrap

@@ -2,7 +2,9 @@
 // box-overlap query behind the outline), and for a point the nearest surface point with the side the
 // point is on (the closest-point query behind the band). Triangles implement it (TriangleSource: the
 // welded soup, its AABB tree, its pseudonormals, its octree outline); a point set with normals can
-// implement it the same way (issue #13) and get the band, sweeps and sign unchanged.
+// implement it the same way (issue #13) and get the band, sweeps and sign unchanged. Where the sides
+// of a surface are in doubt (holes, crossings, overlaps), its generalized winding number decides
+// (WindingSign.h).
 #ifndef ShrinkWrap_DistanceSource_h
 #define ShrinkWrap_DistanceSource_h
 
@@ -11,9 +13,12 @@
 #include "Progress.h"
 #include "PseudoNormals.h"
 #include "TriangleSoup.h"
+#include "WindingNumber.h"
 
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 namespace shrinkwrap
@@ -25,6 +30,11 @@ struct SourcePoint
   double squaredDistance = std::numeric_limits<double>::infinity();
   Vec3 point = Vec3::Zero();
   double side = 0; // > 0 outside, < 0 inside (the query point against the surface's normal there)
+  Vec3 normal = Vec3::Zero(); // that normal: the pseudonormal of the feature the nearest point lies on
+  int element = -1; // the triangle (or point) the nearest point lies on
+  // false where `side` may be wrong: the nearest point lies on an edge or corner of a hole's rim or of
+  // an edge with more than two triangles, or on a triangle without a normal
+  bool sure = true;
 };
 
 class DistanceSource
@@ -36,24 +46,46 @@ public:
   virtual bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const = 0;
   // The nearest surface point to x within sqrt(maxSquaredDistance).
   virtual SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const = 0;
+
+  // The generalized winding number at x (about 1 inside, 0 outside; NaN: this source has none).
+  virtual double windingNumber(const Vec3&) const { return std::numeric_limits<double>::quiet_NaN(); }
+  // Per element, whether the winding number confirms its sides: outside in front, inside behind
+  // (false for a triangle inside another part of the surface, or crossing one). Built once, on the
+  // first call; empty: no winding number.
+  virtual const std::vector<char>& sidesConfirmed() const
+  {
+    static const std::vector<char> none;
+    return none;
+  }
 };
 
 class TriangleSource : public DistanceSource
 {
 public:
   // Points with identical coordinates are welded first, so that shared vertices and edges have
-  // their pseudonormals.
+  // their pseudonormals, and triangles facing against their neighbours are turned
+  // (ConsistentOrientation.h).
   explicit TriangleSource(const TriangleSoup& soup);
   Box bounds() const override { return this->Soup.bounds(); }
   bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const override;
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   long long boundaryEdges() const { return this->Normals.boundaryEdges(); }
   long long nonManifoldEdges() const { return this->Normals.nonManifoldEdges(); }
+  long long reorientedTriangles() const { return this->Reoriented; }
+  double windingNumber(const Vec3& x) const override;
+  const std::vector<char>& sidesConfirmed() const override;
 
 private:
+  const WindingNumber& winding() const;
+
+  long long Reoriented = 0; // before Soup: set while Soup is made
   TriangleSoup Soup;
   AABBTree Tree;
   PseudoNormals Normals;
+  // Built on first use (the sign of a clean closed mesh never needs them).
+  mutable std::once_flag WindingBuilt, SidesBuilt;
+  mutable std::unique_ptr<WindingNumber> Winding;
+  mutable std::vector<char> Sides;
 };
 
 } // namespace shrinkwrap

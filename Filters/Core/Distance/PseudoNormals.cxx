@@ -62,7 +62,10 @@ PseudoNormals::PseudoNormals(const TriangleSoup& soup)
     }
   }
 
-  // Group the uses of each undirected edge; its pseudonormal is the sum of its faces' normals.
+  // Group the uses of each undirected edge; its pseudonormal is the sum of its faces' normals. An edge
+  // of one triangle (a rim) or of more than two has no inside and outside, nor have its ends.
+  this->Open.assign(nt, 0);
+  std::vector<char> openVertex(soup.points.size(), 0);
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
   for (std::size_t first = 0; first < uses.size();)
   {
@@ -79,8 +82,21 @@ PseudoNormals::PseudoNormals(const TriangleSoup& soup)
     for (std::size_t k = first; k < last; ++k)
     {
       this->Edge[uses[k].triangle][uses[k].slot] = sum;
+      if (count != 2)
+      {
+        this->Open[uses[k].triangle] |= 1u << (static_cast<int>(Feature::Edge01) + uses[k].slot);
+        openVertex[uses[first].key >> 32] = openVertex[uses[first].key & 0xffffffffu] = 1;
+      }
     }
     first = last;
+  }
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Open[t] |= openVertex[soup.triangles[t][k]] ? 1u << k : 0u;
+    }
+    this->Open[t] |= this->Face[t].isZero() ? 0x7fu : 0u;
   }
 }
 

@@ -8,6 +8,7 @@
 #include "TriangleSoup.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace shrinkwrap
@@ -19,6 +20,12 @@ public:
   explicit PseudoNormals(const TriangleSoup& welded);
 
   const Vec3& at(int triangle, Feature feature) const;
+  // Whether the pseudonormal there tells the sides apart: not on a rim or non-manifold edge, nor at
+  // a corner of one, nor on a triangle without a normal.
+  bool sure(int triangle, Feature feature) const
+  {
+    return !(this->Open[triangle] & (1u << static_cast<int>(feature)));
+  }
 
   // Edges used by one triangle only (holes) and by more than two (non-manifold).
   long long boundaryEdges() const { return this->BoundaryEdges; }
@@ -28,6 +35,7 @@ private:
   std::vector<Vec3> Face;
   std::vector<std::array<Vec3, 3>> Corner; // per triangle: its vertices' pseudonormals
   std::vector<std::array<Vec3, 3>> Edge;   // per triangle: edges 01, 12, 20
+  std::vector<std::uint8_t> Open;          // per triangle: a bit per Feature that is not sure
   long long BoundaryEdges = 0;
   long long NonManifoldEdges = 0;
 };

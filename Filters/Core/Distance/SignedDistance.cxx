@@ -6,6 +6,7 @@
 #include "ClosestPointSweep.h"
 #include "EikonalSweep.h"
 #include "SignVotes.h"
+#include "WindingSign.h"
 
 #include <vtksys/SystemInformation.hxx>
 #include <vtkSMPTools.h>
@@ -24,11 +25,12 @@ double secondsSince(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Far field by closest-point passes; the distance of every node is that to its site.
+// Far field by closest-point passes; the distance of every node is that to its site (the band node
+// whose closest point it is), which `site` keeps for the sign.
 bool closestPointFarField(const GridLattice& lattice, const DistanceBand& band, float* distance,
-  const Progress& progress)
+  std::vector<std::int32_t>& site, const Progress& progress)
 {
-  std::vector<std::int32_t> site(lattice.nodeCount(), -1);
+  site.assign(lattice.nodeCount(), -1);
   for (std::size_t k = 0; k < band.nodes.size(); ++k)
   {
     site[band.nodes[k]] = static_cast<std::int32_t>(k);
@@ -63,6 +65,33 @@ std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std:
   return e;
 }
 
+// The votes disagreed: the winding number decides where the closest point's side is in doubt. The
+// Eikonal far field keeps no sites: closest-point passes find them (their distances are not kept).
+// False if aborted.
+bool signByWinding(const DistanceSource& source, const GridLattice& lattice, const DistanceBand& band,
+  std::vector<std::int32_t>& site, std::uint8_t* state, const Progress& progress, SignedDistanceResult& result)
+{
+  if (site.empty())
+  {
+    std::vector<float> scratch(lattice.nodeCount());
+    if (!closestPointFarField(lattice, band, scratch.data(), site, progress.stage(0, 0.3)))
+    {
+      return false;
+    }
+  }
+  const WindingSignResult w = signByWindingNumber(source, lattice, band, site.data(), state, progress.stage(0.3, 1));
+  if (!w.completed)
+  {
+    return false;
+  }
+  result.windingEvaluations = w.evaluated;
+  result.unconfirmedTriangles = w.unconfirmed;
+  result.invertedOrientation = false; // the winding number follows each piece's own orientation
+  result.isSigned = w.inside > 0;
+  result.signMethod = result.isSigned ? SignMethod::WindingNumber : SignMethod::None;
+  return true;
+}
+
 // Negates the inside (band and off-band) of an unsigned field.
 void applySigns(const GridLattice& lattice, const std::uint8_t* state, bool isSigned, float* distance)
 {
@@ -82,10 +111,56 @@ void applySigns(const GridLattice& lattice, const std::uint8_t* state, bool isSi
 }
 } // namespace
 
+std::string signStatus(const SignedDistanceResult& r, bool asked)
+{
+  std::ostringstream s;
+  const auto turned = [&] {
+    if (r.reorientedTriangles > 0)
+    {
+      s << "; " << r.reorientedTriangles << " triangles faced against their neighbours and were turned";
+    }
+  };
+  if (!asked)
+  {
+    s << "unsigned: ComputeSign is off";
+  }
+  else if (r.signMethod == SignMethod::Votes)
+  {
+    s << "signed: the surface is closed (the sign votes of every region agree)";
+    if (r.invertedOrientation)
+    {
+      s << "; its triangles face inwards, so the signs follow the geometry (negative inside)";
+    }
+    turned();
+  }
+  else if (r.signMethod == SignMethod::WindingNumber)
+  {
+    s << "signed by the generalized winding number (inside where it exceeds 1/2): the surface has "
+      << r.boundaryEdges << " rim edges, " << r.nonManifoldEdges << " non-manifold edges and "
+      << r.unconfirmedTriangles << " triangles inside another part or crossing one or near those, so the sign votes "
+      << "disagreed at " << r.signDisagreements << " grid edges; " << r.windingEvaluations
+      << " nodes took their side from the winding number, the others from their closest point";
+    turned();
+  }
+  else
+  {
+    s << "unsigned: the surface encloses nothing (its generalized winding number stays below 1/2: a sheet, a "
+         "disc or a fin; "
+      << r.boundaryEdges << " rim edges)";
+  }
+  return s.str();
+}
+
+bool signNeedsWarning(const SignedDistanceResult& r, bool asked)
+{
+  return asked && (!r.isSigned || r.signMethod == SignMethod::WindingNumber || r.invertedOrientation);
+}
+
 int workingBytesPerNode(const SignedDistanceSettings& settings)
 {
-  // Node state always; the site index of the closest-point passes.
-  return 1 + (settings.sweep == SweepMethod::ClosestPoint ? 4 : 0);
+  // Node state always; the site index of the closest-point passes (the Eikonal sweep needs them, and
+  // scratch distances, only for a winding-number sign).
+  return 1 + (settings.sweep == SweepMethod::ClosestPoint ? 4 : (settings.windingNumber ? 8 : 0));
 }
 
 namespace
@@ -102,7 +177,7 @@ SignedDistanceResult fromSoup(const TriangleSoup& input, const GridLattice& latt
   SignedDistanceResult result;
   if (progress.report(0.05))
   {
-    result = computeSignedDistance(*source, lattice, settings, distance, progress);
+    result = computeSignedDistance(static_cast<const TriangleSource&>(*source), lattice, settings, distance, progress);
   }
   result.treeSeconds = treeSeconds;
   if (keep)
@@ -126,6 +201,7 @@ SignedDistanceResult computeSignedDistance(const TriangleSource& source, const G
     computeSignedDistance(static_cast<const DistanceSource&>(source), lattice, settings, distance, progress);
   result.boundaryEdges = source.boundaryEdges();
   result.nonManifoldEdges = source.nonManifoldEdges();
+  result.reorientedTriangles = source.reorientedTriangles();
   return result;
 }
 
@@ -164,8 +240,9 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   // Lines 6-7: the far field.
   clock = std::chrono::steady_clock::now();
   const Progress sweepProgress = progress.stage(0.45, 0.8);
+  std::vector<std::int32_t> site;
   const bool swept = settings.sweep == SweepMethod::ClosestPoint
-    ? closestPointFarField(lattice, band, distance, sweepProgress)
+    ? closestPointFarField(lattice, band, distance, site, sweepProgress)
     : eikonalFarField(lattice, band, state.data(), settings.eikonalIterations, distance, sweepProgress);
   if (!swept)
   {
@@ -179,7 +256,7 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   {
     bool aborted;
     const SignVotes votes =
-      signRegions(lattice, meshInsideGrid, nodeExtent(lattice, band.nodes), state.data(), progress.stage(0.8, 0.98), aborted);
+      signRegions(lattice, meshInsideGrid, nodeExtent(lattice, band.nodes), state.data(), progress.stage(0.8, 0.85), aborted);
     if (aborted)
     {
       return result;
@@ -187,6 +264,12 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
     result.signDisagreements = votes.disagreeing;
     result.invertedOrientation = votes.inverted;
     result.isSigned = votes.consistent();
+    result.signMethod = result.isSigned ? SignMethod::Votes : SignMethod::None;
+    if (!result.isSigned && settings.windingNumber && !source.sidesConfirmed().empty() &&
+      !signByWinding(source, lattice, band, site, state.data(), progress.stage(0.85, 0.98), result))
+    {
+      return result;
+    }
   }
   applySigns(lattice, state.data(), result.isSigned, distance);
   result.signSeconds = secondsSince(clock);

@@ -28,20 +28,41 @@ struct SignedDistanceSettings
   int bandLayers = 1;   // node layers of exact distances beyond the nodes of the cells the surface touches
   int eikonalIterations = 1; // repetitions of the eight Eikonal sweeps
   bool computeSign = true;
+  // Where the sign votes disagree (holes, crossings, overlaps): the generalized winding number decides
+  // (WindingSign.h); false: such a field stays unsigned, as the paper's Algorithm 1 leaves it.
+  bool windingNumber = true;
+};
+
+enum class SignMethod
+{
+  None,         // unsigned: not asked for, or the surface encloses nothing
+  Votes,        // every region's votes agreed (a closed surface that does not cross itself)
+  WindingNumber // the votes disagreed: sides in doubt by the generalized winding number (WindingSign.h)
 };
 
 struct SignedDistanceResult
 {
   bool completed = false; // false: aborted, the values are incomplete
-  bool isSigned = false;  // false: unsigned, because the outside leaked in or sign was not asked for
+  bool isSigned = false;  // false: unsigned, because sign was not asked for or the surface encloses nothing
+  SignMethod signMethod = SignMethod::None;
   bool invertedOrientation = false; // the triangles face inwards; signs follow the geometry
   long long bandNodes = 0;
   long long boundaryEdges = 0;
   long long nonManifoldEdges = 0;
   long long signDisagreements = 0;
+  long long reorientedTriangles = 0;  // turned to agree with their neighbours (TriangleSource)
+  long long unconfirmedTriangles = 0; // inside another part or crossing one (by the winding number)
+  long long windingEvaluations = 0;   // nodes whose side the winding number gave
   // Seconds per stage.
   double treeSeconds = 0, outlineSeconds = 0, bandSeconds = 0, sweepSeconds = 0, signSeconds = 0;
 };
+
+// What a field's sign rests on, in words for a user: closed or not, crossing itself or not, how the
+// sign was decided (or why there is none). `asked`: whether a sign was asked for.
+std::string signStatus(const SignedDistanceResult& result, bool asked);
+// Whether signStatus describes something a user should hear of as a warning: no sign although one
+// was asked for, a sign from the winding number (open or crossing), or triangles facing inwards.
+bool signNeedsWarning(const SignedDistanceResult& result, bool asked);
 
 // Bytes per grid node the computation needs besides the output values and the mesh.
 int workingBytesPerNode(const SignedDistanceSettings& settings);

@@ -32,6 +32,12 @@ struct WrapSettings
   bool remeshing = true;
   double targetLength = 0;      // L, in the target's units; 0: automatic (kAutomaticDivisor)
   double gapSize = 0;           // gaps narrower than this are bridged (GapClosing.h); 0: automatic
+  // An open or self-crossing target's field (computed here): false, unsigned, so that holes wider than
+  // the gap size stay open and the wrap enters them, wrapping open sheets from both sides (measured
+  // best on CGAL's open CAD part and the dragon, RESULTS.md); true, signed by the generalized winding
+  // number (WindingSign.h), which closes every hole (best for scans with missing patches, e.g. the
+  // open elephant).
+  bool closeHoles = false;
   bool exactNearTarget = true;  // d and grad d from the target's closest point near it (TargetDistance.h)
   double exactBand = 2;         // in cells of the field
 

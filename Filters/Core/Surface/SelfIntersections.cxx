@@ -130,10 +130,12 @@ std::vector<std::pair<int, int>> crossingPairs(
   const TriangleGrid& grid, const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
 {
   std::vector<Facet> facets(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    facets[t] = facetOf(x, triangles[t]);
-  }
+  parallelFor(0, static_cast<vtkIdType>(triangles.size()), [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType t = b; t < e; ++t)
+    {
+      facets[t] = facetOf(x, triangles[t]);
+    }
+  });
   const double margin = roundingMargin(grid);
   std::vector<std::pair<int, int>> pairs;
   std::mutex lock;

@@ -1,7 +1,7 @@
 // Algorithm 1 in the core, without a pipeline: the outline holds every cell a triangle touches, the
 // band's distances are exact, both far-field sweeps stay near the exact distance (the closest-point
-// passes never below it), and the sign votes give inside and outside of a closed mesh, and no sign to
-// one with a hole wider than the band (a narrower one is sealed by it).
+// passes never below it), and the sign votes give inside and outside of a closed mesh; one with a hole
+// wider than the band (a narrower one is sealed by it) is signed by the winding number instead.
 #include "DistanceBand.h"
 #include "Icosphere.h"
 #include "Outline.h"
@@ -90,7 +90,9 @@ void fieldAgainstExact(SweepMethod sweep, double meanBound, double maxBound)
   SW_CHECK(signErrors == 0, "inside negative, outside positive");
 }
 
-void openMeshHasNoSign()
+// A hole wider than the band lets the outside reach the inside: the votes disagree, and the winding
+// number signs the field (TestWindingSign holds it to its reference).
+void openMeshSignedByWindingNumber()
 {
   Setup s;
   std::vector<std::array<int, 3>> kept; // a hole of several cells: the cap above z = 0.7
@@ -104,14 +106,60 @@ void openMeshHasNoSign()
   s.soup.triangles = kept;
   std::vector<float> d(s.lattice.nodeCount());
   const SignedDistanceResult r = computeSignedDistance(s.soup, s.lattice, {}, d.data());
-  SW_CHECK(r.completed && !r.isSigned && r.boundaryEdges > 0, "an open sphere: unsigned, boundary edges counted ("
-      << r.boundaryEdges << ")");
+  SW_CHECK(r.completed && r.isSigned && r.signMethod == SignMethod::WindingNumber && r.boundaryEdges > 0 &&
+      r.signDisagreements > 0,
+    "an open sphere: the votes disagree, the winding number signs it (" << r.boundaryEdges << " boundary edges)");
+  SignedDistanceSettings paper;
+  paper.windingNumber = false;
+  const SignedDistanceResult unsignedResult = computeSignedDistance(s.soup, s.lattice, paper, d.data());
+  SW_CHECK(unsignedResult.completed && !unsignedResult.isSigned, "without the winding number it stays unsigned");
   bool nonNegative = true;
   for (float v : d)
   {
     nonNegative = nonNegative && v >= 0;
   }
   SW_CHECK(nonNegative, "an unsigned field has no negative value");
+}
+
+// The same sphere at the origin and moved to 1e9: the same errors in cells (issue #11). The grid is
+// placed around the bounds, so the error depends on how coordinates that large are subtracted.
+const TriangleSoup& icosphereAtOrigin()
+{
+  static const TriangleSoup soup = icosphere(3, Vec3::Zero(), 1.0);
+  return soup;
+}
+
+double largestErrorAt(const Vec3& offset)
+{
+  TriangleSoup soup = icosphere(3, Vec3::Zero(), 1.0);
+  for (Vec3& p : soup.points)
+  {
+    p += offset;
+  }
+  GridLattice lattice;
+  placeGrid(soup.bounds(), GridPlacement{ 1.1, 0.5, 24, 0 }, lattice);
+  std::vector<float> d(lattice.nodeCount());
+  const SignedDistanceResult r = computeSignedDistance(soup, lattice, {}, d.data());
+  double worst = 0;
+  long long signErrors = 0;
+  for (std::int64_t n = 0; n < lattice.nodeCount(); ++n)
+  {
+    const Vec3 local = lattice.position(lattice.coordinates(n)) - offset;
+    const TriangleSoup& reference = icosphereAtOrigin();
+    const double exact = testing::bruteForceDistance(reference, local);
+    worst = std::max(worst, std::abs(std::abs(d[n]) - exact));
+    signErrors += (local.norm() < 0.95 && d[n] > 0) || (local.norm() > 1.01 && d[n] < 0);
+  }
+  SW_CHECK(r.completed && r.isSigned && signErrors == 0, "the sphere at " << offset.x() << " is signed right");
+  return worst / lattice.minSpacing();
+}
+
+void farFromTheOrigin()
+{
+  const double atOrigin = largestErrorAt(Vec3::Zero());
+  const double far = largestErrorAt(Vec3(1e9, -1e9, 1e9));
+  std::printf("a unit sphere: largest error %.4f cells at the origin, %.4f cells at 1e9\n", atOrigin, far);
+  SW_CHECK(far <= atOrigin + 0.01, "at 1e9 the same error in cells as at the origin");
 }
 
 void checksRefuse()
@@ -134,8 +182,9 @@ int TestSignedDistance(int, char*[])
     outline();
     fieldAgainstExact(SweepMethod::ClosestPoint, 0.05, 0.5);
     fieldAgainstExact(SweepMethod::Eikonal, 0.5, 1.5);
-    openMeshHasNoSign();
+    openMeshSignedByWindingNumber();
     checksRefuse();
+    farFromTheOrigin();
   });
   return testing::finish("TestSignedDistance");
 }

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <vtkClipPolyData.h>
+#include <vtkDiskSource.h>
+#include <vtkTriangleFilter.h>
 #include <vtkCommand.h>
 #include <vtkContourFilter.h>
 #include <vtkPlane.h>
@@ -176,7 +178,9 @@ int TestMeshSignedDistanceFilter(int, char*[])
   testing::checkAccuracy("inside-out sphere",
     testing::compareWithReference(filter->GetOutput(), testing::triangulated(sphere(32)), true, true), true);
 
-  // An open mesh (a sphere with its top cut off): unsigned, flagged, and a warning.
+  // An open mesh (a sphere with its top cut off): signed by the generalized winding number (issue #11),
+  // said so in DistanceStatus and a warning, every sampled node farther than a cell on the winding
+  // number's side.
   vtkNew<vtkPlane> plane;
   plane->SetOrigin(0, 0, 0.5);
   plane->SetNormal(0, 0, -1);
@@ -189,13 +193,34 @@ int TestMeshSignedDistanceFilter(int, char*[])
   filter->SetResolution(40);
   filter->Update();
   image = filter->GetOutput();
-  SW_CHECK(fieldValue(image, "Signed") == 0, "an open mesh gives an unsigned field");
+  SW_CHECK(fieldValue(image, "Signed") == 1, "an open mesh gives a signed field");
   SW_CHECK(events.warnings > 0, "and a warning");
   auto* status = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("DistanceStatus"));
-  SW_CHECK(status && status->GetValue(0).find("unsigned") == 0, "DistanceStatus says unsigned");
+  SW_CHECK(status && status->GetValue(0).find("signed by the generalized winding number") == 0,
+    "DistanceStatus says how: " << (status ? status->GetValue(0) : std::string("none")));
   const testing::FieldErrors openErrors =
     testing::compareWithReference(image, testing::triangulated(clip->GetOutput()), true, false);
-  testing::checkAccuracy("open sphere (unsigned)", openErrors, false);
+  testing::checkAccuracy("open sphere", openErrors, false);
+  const testing::SignSample openSigns = testing::sampleSigns(image, testing::triangulated(clip->GetOutput()), 4000);
+  SW_CHECK(openSigns.disagreeing == 0 && openSigns.far > 1000,
+    "the open sphere's signs agree with its winding number (" << openSigns.disagreeing << " of " << openSigns.far << ")");
+
+  // A disc encloses nothing: unsigned, flagged, and a warning.
+  vtkNew<vtkDiskSource> disc;
+  disc->SetInnerRadius(0);
+  disc->SetCircumferentialResolution(32);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(disc->GetOutputPort());
+  triangles->Update();
+  events.warnings = 0;
+  filter->SetInputData(triangles->GetOutput());
+  filter->Update();
+  image = filter->GetOutput();
+  SW_CHECK(fieldValue(image, "Signed") == 0, "a disc gives an unsigned field");
+  SW_CHECK(events.warnings > 0, "and a warning");
+  status = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("DistanceStatus"));
+  SW_CHECK(status && status->GetValue(0).find("unsigned: the surface encloses nothing") == 0,
+    "DistanceStatus says why: " << (status ? status->GetValue(0) : std::string("none")));
   values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("SignedDistance"));
   SW_CHECK(values && values->GetRange()[0] >= 0, "the unsigned field has no negative values");
 

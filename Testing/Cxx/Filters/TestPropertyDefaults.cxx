@@ -107,6 +107,7 @@ int TestPropertyDefaults(int argc, char* argv[])
       { "SetSubdivisionLevel", [&] { return one(w->GetSubdivisionLevel()); } },
       { "SetStartOffset", [&] { return one(w->GetStartOffset()); } },
       { "SetGapSize", [&] { return one(w->GetGapSize()); } },
+      { "SetCloseHoles", [&] { return one(w->GetCloseHoles()); } },
       { "SetRemeshing", [&] { return one(w->GetRemeshing()); } },
       { "SetTargetEdgeLength", [&] { return one(w->GetTargetEdgeLength()); } },
       { "SetTangentialRedistribution", [&] { return one(w->GetTangentialRedistribution()); } },

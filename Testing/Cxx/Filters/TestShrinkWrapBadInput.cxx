@@ -304,19 +304,28 @@ void badDistanceFields()
   struct Case
   {
     const char* name;
-    std::function<void(vtkFloatArray*)> spoil;
+    std::function<void(vtkImageData*, vtkFloatArray*)> spoil;
   };
   const std::vector<Case> cases = {
-    { "shorter than the image", [](vtkFloatArray* a) { a->SetNumberOfTuples(a->GetNumberOfTuples() / 3); } },
-    { "empty", [](vtkFloatArray* a) { a->SetNumberOfTuples(0); } },
-    { "with a NaN", [](vtkFloatArray* a) { a->SetValue(a->GetNumberOfTuples() / 2, static_cast<float>(kNaN)); } },
-    { "with an infinity", [](vtkFloatArray* a) { a->SetValue(0, static_cast<float>(kInf)); } },
+    { "shorter than the image", [](vtkImageData*, vtkFloatArray* a) { a->SetNumberOfTuples(a->GetNumberOfTuples() / 3); } },
+    { "empty", [](vtkImageData*, vtkFloatArray* a) { a->SetNumberOfTuples(0); } },
+    { "with a NaN", [](vtkImageData*, vtkFloatArray* a) { a->SetValue(a->GetNumberOfTuples() / 2, static_cast<float>(kNaN)); } },
+    { "with an infinity", [](vtkImageData*, vtkFloatArray* a) { a->SetValue(0, static_cast<float>(kInf)); } },
+    { "with no outside (all negative)", [](vtkImageData*, vtkFloatArray* a) {
+       for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+       {
+         a->SetValue(i, -1.0f - std::abs(a->GetValue(i)));
+       }
+     } },
+    { "rotated (a direction matrix)", [](vtkImageData* image, vtkFloatArray*) {
+       image->SetDirectionMatrix(0, -1, 0, 1, 0, 0, 0, 0, 1);
+     } },
   };
   for (const Case& c : cases)
   {
     vtkNew<vtkImageData> field;
     field->DeepCopy(sdf->GetOutput());
-    c.spoil(vtkFloatArray::SafeDownCast(field->GetPointData()->GetArray("SignedDistance")));
+    c.spoil(field, vtkFloatArray::SafeDownCast(field->GetPointData()->GetArray("SignedDistance")));
     auto wrap = wrapOf(sphere());
     wrap->SetInputData(1, field);
     const Said said = whileSaying(wrap, [&] { wrap->Update(); });
@@ -325,6 +334,21 @@ void badDistanceFields()
       "a DistanceField " << c.name << ": an error and an empty output");
     livesOn(wrap, c.name);
   }
+  // No inside (an unsigned field): said, and wrapped as unsigned.
+  vtkNew<vtkImageData> field;
+  field->DeepCopy(sdf->GetOutput());
+  auto* values = vtkFloatArray::SafeDownCast(field->GetPointData()->GetArray("SignedDistance"));
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    values->SetValue(i, std::abs(values->GetValue(i)));
+  }
+  auto wrap = wrapOf(sphere());
+  wrap->SetInputData(1, field);
+  const Said said = whileSaying(wrap, [&] { wrap->Update(); });
+  std::cout << "DistanceField with no inside: " << said.text << std::endl;
+  SW_CHECK(said.errors == 0 && said.text.find("no inside") != std::string::npos &&
+      wrap->GetOutput()->GetNumberOfPoints() > 0,
+    "a DistanceField with no inside: a warning, and a wrap");
 }
 
 void coordinatesTooLarge()

@@ -88,9 +88,10 @@ Field field(const TriangleSoup& soup, int resolution, SweepMethod sweep = SweepM
   return f;
 }
 
-void expectSigned(const std::string& name, const TriangleSoup& soup, SweepMethod sweep = SweepMethod::ClosestPoint)
+void expectSigned(const std::string& name, const TriangleSoup& soup, SweepMethod sweep = SweepMethod::ClosestPoint,
+  std::vector<int> resolutions = { 24, 48 })
 {
-  for (int resolution : { 24, 48 })
+  for (int resolution : resolutions)
   {
     const Field f = field(soup, resolution, sweep);
     std::printf("%-34s %3d cells: %s by %s, %lld of %lld far nodes on the wrong side, %lld by winding number, "
@@ -151,6 +152,10 @@ int TestWindingSign(int, char*[])
     fastAgainstExact();
     const TriangleSoup ball = sphere(Vec3(0.05, -0.03, 0.02), 1);
     expectSigned("a sphere missing one triangle", withoutTriangle(ball, 17));
+    // An icosahedron missing a face: the hole is wider than the band (which seals the sphere's small
+    // one), the votes disagree (the field was unsigned, silently, before issue #11).
+    expectSigned("an icosahedron missing a face", withoutTriangle(sphere(Vec3(0.05, -0.03, 0.02), 1, 0), 7),
+      SweepMethod::ClosestPoint, { 48, 64 });
     expectSigned("a sphere missing its cap", [&] {
       TriangleSoup s = ball;
       s.triangles.erase(std::remove_if(s.triangles.begin(), s.triangles.end(), [&](const auto& t) {

@@ -206,8 +206,8 @@ int main(int argc, char* argv[])
     runs, std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
   std::printf("| grid | nodes | tree | outline | band | sweep | sign | **ours total** | mean err | max err "
               "| VDB band 3 | VDB band+sweep | VDB mean err | VDB max err | ratio VDB b+s / ours | vtkImplicitPolyDataDistance | ratio VTK / ours "
-              "| signed by | core | core without winding number | ratio |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "| signed by | core | core without winding number | ratio | sampled far nodes against the winding number |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   double vtkSecondsPerNode = 0;
   for (int resolution : resolutions)
   {
@@ -322,13 +322,15 @@ int main(int argc, char* argv[])
       }
     }
 
-    std::printf("| %dx%dx%d | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | **%.3f** | %.3f h | %.3f h | %.3f | %.3f | %.3f h | %.3f h | %.1f | %s | %s | %s | %.3f | %.3f | %.2f |\n",
+    // The sign against the brute-force winding number on a sample of nodes farther than a cell.
+    const testing::SignSample signs = testing::sampleSigns(image, soup, 4000);
+    std::printf("| %dx%dx%d | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | **%.3f** | %.3f h | %.3f h | %.3f | %.3f | %.3f h | %.3f h | %.1f | %s | %s | %s | %.3f | %.3f | %.2f | %lld of %lld |\n",
       lattice.dims[0] - 1, lattice.dims[1] - 1, lattice.dims[2] - 1, static_cast<long long>(lattice.nodeCount()),
       stage(&shrinkwrap::SignedDistanceResult::treeSeconds), stage(&shrinkwrap::SignedDistanceResult::outlineSeconds),
       stage(&shrinkwrap::SignedDistanceResult::bandSeconds), stage(&shrinkwrap::SignedDistanceResult::sweepSeconds),
       stage(&shrinkwrap::SignedDistanceResult::signSeconds), median(totals), ours.mean, ours.max, median(band),
       median(full), vdb.mean, vdb.max, median(full) / median(totals), vtkCell.c_str(), vtkRatio.c_str(), signedBy,
-      median(core), median(votesOnly), median(core) / median(votesOnly));
+      median(core), median(votesOnly), median(core) / median(votesOnly), signs.disagreeing, signs.far);
     std::fflush(stdout);
   }
   return 0;

@@ -68,15 +68,12 @@ std::vector<int> samplesOf(const std::vector<int>& patch, std::size_t patchCount
   }
   return samples;
 }
-} // namespace
 
-std::vector<char> confirmSides(const TriangleSoup& welded, const WindingNumber& winding)
+// Per patch (indexed by its representative point), whether every sample sees the rest of the surface
+// with winding number 1/2 +- 0.4; a loose far field is enough for that margin.
+std::vector<char> patchesOk(const TriangleSoup& welded, const WindingNumber& winding, const std::vector<int>& patch)
 {
-  const int nt = static_cast<int>(welded.triangles.size());
-  const std::vector<char> crossing = findSelfIntersections(welded.points, welded.triangles).intersecting;
-  const std::vector<int> patch = patchesOf(welded, crossing);
   const std::vector<int> samples = samplesOf(patch, welded.points.size());
-  // A loose far field is enough: the margin is 0.4.
   std::vector<char> sampleOk(samples.size());
   parallelFor(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType s = b; s < e; ++s)
@@ -87,18 +84,65 @@ std::vector<char> confirmSides(const TriangleSoup& welded, const WindingNumber& 
       sampleOk[s] = rest > 0.1 && rest < 0.9;
     }
   });
-  std::vector<char> patchOk(welded.points.size(), 1);
+  std::vector<char> ok(welded.points.size(), 1);
   for (std::size_t s = 0; s < samples.size(); ++s)
   {
-    patchOk[patch[samples[s]]] &= sampleOk[s];
+    ok[patch[samples[s]]] &= sampleOk[s];
+  }
+  return ok;
+}
+
+// The crossing triangles among `candidates` (those of rejected patches), by their own grid.
+std::vector<char> crossingAmong(const TriangleSoup& welded, const std::vector<char>& candidates)
+{
+  std::vector<std::array<int, 3>> subset;
+  std::vector<int> original;
+  for (std::size_t t = 0; t < candidates.size(); ++t)
+  {
+    if (candidates[t])
+    {
+      subset.push_back(welded.triangles[t]);
+      original.push_back(static_cast<int>(t));
+    }
+  }
+  const std::vector<char> found = findSelfIntersections(welded.points, subset).intersecting;
+  std::vector<char> crossing(candidates.size(), 0);
+  for (std::size_t k = 0; k < found.size(); ++k)
+  {
+    crossing[original[k]] = found[k];
+  }
+  return crossing;
+}
+} // namespace
+
+// Patches are sampled first as they come (joined through shared points). A part inside another, or
+// beyond a crossing, shows in the samples of its patch; crossing triangles are looked for only in the
+// patches so rejected (the crossing check of every triangle cost a third of the winding sign on a mesh
+// that is only open), left out, and what they joined is sampled again.
+std::vector<char> confirmSides(const TriangleSoup& welded, const WindingNumber& winding)
+{
+  const int nt = static_cast<int>(welded.triangles.size());
+  std::vector<int> patch = patchesOf(welded, std::vector<char>(nt, 0));
+  std::vector<char> ok = patchesOk(welded, winding, patch);
+  std::vector<char> rejected(nt, 0);
+  bool anyRejected = false;
+  for (int t = 0; t < nt; ++t)
+  {
+    rejected[t] = !ok[patch[t]];
+    anyRejected = anyRejected || rejected[t];
+  }
+  if (anyRejected)
+  {
+    patch = patchesOf(welded, crossingAmong(welded, rejected));
+    ok = patchesOk(welded, winding, patch);
   }
   std::vector<char> corner(welded.points.size(), 1);
   for (int t = 0; t < nt; ++t)
   {
-    const bool ok = patch[t] >= 0 && patchOk[patch[t]];
+    const bool good = patch[t] >= 0 && ok[patch[t]];
     for (int v : welded.triangles[t])
     {
-      corner[v] = corner[v] && ok;
+      corner[v] = corner[v] && good;
     }
   }
   std::vector<char> confirmed(nt);

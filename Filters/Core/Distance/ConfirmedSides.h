@@ -15,9 +15,10 @@
 namespace shrinkwrap
 {
 
-// Per triangle of a welded soup: confirmed when it crosses no other triangle, the patch it belongs to
-// sees winding number 1/2 +- 0.4 at every sample, and the same holds for every triangle around its
-// corners (a closest point on an edge or corner takes the pseudonormal of all of them).
+// Per triangle of a welded soup: confirmed when the patch it belongs to sees winding number 1/2 +- 0.4
+// at every sample (where a patch does not, its crossing triangles are left out and the rest sampled
+// again), and the same holds for every triangle around its corners (a closest point on an edge or
+// corner takes the pseudonormal of all of them).
 std::vector<char> confirmSides(const TriangleSoup& welded, const WindingNumber& winding);
 
 } // namespace shrinkwrap

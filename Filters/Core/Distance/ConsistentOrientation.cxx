@@ -8,13 +8,6 @@ namespace shrinkwrap
 
 namespace
 {
-struct EdgeUse
-{
-  std::uint64_t key;
-  int triangle;
-  bool forward; // the triangle runs the edge from its lower to its higher point index
-};
-
 double area(const TriangleSoup& soup, int t)
 {
   const auto& tri = soup.triangles[t];
@@ -35,41 +28,18 @@ bool degenerate(const TriangleSoup& soup, int t)
 // that edge the same way (then one of them is flipped against the other).
 std::vector<std::vector<std::pair<int, bool>>> manifoldNeighbours(const TriangleSoup& soup)
 {
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * soup.triangles.size());
-  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
-  {
-    const auto& tri = soup.triangles[t];
-    if (degenerate(soup, static_cast<int>(t)))
-    {
-      continue; // no orientation to pass on: a flip through it would turn everything beyond
-    }
-    for (int e = 0; e < 3; ++e)
-    {
-      const auto i = static_cast<std::uint64_t>(tri[e]), j = static_cast<std::uint64_t>(tri[(e + 1) % 3]);
-      if (i != j)
-      {
-        uses.push_back({ (std::min(i, j) << 32) | std::max(i, j), static_cast<int>(t), i < j });
-      }
-    }
-  }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) { return a.key < b.key; });
+  // Degenerate triangles have no orientation to pass on: a flip through one would turn everything
+  // beyond it.
+  const std::vector<EdgeUse> uses = edgeUses(soup, [&](int t) { return !degenerate(soup, t); });
   std::vector<std::vector<std::pair<int, bool>>> neighbours(soup.triangles.size());
-  for (std::size_t first = 0; first < uses.size();)
-  {
-    std::size_t last = first;
-    while (last < uses.size() && uses[last].key == uses[first].key)
-    {
-      ++last;
-    }
+  forEachEdge(uses, [&](std::size_t first, std::size_t last) {
     if (last - first == 2)
     {
       const EdgeUse &a = uses[first], &b = uses[first + 1];
       neighbours[a.triangle].push_back({ b.triangle, a.forward == b.forward });
       neighbours[b.triangle].push_back({ a.triangle, a.forward == b.forward });
     }
-    first = last;
-  }
+  });
   return neighbours;
 }
 

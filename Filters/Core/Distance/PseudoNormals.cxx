@@ -14,12 +14,6 @@ double angleAt(const Vec3& p, const Vec3& q, const Vec3& r)
   return angleBetween(q - p, r - p);
 }
 
-struct EdgeUse
-{
-  std::uint64_t key;
-  int triangle;
-  int slot;
-};
 } // namespace
 
 PseudoNormals::PseudoNormals(const TriangleSoup& soup)
@@ -30,8 +24,6 @@ PseudoNormals::PseudoNormals(const TriangleSoup& soup)
   this->Corner.resize(nt);
   this->Edge.resize(nt);
 
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * nt);
   for (std::size_t t = 0; t < nt; ++t)
   {
     const auto& tri = soup.triangles[t];
@@ -45,12 +37,6 @@ PseudoNormals::PseudoNormals(const TriangleSoup& soup)
       vertex[tri[0]] += angleAt(a, b, c) * this->Face[t];
       vertex[tri[1]] += angleAt(b, c, a) * this->Face[t];
       vertex[tri[2]] += angleAt(c, a, b) * this->Face[t];
-    }
-    for (int e = 0; e < 3; ++e)
-    {
-      const auto i = static_cast<std::uint64_t>(tri[e]);
-      const auto j = static_cast<std::uint64_t>(tri[(e + 1) % 3]);
-      uses.push_back({ (std::min(i, j) << 32) | std::max(i, j), static_cast<int>(t), e });
     }
   }
 
@@ -66,15 +52,12 @@ PseudoNormals::PseudoNormals(const TriangleSoup& soup)
   // of one triangle (a rim) or of more than two has no inside and outside, nor have its ends.
   this->Open.assign(nt, 0);
   std::vector<char> openVertex(soup.points.size(), 0);
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
-  for (std::size_t first = 0; first < uses.size();)
-  {
-    std::size_t last = first;
+  const std::vector<EdgeUse> uses = edgeUses(soup);
+  forEachEdge(uses, [&](std::size_t first, std::size_t last) {
     Vec3 sum = Vec3::Zero();
-    while (last < uses.size() && uses[last].key == uses[first].key)
+    for (std::size_t k = first; k < last; ++k)
     {
-      sum += this->Face[uses[last].triangle];
-      ++last;
+      sum += this->Face[uses[k].triangle];
     }
     const std::size_t count = last - first;
     this->BoundaryEdges += count == 1;
@@ -88,8 +71,7 @@ PseudoNormals::PseudoNormals(const TriangleSoup& soup)
         openVertex[uses[first].key >> 32] = openVertex[uses[first].key & 0xffffffffu] = 1;
       }
     }
-    first = last;
-  }
+  });
   for (std::size_t t = 0; t < nt; ++t)
   {
     for (int k = 0; k < 3; ++k)

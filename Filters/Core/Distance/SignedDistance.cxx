@@ -177,7 +177,7 @@ SignedDistanceResult fromSoup(const TriangleSoup& input, const GridLattice& latt
   SignedDistanceResult result;
   if (progress.report(0.05))
   {
-    result = computeSignedDistance(static_cast<const TriangleSource&>(*source), lattice, settings, distance, progress);
+    result = computeSignedDistance(*source, lattice, settings, distance, progress);
   }
   result.treeSeconds = treeSeconds;
   if (keep)

@@ -39,4 +39,25 @@ TriangleSoup weldDuplicatePoints(const TriangleSoup& soup)
   return welded;
 }
 
+std::vector<EdgeUse> edgeUses(const TriangleSoup& soup, const std::function<bool(int)>& keep)
+{
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * soup.triangles.size());
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    if (keep && !keep(static_cast<int>(t)))
+    {
+      continue;
+    }
+    const auto& tri = soup.triangles[t];
+    for (int e = 0; e < 3; ++e)
+    {
+      const auto i = static_cast<std::uint64_t>(tri[e]), j = static_cast<std::uint64_t>(tri[(e + 1) % 3]);
+      uses.push_back({ (std::min(i, j) << 32) | std::max(i, j), static_cast<int>(t), e, i < j });
+    }
+  }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) { return a.key < b.key; });
+  return uses;
+}
+
 } // namespace shrinkwrap

@@ -6,6 +6,10 @@
 
 #include "IndexedTriangles.h"
 
+#include <cstdint>
+#include <functional>
+#include <vector>
+
 namespace shrinkwrap
 {
 
@@ -14,6 +18,36 @@ using TriangleSoup = IndexedTriangles;
 // Merge points with bit-identical coordinates. The result is the same surface; only the indices
 // change (a triangle that then repeats an index is kept: as a segment it still has distances).
 TriangleSoup weldDuplicatePoints(const TriangleSoup& soup);
+
+// One triangle's use of an undirected edge: the edge's two point ids in `key` (lower << 32 | higher),
+// `slot` the edge in the triangle (0: corners 0-1, 1: 1-2, 2: 2-0), `forward` whether the triangle runs
+// it from the lower id to the higher.
+struct EdgeUse
+{
+  std::uint64_t key;
+  int triangle;
+  int slot;
+  bool forward;
+};
+
+// The edge uses of the triangles `keep` accepts (all when empty), grouped by edge: sorted by key.
+std::vector<EdgeUse> edgeUses(const TriangleSoup& soup, const std::function<bool(int)>& keep = {});
+
+// f(first, last) for each edge's run [first, last) of `uses` (grouped as edgeUses gives them).
+template <typename F>
+void forEachEdge(const std::vector<EdgeUse>& uses, F&& f)
+{
+  for (std::size_t first = 0; first < uses.size();)
+  {
+    std::size_t last = first + 1;
+    while (last < uses.size() && uses[last].key == uses[first].key)
+    {
+      ++last;
+    }
+    f(first, last);
+    first = last;
+  }
+}
 
 } // namespace shrinkwrap
 

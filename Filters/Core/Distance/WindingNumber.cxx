@@ -1,11 +1,8 @@
 #include "WindingNumber.h"
 
-#include "Box.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 namespace shrinkwrap
 {

@@ -283,7 +283,7 @@ StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool 
     {
       const int count = this->Mesh.vertexCount();
       this->Mesh = std::move(good);
-      this->connectivityChanged(count);
+      this->connectivityChanged(this->Mesh.vertexCount() == count);
       return mended;
     }
     const StepReport adjusted = report;
@@ -386,7 +386,6 @@ void editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scale,
 void Evolver::adjustConnectivity(StepReport& report)
 {
   const EvolverSettings& s = this->Settings;
-  const int count = this->Mesh.vertexCount();
   const bool guarded = s.flips.avoidCrossings || s.collapses.avoidCrossings;
   bool done = false;
   if (guarded)
@@ -409,13 +408,13 @@ void Evolver::adjustConnectivity(StepReport& report)
   }
   if (report.connectivityChanged())
   {
-    this->connectivityChanged(report.splits > 0 || report.collapses > 0 ? -1 : count);
+    this->connectivityChanged(report.splits == 0 && report.collapses == 0);
   }
 }
 
-void Evolver::connectivityChanged(int previousVertexCount)
+void Evolver::connectivityChanged(bool sameVertices)
 {
-  if (this->Mesh.vertexCount() != previousVertexCount)
+  if (!sameVertices)
   {
     this->Potential.clear(); // a warm start for the same vertices only
   }
@@ -450,7 +449,7 @@ bool Evolver::restart(
     }
     const int count = this->Mesh.vertexCount();
     this->Mesh = std::move(mesh);
-    this->connectivityChanged(count);
+    this->connectivityChanged(this->Mesh.vertexCount() == count);
   }
   else if (state.size() != this->Mesh.points().size())
   {
@@ -472,7 +471,7 @@ Status Evolver::edit(const std::function<void(SurfaceMesh&)>& change)
   const int count = this->Mesh.vertexCount();
   change(this->Mesh);
   Status status = this->Mesh.commit();
-  this->connectivityChanged(count);
+  this->connectivityChanged(this->Mesh.vertexCount() == count);
   return status;
 }
 

@@ -187,7 +187,8 @@ private:
   StepReport check(const std::vector<Vec3>& y) const;
   int holdBack(std::vector<Vec3>& next) const;
   void adjustConnectivity(StepReport& report); // remeshing, flips, then collapses, as the settings ask
-  void connectivityChanged(int previousVertexCount);
+  // A new solver for the new triangles; the volume redistribution's warm start only for the same vertices.
+  void connectivityChanged(bool sameVertices);
   std::vector<Vec3>& velocity() { return this->Mesh.vertexData("velocity"); }
 
   SurfaceMesh Mesh; // positions: the scaled state; vertex data "velocity": v_T of the last step

@@ -7,6 +7,7 @@
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
+#include <vtkDataSetSurfaceFilter.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
@@ -26,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace shrinkwrap
 {
@@ -134,22 +136,30 @@ void extendBySurface(vtkPolyData* input, Box& box)
 }
 } // namespace
 
-Status polygonMeshes(vtkDataObject* input, std::vector<vtkPolyData*>& meshes)
+PolygonMeshes polygonMeshes(vtkDataObject* input)
 {
-  meshes.clear();
+  PolygonMeshes found;
   for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
   {
     if (auto* mesh = vtkPolyData::SafeDownCast(leaf))
     {
-      meshes.push_back(mesh);
+      found.meshes.push_back(mesh);
     }
     else if (leaf->GetNumberOfCells() > 0)
     {
-      return Status::failure(std::string("a block of the input is a ") + leaf->GetClassName() +
-        ", not a polygon mesh; apply Extract Surface to it first");
+      vtkNew<vtkDataSetSurfaceFilter> surface;
+      surface->SetInputData(leaf);
+      surface->Update();
+      found.extracted.emplace_back(surface->GetOutput());
+      found.meshes.push_back(found.extracted.back());
+      const std::string kind = leaf->GetClassName();
+      if (found.extractedFrom.find(kind) == std::string::npos)
+      {
+        found.extractedFrom += (found.extractedFrom.empty() ? "" : ", ") + kind;
+      }
     }
   }
-  return {};
+  return found;
 }
 
 TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts)
@@ -408,6 +418,77 @@ void addStepFields(int step, double time, const std::string& status, vtkPolyData
   output->GetFieldData()->AddArray(times);
   output->GetFieldData()->AddArray(statuses);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+}
+
+WrapSummary summarize(vtkPolyData* output, double cell, int steps, double seconds)
+{
+  WrapSummary summary;
+  summary.cell = cell;
+  summary.steps = steps;
+  summary.seconds = seconds;
+  summary.vertices = static_cast<int>(output->GetNumberOfPoints());
+  if (vtkDataArray* d = output->GetPointData()->GetArray("Distance"); d && d->GetNumberOfTuples() > 0)
+  {
+    std::vector<double> a(d->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < d->GetNumberOfTuples(); ++i)
+    {
+      a[i] = std::abs(d->GetComponent(i, 0));
+    }
+    std::sort(a.begin(), a.end());
+    const double last = static_cast<double>(a.size() - 1);
+    summary.distance = { a[static_cast<std::size_t>(0.5 * last)], a[static_cast<std::size_t>(0.95 * last)], a.back() };
+  }
+  if (vtkDataArray* m = output->GetCellData()->GetArray("MinAngle"); m && m->GetNumberOfTuples() > 0)
+  {
+    vtkIdType small = 0;
+    for (vtkIdType t = 0; t < m->GetNumberOfTuples(); ++t)
+    {
+      small += m->GetComponent(t, 0) < 20.0;
+    }
+    summary.smallAngleShare = static_cast<double>(small) / m->GetNumberOfTuples();
+  }
+  if (vtkDataArray* p = output->GetFieldData()->GetArray("SelfIntersections"))
+  {
+    summary.selfIntersections = static_cast<long long>(p->GetComponent(0, 0));
+  }
+  return summary;
+}
+
+std::string WrapSummary::text() const
+{
+  char line[512];
+  const double c = this->cell > 0 ? this->cell : 1.0;
+  std::snprintf(line, sizeof(line),
+    "%d steps in %.2f s, %d vertices: |distance| to the target median %.3g (%.2g cells), 95%% %.3g (%.2g cells), "
+    "largest %.3g (%.2g cells); %.2f%% of triangles under 20 degrees; closed 2-manifold, %lld self-intersecting "
+    "triangle pairs",
+    this->steps, this->seconds, this->vertices, this->distance[0], this->distance[0] / c, this->distance[1],
+    this->distance[1] / c, this->distance[2], this->distance[2] / c, 100 * this->smallAngleShare,
+    this->selfIntersections);
+  return line;
+}
+
+void addSummary(const WrapSummary& summary, vtkPolyData* output)
+{
+  vtkFieldData* fields = output->GetFieldData();
+  auto add = [&](const char* name, std::vector<double> values) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(static_cast<int>(values.size()));
+    a->InsertNextTuple(values.data());
+    fields->AddArray(a);
+  };
+  const std::array<double, 3>& d = summary.distance;
+  const double c = summary.cell > 0 ? summary.cell : 1.0;
+  add("DistancePercentiles", { d[0], d[1], d[2] });
+  add("DistancePercentilesInCells", { d[0] / c, d[1] / c, d[2] / c });
+  add("FieldCellSize", { summary.cell });
+  add("SmallAngleShare", { summary.smallAngleShare });
+  add("ComputeSeconds", { summary.seconds });
+  vtkNew<vtkStringArray> text;
+  text->SetName("Summary");
+  text->InsertNextValue(summary.text());
+  fields->AddArray(text);
 }
 
 } // namespace convert

@@ -27,9 +27,15 @@ namespace shrinkwrap
 namespace convert
 {
 
-// The polygon meshes of an input: itself, or the leaves of a composite dataset. A leaf with cells
-// that are not polygons is an error: Extract Surface makes polygons of it.
-Status polygonMeshes(vtkDataObject* input, std::vector<vtkPolyData*>& meshes);
+// The polygon meshes of an input: itself, or the leaves of a composite dataset. A dataset of another
+// kind with cells (an unstructured grid, an image) gives its outer surface, as Extract Surface does.
+struct PolygonMeshes
+{
+  std::vector<vtkPolyData*> meshes;
+  std::vector<vtkSmartPointer<vtkPolyData>> extracted; // the surfaces made here, which `meshes` holds
+  std::string extractedFrom; // the kinds of data they were made of ("vtkUnstructuredGrid", ...)
+};
+PolygonMeshes polygonMeshes(vtkDataObject* input);
 
 // What a soup was made of besides its triangles.
 struct SoupCounts
@@ -73,6 +79,24 @@ void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const Tar
 // Cell data SelfIntersecting (1 where a triangle crosses another) and field data SelfIntersections
 // (the number of crossing pairs).
 void addSelfIntersections(const SelfIntersections& crossings, vtkPolyData* output);
+
+// A wrap's figures as a user reads them, from its output's own arrays: |Distance| at the vertices
+// (median, 95th percentile, largest; in the target's units and in cells of the field), the share of
+// triangles with MinAngle under 20 degrees, self-intersecting pairs (SelfIntersections).
+struct WrapSummary
+{
+  std::array<double, 3> distance{}; // median, 95th percentile (value at rank floor(p (n - 1))), largest
+  double cell = 0;                  // of the distance field
+  double smallAngleShare = 0;       // of the triangles
+  long long selfIntersections = 0;
+  int vertices = 0, steps = 0;
+  double seconds = 0;               // computing (fields, start and steps) in this session
+  std::string text() const;         // one line: what the output messages show at the end of a run
+};
+WrapSummary summarize(vtkPolyData* output, double cell, int steps, double seconds);
+// As field data: DistancePercentiles, DistancePercentilesInCells (3 each), FieldCellSize,
+// SmallAngleShare, ComputeSeconds, Summary (the text).
+void addSummary(const WrapSummary& summary, vtkPolyData* output);
 
 // Field data of the wrap's output: StepIndex, Time and Status; and the output's DATA_TIME_STEP.
 void addStepFields(int step, double time, const std::string& status, vtkPolyData* output);

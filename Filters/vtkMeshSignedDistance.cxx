@@ -12,6 +12,7 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -37,6 +38,7 @@ vtkMeshSignedDistance::vtkMeshSignedDistance()
   this->ComputeSign = distance.computeSign;
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
+  this->SetProgressText("Mesh Signed Distance");
 }
 
 int vtkMeshSignedDistance::FillInputPortInformation(int, vtkInformation* info)
@@ -44,7 +46,7 @@ int vtkMeshSignedDistance::FillInputPortInformation(int, vtkInformation* info)
   // Composite inputs are taken whole (one field of all their meshes): left to the composite pipeline,
   // they would run once per block.
   info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
@@ -78,11 +80,7 @@ int vtkMeshSignedDistance::RequestInformation(
     vtkAlgorithm* producer = this->GetInputAlgorithm(0, 0);
     const int port = this->GetInputConnection(0, 0)->GetIndex();
     producer->UpdatePiece(0, 1, 0);
-    std::vector<vtkPolyData*> meshes;
-    if (convert::polygonMeshes(producer->GetOutputDataObject(port), meshes)) // else RequestData reports it
-    {
-      bounds = convert::surfaceBounds(meshes);
-    }
+    bounds = convert::surfaceBounds(convert::polygonMeshes(producer->GetOutputDataObject(port)).meshes);
   }
   shrinkwrap::GridLattice lattice;
   if (this->ComputeLattice(bounds, lattice))
@@ -146,14 +144,15 @@ int vtkMeshSignedDistance::RequestData(
   return 1;
 }
 
-bool vtkMeshSignedDistance::ReadInput(vtkDataObject* input, shrinkwrap::TriangleSoup& soup, shrinkwrap::Box& bounds)
+bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleSoup& soup, shrinkwrap::Box& bounds)
 {
-  std::vector<vtkPolyData*> meshes;
-  if (const shrinkwrap::Status status = convert::polygonMeshes(input, meshes); !status)
+  const convert::PolygonMeshes input = convert::polygonMeshes(data);
+  if (!input.extractedFrom.empty())
   {
-    vtkErrorMacro("Mesh Signed Distance needs polygon meshes: " << status.message() << ".");
-    return false;
+    vtkOutputWindowDisplayText(("Mesh Signed Distance: the input (" + input.extractedFrom +
+      ") is measured by its outer surface, as Extract Surface gives it.\n").c_str());
   }
+  const std::vector<vtkPolyData*>& meshes = input.meshes;
   convert::SoupCounts counts;
   soup = convert::soupOf(meshes, counts);
   if (counts.lines > 0 || counts.vertices > 0)

@@ -9,8 +9,8 @@
  * distances on a band of nodes around the surface, fast sweeping for the rest, and a flood fill for
  * the sign. Band nodes are signed by angle-weighted pseudonormals.
  *
- * Input: vtkPolyData, or a composite dataset of them (one field of all its meshes; a block with other
- * cells is an error). Polygons of any size and triangle strips are triangulated; non-manifold meshes
+ * Input: vtkPolyData, any other vtkDataSet with cells (its outer surface, as vtkDataSetSurfaceFilter gives
+ * it), or a composite dataset of them (one field of all its meshes). Polygons of any size and triangle strips are triangulated; non-manifold meshes
  * and duplicated points are accepted. Lines and vertices are ignored (with a warning). Coordinates
  * beyond +-1e30 are refused: a float field cannot hold their distances.
  *

@@ -6,14 +6,17 @@
 #include "VTKConversions.h"
 #include "WrapSession.h"
 
+#include "vtkDataSet.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 vtkStandardNewMacro(vtkShrinkWrapFilter);
@@ -52,6 +55,7 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   this->SolverTolerance = e.solverTolerance;
   this->Resolution = defaults.resolution;
   this->CacheMemoryLimit = defaults.cacheMiB;
+  this->SetProgressText("Shrink Wrap");
 }
 
 vtkShrinkWrapFilter::~vtkShrinkWrapFilter() = default;
@@ -96,7 +100,7 @@ int vtkShrinkWrapFilter::GetNumberOfComputedSteps() const
 
 int vtkShrinkWrapFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 1 ? "vtkImageData" : "vtkPolyData");
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkDataSet" : (port == 1 ? "vtkImageData" : "vtkPolyData"));
   if (port > 0)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -168,7 +172,13 @@ vtkMTimeType vtkShrinkWrapFilter::SessionKey()
 
 bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
 {
-  vtkPolyData* target = vtkPolyData::GetData(inputVector[0], 0);
+  const convert::PolygonMeshes input = convert::polygonMeshes(vtkDataSet::GetData(inputVector[0], 0));
+  vtkPolyData* target = input.meshes.empty() ? nullptr : input.meshes[0];
+  if (!input.extractedFrom.empty())
+  {
+    vtkOutputWindowDisplayText(
+      ("Shrink Wrap: the target (" + input.extractedFrom + ") is wrapped by its outer surface, as Extract Surface gives it.\n").c_str());
+  }
   vtkPolyData* initial = vtkPolyData::GetData(inputVector[2], 0);
   if (const Status valid = this->CoreSettings().validate(); !valid)
   {
@@ -333,7 +343,9 @@ void vtkShrinkWrapFilter::Execute(vtkInformationVector** inputVector, vtkInforma
   {
     this->Current.reset();
     bool started = false;
+    const auto begin = std::chrono::steady_clock::now();
     onAllCores([&] { started = this->StartSession(inputVector); });
+    this->ComputeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     if (!started) // a session is kept only when it started
     {
       return;
@@ -341,9 +353,14 @@ void vtkShrinkWrapFilter::Execute(vtkInformationVector** inputVector, vtkInforma
     this->CurrentKey = key;
   }
   const int wanted = this->StepAsked(outInfo);
-  if (this->Advance(wanted))
+  const int computed = this->Current->computedSteps();
+  const auto begin = std::chrono::steady_clock::now();
+  const bool advanced = this->Advance(wanted);
+  this->ComputeSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  if (advanced)
   {
-    this->WriteOutput(wanted, output);
+    // The end of a run: the last step, computed now.
+    this->WriteOutput(wanted, wanted == this->NumberOfSteps && this->Current->computedSteps() > computed, output);
   }
   // The pipeline takes an execution as up to date even when a property changed while it ran (a panel
   // edit, a script's callback): RunAgain makes the next request run again, with the new values.
@@ -399,7 +416,7 @@ bool vtkShrinkWrapFilter::Advance(int step)
   return true;
 }
 
-void vtkShrinkWrapFilter::WriteOutput(int wanted, vtkPolyData* output)
+void vtkShrinkWrapFilter::WriteOutput(int wanted, bool finished, vtkPolyData* output)
 {
   const WrapSession& s = *this->Current;
   const WrapSession::Surface surface = s.surface(wanted);
@@ -425,6 +442,13 @@ void vtkShrinkWrapFilter::WriteOutput(int wanted, vtkPolyData* output)
                                            << " triangle pairs cross; cell array SelfIntersecting).");
   }
   convert::addStepFields(surface.step, surface.step * this->TimeStep, status, output);
+  const convert::WrapSummary summary = convert::summarize(
+    output, s.fields().driving.grid().lattice().spacing.x(), surface.step, this->ComputeSeconds);
+  convert::addSummary(summary, output);
+  if (finished)
+  {
+    vtkOutputWindowDisplayText(("Shrink Wrap: " + summary.text() + ".\n").c_str());
+  }
 }
 
 void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -12,7 +12,8 @@
  * output and its steps cached; it does not run again by itself, and a request for another time
  * resumes from the cache.
  *
- * Inputs: port 0, the target (vtkPolyData with polygons). Port 1 (optional), "DistanceField": a
+ * Inputs: port 0, the target (vtkPolyData with polygons, or any vtkDataSet with cells, wrapped by its
+ * outer surface as vtkDataSetSurfaceFilter gives it). Port 1 (optional), "DistanceField": a
  * vtkImageData with a point array "SignedDistance", e.g. from Mesh Signed Distance; otherwise one is
  * computed with Resolution. Port 2 (optional), "InitialSurface": a closed 2-manifold triangle surface to
  * start from (e.g. a contour of the distance field), first relaxed tangentially for InitialRelaxation
@@ -23,7 +24,11 @@
  * (-grad d . N), MeanCurvature (H, positive where convex), CoVolume (|V_i|), Normals, and
  * TangentialVelocity (v_T of the step that produced the surface). Cell data: MinAngle, MaxAngle (degrees)
  * and JacobianCondition (Knupp). Field data: StepIndex, Time and Status ("ok", or the failure and its
- * step; later times then show the last good surface). Under MPI the surface is piece 0; other pieces
+ * step; later times then show the last good surface), and a run summary from these arrays: Summary (one
+ * line, also sent to the output window at the end of a run), DistancePercentiles and
+ * DistancePercentilesInCells (median, 95th percentile and largest |Distance| at the vertices),
+ * FieldCellSize, SmallAngleShare (triangles with MinAngle under 20 degrees), SelfIntersections and
+ * ComputeSeconds. Under MPI the surface is piece 0; other pieces
  * are empty.
  *
  * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
@@ -222,6 +227,8 @@ public:
 
   /// Evolution steps computed since the cache was last dropped (for tests and diagnostics).
   int GetNumberOfComputedSteps() const;
+  /// 1 when a DistanceField is connected (port 1): the panel then hides Resolution.
+  int GetHasDistanceField() { return this->GetNumberOfInputConnections(1) > 0; }
 
   // An abort is no change of the wrap: unlike vtkAlgorithm's setter it leaves the modification time
   // alone, so the computed steps stay cached and the next request resumes from them.
@@ -284,11 +291,12 @@ private:
     shrinkwrap::WrapFields& fields);
   int StepAsked(vtkInformation* outInfo) const;
   bool Advance(int step);
-  void WriteOutput(int wanted, vtkPolyData* output);
+  void WriteOutput(int wanted, bool finished, vtkPolyData* output);
 
   // Everything derived from the inputs and properties, dropped when either changes.
   std::unique_ptr<shrinkwrap::WrapSession> Current;
   vtkMTimeType CurrentKey = 0;
+  double ComputeSeconds = 0; // fields, start and steps of the current session
 };
 
 #endif

@@ -1,0 +1,101 @@
+"""pvpython test of what issue #12 asks of the filters as a user meets them: any dataset with cells as
+input (an unstructured grid gives the field and the wrap of its outer surface, equal to those of the
+polygons Extract Surface makes of it), one name per property (panel label without spaces = Python
+name = trace name), defaults a trace leaves out, and the run summary equal to the figures of the
+output's own arrays.
+
+Usage: pvpython TestUserTerms.py <ShrinkWrap plugin .so> <mesh>
+"""
+import sys
+
+import numpy as np
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager, smtrace
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+from checks import check, finish
+
+plugin, mesh = sys.argv[1], sys.argv[2]
+LoadPlugin(plugin, ns=globals())
+
+
+def fetched(proxy):
+    proxy.UpdatePipeline()
+    return servermanager.Fetch(proxy)
+
+
+def array(data, name, cells=False):
+    a = (data.GetCellData() if cells else data.GetPointData()).GetArray(name)
+    return vtk_to_numpy(a) if a is not None else None
+
+
+# An unstructured grid: a tetrahedral mesh's cells, and the polygons Extract Surface makes of it.
+tets = Delaunay3D(Input=OpenDataFile(mesh))
+surface = ExtractSurface(Input=tets)
+check(fetched(tets).IsA("vtkUnstructuredGrid") and fetched(tets).GetCellType(0) == 10,
+      "the input is an unstructured grid of tetrahedra")
+fields = [fetched(MeshSignedDistance(Input=source, Resolution=48)) for source in (tets, surface)]
+values = [array(f, "SignedDistance") for f in fields]
+check(values[0] is not None and values[1] is not None and values[0].shape == values[1].shape and
+      np.array_equal(values[0], values[1]) and (values[0] < 0).any(),
+      "Mesh Signed Distance: the tetrahedra's field equals their extracted surface's (%d nodes, signed)"
+      % len(values[0]))
+wraps = [fetched(ShrinkWrap(Input=source, Resolution=48)) for source in (tets, surface)]
+points = [vtk_to_numpy(w.GetPoints().GetData()) for w in wraps]
+check(points[0].shape == points[1].shape and points[0].shape[0] > 100 and np.array_equal(points[0], points[1]),
+      "Shrink Wrap: the tetrahedra's wrap equals their extracted surface's (%d vertices)" % points[0].shape[0])
+
+# The menu offers both filters for a dataset with cells.
+for name, creator in (("Mesh Signed Distance", MeshSignedDistance), ("Shrink Wrap", ShrinkWrap)):
+    proxy = creator(Input=tets)
+    check(proxy.GetProperty("Input").SMProperty.IsInDomains() == 1,
+          name + ": an unstructured grid is in the input's domain")
+    Delete(proxy)
+
+# One name per property: the panel's label without spaces is the XML name is the Python name.
+for creator in (MeshSignedDistance, ShrinkWrap):
+    proxy = creator(Input=surface)
+    names = []
+    for python_name in proxy.ListProperties():
+        smproperty = proxy.GetProperty(python_name).SMProperty
+        xml_name = proxy.SMProxy.GetPropertyName(smproperty)
+        label = smproperty.GetXMLLabel()
+        if label.replace(" ", "") != python_name or xml_name != python_name:
+            names.append("%s / %s / %s" % (label, xml_name, python_name))
+    check(not names, "%s: panel label, XML name and Python name agree (differing: %s)"
+          % (proxy.SMProxy.GetXMLLabel(), names or "none"))
+    Delete(proxy)
+
+# A trace of creating the filters at their defaults names no property, and one changed property by
+# its one name.
+smtrace.start_trace()
+traced_field = MeshSignedDistance(Input=surface)
+traced_wrap = ShrinkWrap(Input=surface, CacheMemoryLimit=100)
+trace = smtrace.stop_trace()
+check("OutputBounds" not in trace, "a trace of Mesh Signed Distance at its defaults records no Output Bounds")
+check("CacheMemoryLimit = 100" in trace, "a trace records Cache Memory Limit as CacheMemoryLimit")
+check(trace.count("MeshSignedDistance(") == 1 and trace.count("ShrinkWrap(") == 1,
+      "the trace holds both filters (it is not empty)")
+
+# The run summary: the figures of the output's own arrays.
+wrap = wraps[1]
+fd = wrap.GetFieldData()
+d = np.sort(np.abs(array(wrap, "Distance")).astype(np.float64))
+last = len(d) - 1
+expected = [d[int(0.5 * last)], d[int(0.95 * last)], d[-1]]
+given = [fd.GetArray("DistancePercentiles").GetComponent(0, k) for k in range(3)]
+check(np.allclose(given, expected, rtol=0, atol=0), "summary: median, 95%% and largest |Distance| %s equal the "
+      "Distance array's %s" % (given, expected))
+cell = fd.GetArray("FieldCellSize").GetValue(0)
+in_cells = [fd.GetArray("DistancePercentilesInCells").GetComponent(0, k) for k in range(3)]
+check(cell > 0 and np.allclose(in_cells, np.array(expected) / cell, rtol=1e-12),
+      "summary: the same in cells of the field (cell %.4g)" % cell)
+share = float((array(wrap, "MinAngle", cells=True) < 20).mean())
+check(fd.GetArray("SmallAngleShare").GetValue(0) == share,
+      "summary: the share of triangles under 20 degrees equals the MinAngle array's (%.4f)" % share)
+text = fd.GetAbstractArray("Summary").GetValue(0)
+check(("%d vertices" % wrap.GetNumberOfPoints()) in text and "25 steps" in text and
+      "0 self-intersecting" in text and fd.GetArray("SelfIntersections").GetValue(0) == 0,
+      "summary line: " + text)
+
+finish()

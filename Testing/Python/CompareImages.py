@@ -1,4 +1,5 @@
-"""Compares images with baselines: CompareImages.py <max share %> <image> <baseline> [<image> <baseline> ...].
+"""Compares images with baselines: CompareImages.py <max share %> <image> <baseline> [<image> <baseline> ...]
+[--text <file> <line> ...] (then the file must also hold every such line).
 An image fails when it is missing, differs in size, or when more than <max share %> of its pixels differ
 from the baseline by more than 10 (of 255) in some channel. (vtkImageDifference's thresholded error is
 normalised per pixel in this VTK, so a threshold on it hardly ever fails.)"""
@@ -8,7 +9,13 @@ import sys
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 limit = float(sys.argv[1])
-pairs = list(zip(sys.argv[2::2], sys.argv[3::2]))
+arguments = sys.argv[2:]
+lines = []
+if "--text" in arguments:
+    at = arguments.index("--text")
+    text_file, lines = arguments[at + 1], arguments[at + 2:]
+    arguments = arguments[:at]
+pairs = list(zip(arguments[0::2], arguments[1::2]))
 
 
 def pixels(path):
@@ -39,5 +46,9 @@ for image, baseline in pairs:
     ok = share <= limit
     failed += not ok
     print("%s %s: %.2f%% of pixels differ (limit %g%%)" % ("ok  " if ok else "FAIL", os.path.basename(image), share, limit))
-print("%d passed, %d failed" % (len(pairs) - failed, failed))
+for line in lines:
+    held = os.path.exists(text_file) and line in open(text_file).read().splitlines()
+    failed += not held
+    print("%s %s holds '%s'" % ("ok  " if held else "FAIL", os.path.basename(text_file), line))
+print("%d passed, %d failed" % (len(pairs) + len(lines) - failed, failed))
 sys.exit(1 if failed else 0)

@@ -29,7 +29,7 @@ equal = (a.GetNumberOfPoints() > 0 and a.GetNumberOfPoints() == b.GetNumberOfPoi
 differing = [p for p in panel_wrap.ListProperties() if p not in ("DistanceField",) and
              str(panel_wrap.GetPropertyValue(p)) != str(changed.GetPropertyValue(p))]
 with open(os.path.join(out, "result.txt"), "w") as f:
-    f.write("PanelWrap Distance Field: %s\nwrap equals Change Input's: %s (%d and %d vertices)\n"
+    f.write("PanelWrap Distance Field: %s\nwrap equals Change Input's: %s\nvertices: %d and %d\n"
             "properties that differ: %s\n" % (name, equal, a.GetNumberOfPoints(), b.GetNumberOfPoints(),
                                                  differing or "none"))
 subprocess.run(["import", "-window", "root", "-crop", "292x540+0+478", "+repage",

@@ -31,6 +31,7 @@ packages=(
   libx11-dev libgl-dev libice-dev libsm-dev libxcomposite-dev libxfixes-dev libxft-dev libxrender-dev
   libxss-dev libxt-dev
   xvfb xauth                                  # an X server for the rendering and GUI tests, the demo's picture
+  imagemagick                                 # the GUI test's picture of the Properties panel (import)
 )
 bench_packages=(libopenvdb-dev libboost-iostreams-dev libcgal-dev) # the benchmarks' peers: OpenVDB, CGAL
 [ "$mode" = bench ] && packages+=("${bench_packages[@]}")

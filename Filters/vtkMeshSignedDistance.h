@@ -9,9 +9,9 @@
  * distances on a band of nodes around the surface, fast sweeping for the rest, and a flood fill for
  * the sign. Band nodes are signed by angle-weighted pseudonormals.
  *
- * Input: vtkPolyData, any other vtkDataSet with cells (its outer surface, as vtkDataSetSurfaceFilter gives
- * it), or a composite dataset of them (one field of all its meshes). Polygons of any size and triangle strips are triangulated; non-manifold meshes
- * and duplicated points are accepted. Lines and vertices are ignored (with a warning). Coordinates
+ * Input: vtkPolyData, any other vtkDataSet with cells (its outer surface, as vtkDataSetSurfaceFilter
+ * gives it), or a composite dataset of them (one field of all its meshes). Polygons of any size and
+ * triangle strips are triangulated; non-manifold meshes and duplicated points are accepted. Lines and vertices are ignored (with a warning). Coordinates
  * beyond +-1e30 are refused: a float field cannot hold their distances.
  *
  * Output: vtkImageData with the point array "SignedDistance" (float). Field data: "Signed" (1 when the

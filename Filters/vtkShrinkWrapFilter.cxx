@@ -100,7 +100,8 @@ int vtkShrinkWrapFilter::GetNumberOfComputedSteps() const
 
 int vtkShrinkWrapFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkDataSet" : (port == 1 ? "vtkImageData" : "vtkPolyData"));
+  const char* types[] = { "vtkDataSet", "vtkImageData", "vtkPolyData" }; // target, field, start
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), types[std::clamp(port, 0, 2)]);
   if (port > 0)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -176,8 +177,8 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   vtkPolyData* target = input.meshes.empty() ? nullptr : input.meshes[0];
   if (!input.extractedFrom.empty())
   {
-    vtkOutputWindowDisplayText(
-      ("Shrink Wrap: the target (" + input.extractedFrom + ") is wrapped by its outer surface, as Extract Surface gives it.\n").c_str());
+    vtkOutputWindowDisplayText(("Shrink Wrap: the target (" + input.extractedFrom +
+      ") is wrapped by its outer surface, as Extract Surface gives it.\n").c_str());
   }
   vtkPolyData* initial = vtkPolyData::GetData(inputVector[2], 0);
   if (const Status valid = this->CoreSettings().validate(); !valid)

@@ -12,6 +12,7 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -102,6 +103,10 @@ int vtkShrinkWrapFilter::FillInputPortInformation(int port, vtkInformation* info
 {
   const char* types[] = { "vtkDataSet", "vtkImageData", "vtkPolyData" }; // target, field, start
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), types[std::clamp(port, 0, 2)]);
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1); // the target, and maybe its field (TargetAndField)
+  }
   if (port > 0)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -163,17 +168,55 @@ vtkMTimeType vtkShrinkWrapFilter::SessionKey()
   vtkMTimeType key = this->GetMTime();
   for (int port = 0; port < 3; ++port)
   {
-    if (vtkDataObject* data = this->GetInputDataObject(port, 0))
+    for (int c = 0; c < this->GetNumberOfInputConnections(port); ++c)
     {
-      key = std::max(key, data->GetMTime());
+      if (vtkDataObject* data = this->GetInputDataObject(port, c))
+      {
+        key = std::max(key, data->GetMTime());
+      }
     }
   }
   return key;
 }
 
+// Port 0 may hold the target and its distance field together: ParaView connects both there when both
+// are selected as Shrink Wrap is created. An image with a SignedDistance point array is then the field
+// (unless port 1 has one); the rest is the target, one dataset.
+bool vtkShrinkWrapFilter::TargetAndField(vtkInformationVector** inputVector, vtkDataSet*& target, vtkImageData*& field)
+{
+  field = vtkImageData::GetData(inputVector[1], 0);
+  target = nullptr;
+  int targets = 0;
+  for (int c = 0; c < inputVector[0]->GetNumberOfInformationObjects(); ++c)
+  {
+    vtkDataSet* data = vtkDataSet::GetData(inputVector[0], c);
+    auto* image = vtkImageData::SafeDownCast(data);
+    if (image && !field && image->GetPointData()->GetArray("SignedDistance"))
+    {
+      field = image;
+      continue;
+    }
+    target = data;
+    targets += data != nullptr;
+  }
+  if (targets > 1)
+  {
+    vtkErrorMacro("Shrink Wrap wraps one target at a time, and its Input holds " << targets
+                                                                                  << " (besides a distance field).");
+    return false;
+  }
+  return true;
+}
+
 bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
 {
-  const convert::PolygonMeshes input = convert::polygonMeshes(vtkDataSet::GetData(inputVector[0], 0));
+  vtkDataSet* targetData = nullptr;
+  vtkImageData* field = nullptr;
+  if (!this->TargetAndField(inputVector, targetData, field))
+  {
+    return false;
+  }
+  const convert::PolygonMeshes input = convert::polygonMeshes(targetData);
   vtkPolyData* target = input.meshes.empty() ? nullptr : input.meshes[0];
   if (!input.extractedFrom.empty())
   {
@@ -204,7 +247,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     return false;
   }
   WrapFields fields;
-  if (!this->FieldsOf(target, vtkImageData::GetData(inputVector[1], 0), initial != nullptr, settings, fields))
+  if (!this->FieldsOf(target, field, initial != nullptr, settings, fields))
   {
     return false;
   }

@@ -13,7 +13,9 @@
  * resumes from the cache.
  *
  * Inputs: port 0, the target (vtkPolyData with polygons, or any vtkDataSet with cells, wrapped by its
- * outer surface as vtkDataSetSurfaceFilter gives it). Port 1 (optional), "DistanceField": a
+ * outer surface as vtkDataSetSurfaceFilter gives it); it may also hold the target's distance field (an
+ * image with SignedDistance, as when both are selected as the filter is created in ParaView), which
+ * then counts as port 1's. Port 1 (optional), "DistanceField": a
  * vtkImageData with a point array "SignedDistance", e.g. from Mesh Signed Distance; otherwise one is
  * computed with Resolution. Port 2 (optional), "InitialSurface": a closed 2-manifold triangle surface to
  * start from (e.g. a contour of the distance field), first relaxed tangentially for InitialRelaxation
@@ -51,6 +53,7 @@
 
 #include <memory> // for the session
 
+class vtkDataSet;
 class vtkImageData;
 namespace shrinkwrap
 {
@@ -227,8 +230,12 @@ public:
 
   /// Evolution steps computed since the cache was last dropped (for tests and diagnostics).
   int GetNumberOfComputedSteps() const;
-  /// 1 when a DistanceField is connected (port 1): the panel then hides Resolution.
-  int GetHasDistanceField() { return this->GetNumberOfInputConnections(1) > 0; }
+  /// 1 when a distance field is connected (port 1, or beside the target on port 0): the panel then
+  /// hides Resolution.
+  int GetHasDistanceField()
+  {
+    return this->GetNumberOfInputConnections(1) > 0 || this->GetNumberOfInputConnections(0) > 1;
+  }
 
   // An abort is no change of the wrap: unlike vtkAlgorithm's setter it leaves the modification time
   // alone, so the computed steps stay cached and the next request resumes from them.
@@ -286,6 +293,7 @@ private:
   vtkTimeStamp RunAgainTime;
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
+  bool TargetAndField(vtkInformationVector** inputVector, vtkDataSet*& target, vtkImageData*& field);
   bool StartSession(vtkInformationVector** inputVector);
   bool FieldsOf(vtkPolyData* target, vtkImageData* image, bool givenStart, const shrinkwrap::WrapSettings& settings,
     shrinkwrap::WrapFields& fields);

@@ -1,20 +1,21 @@
-"""Run in the GUI's Python shell after the panel events of GuiPanel.xml.in: writes what the panel did
-(PanelWrap's Distance Field, and whether its wrap equals the one connected as Change Input connects
-it) to $SHRINKWRAP_PANEL/result.txt, and the Properties panel as the screen shows it to panel.png
-(ImageMagick's import; the window is 1280 x 1024 at the screen's corner)."""
+"""Run in the GUI's Python shell by the events of GuiPanel.xml.in, with `part` set:
+- "panel", after the panel events: writes what the panel did (PanelWrap's Distance Field, and whether
+  its wrap equals the one connected as Change Input connects it) to $SHRINKWRAP_PANEL/result.txt, and
+  the Properties panel as the screen shows it to panel.png (ImageMagick's import; the window is
+  1280 x 1024 at the screen's corner); then selects the mesh and the field together;
+- "selection", after Shrink Wrap was created from the menu with both selected: appends what the new
+  filter's Input holds and whether its wrap equals Change Input's."""
 import os
 import subprocess
 
 import numpy as np
+from paraview.modules.vtkRemotingServerManager import vtkSMProxyManager, vtkSMProxySelectionModel
 from paraview.simple import FindSource, GetSources
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 out = os.environ["SHRINKWRAP_PANEL"]
+part = globals().get("part", "panel")
 os.makedirs(out, exist_ok=True)
-panel_wrap, changed = FindSource("PanelWrap"), FindSource("ChangedInput")
-connected = panel_wrap.DistanceField
-name = "none" if connected is None else [k for k, v in GetSources().items() if v == connected][0][0]
-
 
 
 def last_step(proxy):
@@ -23,14 +24,36 @@ def last_step(proxy):
     return proxy.GetClientSideObject().GetOutputDataObject(0)
 
 
-a, b = last_step(panel_wrap), last_step(changed)
-equal = (a.GetNumberOfPoints() > 0 and a.GetNumberOfPoints() == b.GetNumberOfPoints() and
-         np.array_equal(vtk_to_numpy(a.GetPoints().GetData()), vtk_to_numpy(b.GetPoints().GetData())))
-differing = [p for p in panel_wrap.ListProperties() if p not in ("DistanceField",) and
-             str(panel_wrap.GetPropertyValue(p)) != str(changed.GetPropertyValue(p))]
-with open(os.path.join(out, "result.txt"), "w") as f:
-    f.write("PanelWrap Distance Field: %s\nwrap equals Change Input's: %s\nvertices: %d and %d\n"
-            "properties that differ: %s\n" % (name, equal, a.GetNumberOfPoints(), b.GetNumberOfPoints(),
-                                                 differing or "none"))
-subprocess.run(["import", "-window", "root", "-crop", "292x540+0+478", "+repage",
-                os.path.join(out, "panel.png")], check=True)
+def same_wrap(a, b):
+    return (a.GetNumberOfPoints() > 0 and a.GetNumberOfPoints() == b.GetNumberOfPoints() and
+            np.array_equal(vtk_to_numpy(a.GetPoints().GetData()), vtk_to_numpy(b.GetPoints().GetData())))
+
+
+def name_of(proxy):
+    return "none" if proxy is None else [k for k, v in GetSources().items() if v == proxy][0][0]
+
+
+changed = FindSource("ChangedInput")
+reference = last_step(changed)
+if part == "panel":
+    panel_wrap = FindSource("PanelWrap")
+    a = last_step(panel_wrap)
+    differing = [p for p in panel_wrap.ListProperties() if p not in ("DistanceField",) and
+                 str(panel_wrap.GetPropertyValue(p)) != str(changed.GetPropertyValue(p))]
+    with open(os.path.join(out, "result.txt"), "w") as f:
+        f.write("PanelWrap Distance Field: %s\nwrap equals Change Input's: %s\nvertices: %d and %d\n"
+                "properties that differ: %s\n" % (name_of(panel_wrap.DistanceField), same_wrap(a, reference),
+                                                     a.GetNumberOfPoints(), reference.GetNumberOfPoints(),
+                                                     differing or "none"))
+    subprocess.run(["import", "-window", "root", "-crop", "292x540+0+478", "+repage",
+                    os.path.join(out, "panel.png")], check=True)
+    model = vtkSMProxyManager.GetProxyManager().GetActiveSessionProxyManager().GetSelectionModel("ActiveSources")
+    model.Select(FindSource("Mesh").SMProxy, vtkSMProxySelectionModel.CLEAR_AND_SELECT)
+    model.Select(FindSource("Field").SMProxy, vtkSMProxySelectionModel.SELECT)
+else:
+    created = FindSource("ShrinkWrap1")
+    inputs = [] if created is None else sorted(name_of(p) for p in created.Input)
+    same = created is not None and same_wrap(last_step(created), reference)
+    with open(os.path.join(out, "result.txt"), "a") as f:
+        f.write("created from the menu with Mesh and Field selected, Input: %s\n"
+                "its wrap equals Change Input's: %s\n" % (", ".join(inputs), same))

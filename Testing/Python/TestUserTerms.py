@@ -1,6 +1,6 @@
 """pvpython test of what issue #12 asks of the filters as a user meets them: any dataset with cells as
 input (an unstructured grid gives the field and the wrap of its outer surface, equal to those of the
-polygons Extract Surface makes of it), one name per property (panel label without spaces = Python
+polygons Extract Surface makes of it), a mesh and its field selected together wired both, one name per property (panel label without spaces = Python
 name = trace name), defaults a trace leaves out, and the run summary equal to the figures of the
 output's own arrays.
 
@@ -51,6 +51,18 @@ for name, creator in (("Mesh Signed Distance", MeshSignedDistance), ("Shrink Wra
     check(proxy.GetProperty("Input").SMProperty.IsInDomains() == 1,
           name + ": an unstructured grid is in the input's domain")
     Delete(proxy)
+
+# The mesh and its field selected together as Shrink Wrap is created: ParaView connects both to Input,
+# and the field counts as the Distance Field.
+field = MeshSignedDistance(Input=surface, Resolution=48)
+both = ShrinkWrap(Input=[surface, field])
+check(both.GetProperty("Input").SMProperty.IsInDomains() == 1, "Shrink Wrap is offered for a mesh and its field")
+together = vtk_to_numpy(fetched(both).GetPoints().GetData())
+apart = vtk_to_numpy(fetched(ShrinkWrap(Input=surface, DistanceField=field)).GetPoints().GetData())
+check(together.shape == apart.shape and np.array_equal(together, apart),
+      "Input = [mesh, field] gives the wrap of Distance Field = field (%d vertices)" % together.shape[0])
+both.UpdatePropertyInformation()
+check(both.GetProperty("HasDistanceField").GetData() == 1, "... and the panel hides Resolution then")
 
 # One name per property: the panel's label without spaces is the XML name is the Python name.
 for creator in (MeshSignedDistance, ShrinkWrap):

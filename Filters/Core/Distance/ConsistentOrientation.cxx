@@ -15,22 +15,13 @@ double area(const TriangleSoup& soup, int t)
   return 0.5 * (b - a).cross(c - a).norm();
 }
 
-// Whether a triangle is too thin for its normal to mean anything (a needle or a cap, as at seams).
-bool degenerate(const TriangleSoup& soup, int t)
-{
-  const auto& tri = soup.triangles[t];
-  const Vec3 &a = soup.points[tri[0]], &b = soup.points[tri[1]], &c = soup.points[tri[2]];
-  const double longest = std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
-  return !((b - a).cross(c - a).norm() > 1e-9 * longest);
-}
-
 // Per triangle, its neighbours across edges shared by exactly two triangles, and whether the two run
 // that edge the same way (then one of them is flipped against the other).
 std::vector<std::vector<std::pair<int, bool>>> manifoldNeighbours(const TriangleSoup& soup)
 {
   // Degenerate triangles have no orientation to pass on: a flip through one would turn everything
   // beyond it.
-  const std::vector<EdgeUse> uses = edgeUses(soup, [&](int t) { return !degenerate(soup, t); });
+  const std::vector<EdgeUse> uses = edgeUses(soup, [&](int t) { return !unitNormal(soup, t).isZero(); });
   std::vector<std::vector<std::pair<int, bool>>> neighbours(soup.triangles.size());
   forEachEdge(uses, [&](std::size_t first, std::size_t last) {
     if (last - first == 2)

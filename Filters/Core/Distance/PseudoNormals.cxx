@@ -28,11 +28,10 @@ PseudoNormals::PseudoNormals(const TriangleSoup& soup)
   {
     const auto& tri = soup.triangles[t];
     const Vec3 &a = soup.points[tri[0]], &b = soup.points[tri[1]], &c = soup.points[tri[2]];
-    const Vec3 n = (b - a).cross(c - a);
-    const double len = n.norm();
-    // Degenerate triangles have no normal and contribute nothing.
-    this->Face[t] = len > 0 ? Vec3(n / len) : Vec3::Zero();
-    if (len > 0)
+    // Degenerate triangles have no normal and contribute nothing: a sliver's rounding-noise normal,
+    // weighted by its corner of 180 degrees, would turn its neighbours' vertex pseudonormals.
+    this->Face[t] = unitNormal(soup, static_cast<int>(t));
+    if (!this->Face[t].isZero())
     {
       vertex[tri[0]] += angleAt(a, b, c) * this->Face[t];
       vertex[tri[1]] += angleAt(b, c, a) * this->Face[t];

@@ -39,6 +39,16 @@ TriangleSoup weldDuplicatePoints(const TriangleSoup& soup)
   return welded;
 }
 
+Vec3 unitNormal(const TriangleSoup& soup, int triangle)
+{
+  const auto& tri = soup.triangles[triangle];
+  const Vec3 &a = soup.points[tri[0]], &b = soup.points[tri[1]], &c = soup.points[tri[2]];
+  const Vec3 n = (b - a).cross(c - a);
+  const double longest = std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
+  const double len = n.norm();
+  return len > 1e-9 * longest ? Vec3(n / len) : Vec3::Zero();
+}
+
 std::vector<EdgeUse> edgeUses(const TriangleSoup& soup, const std::function<bool(int)>& keep)
 {
   std::vector<EdgeUse> uses;

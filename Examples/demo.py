@@ -68,9 +68,9 @@ def show_wrap(reader, wrap, view, h):
 
 
 def shrink_wrap(reader, sdf, out, name, h):
-    """Shrink Wrap with its defaults (its own field, spent on the knot rather than the SDF's large box);
+    """Shrink Wrap with its defaults on the field just computed (its box holds the offset start);
     files, picture and report."""
-    wrap = ShrinkWrap(Input=reader)
+    wrap = ShrinkWrap(Input=reader, DistanceField=sdf)
     tau, steps = wrap.TimeStep, wrap.NumberOfSteps
     start = time.time()
     wrap.UpdatePipeline(steps * tau)
@@ -102,6 +102,7 @@ def shrink_wrap(reader, sdf, out, name, h):
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]
     view.ResetCamera(*reader.GetDataInformation().GetBounds())
+    view.GetActiveCamera().Dolly(1.5)  # the reset frames the bounding sphere: closer, the wrap fills the picture
     png = os.path.join(out, name + "_wrap.png")
     SaveScreenshot(png, view, ImageResolution=[1200, 800])
 

@@ -83,8 +83,10 @@ int vtkMeshSignedDistance::RequestInformation(
     bounds = convert::surfaceBounds(convert::polygonMeshes(producer->GetOutputDataObject(port)).meshes);
   }
   shrinkwrap::GridLattice lattice;
+  this->GridCellSize = 0;
   if (this->ComputeLattice(bounds, lattice))
   {
+    this->GridCellSize = lattice.spacing.maxCoeff();
     const int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
     outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
     outInfo->Set(vtkDataObject::ORIGIN(), lattice.origin.data(), 3);
@@ -252,6 +254,7 @@ void vtkMeshSignedDistance::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "BoxScale: " << this->BoxScale << "\n";
   os << indent << "OffsetFactor: " << this->OffsetFactor << "\n";
+  os << indent << "GridCellSize: " << this->GridCellSize << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "CellSize: " << this->CellSize << "\n";
   os << indent << "UseExplicitGrid: " << this->UseExplicitGrid << "\n";

@@ -69,7 +69,9 @@ public:
   ///@{
   /**
    * The offset o as a multiple of the largest side of the scaled box, added on every side.
-   * Default 1.0 (paper 4.1: o = max side).
+   * Default 0.15: the box is 1.43 times the object, the cells are spent on it, and a Shrink Wrap
+   * reusing the field has room for its offset start. The paper's o (4.1: o = max side) is 1.0, a box
+   * 3.3 times the object, which an icosphere start needs.
    */
   vtkSetMacro(OffsetFactor, double);
   vtkGetMacro(OffsetFactor, double);
@@ -103,6 +105,13 @@ public:
   vtkSetVector3Macro(OutputDimensions, int);
   vtkGetVector3Macro(OutputDimensions, int);
   ///@}
+
+  /**
+   * The cell size h of the grid as placed for the current input and settings, in the input's units
+   * (0 when there is no grid); known once the pipeline's information is updated. Shown in the panel
+   * (Grid Cell Size).
+   */
+  vtkGetMacro(GridCellSize, double);
 
   ///@{
   /**
@@ -150,6 +159,7 @@ protected:
   int SweepMethod;
   int BandLayers;
   bool ComputeSign;
+  double GridCellSize = 0; // of the grid placed in RequestInformation
 
 private:
   // The output lattice: explicit, or placed around the bounds of the input's surface.

@@ -19,10 +19,36 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 vtkStandardNewMacro(vtkShrinkWrapFilter);
 
 using namespace shrinkwrap;
+
+namespace
+{
+// The target among port 0's inputs and the distance field, on port 1 or beside the target on port 0
+// (an image with SignedDistance there); the number of targets found.
+int targetAndField(
+  const std::vector<vtkDataObject*>& port0, vtkImageData* port1, vtkDataObject*& target, vtkImageData*& field)
+{
+  field = port1;
+  target = nullptr;
+  int targets = 0;
+  for (vtkDataObject* data : port0)
+  {
+    auto* image = vtkImageData::SafeDownCast(data);
+    if (image && !field && image->GetPointData()->GetArray("SignedDistance"))
+    {
+      field = image;
+      continue;
+    }
+    target = data;
+    targets += data != nullptr;
+  }
+  return targets;
+}
+} // namespace
 
 vtkShrinkWrapFilter::vtkShrinkWrapFilter()
 {
@@ -129,7 +155,7 @@ int vtkShrinkWrapFilter::ComputePipelineMTime(vtkInformation* request, vtkInform
 }
 
 int vtkShrinkWrapFilter::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // Every evolution step is a time step of the output.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
@@ -143,7 +169,53 @@ int vtkShrinkWrapFilter::RequestInformation(
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), n + 1);
   const double range[2] = { 0.0, n * tau };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  this->FieldCellSize = this->PlannedFieldCell(inputVector);
   return 1;
+}
+
+// ParaView reads information properties after RequestInformation, not after RequestData, so the
+// cell is worked out here from the inputs as they stand (in the GUI the target has been shown by then;
+// an update from here would break the composite executive's block-by-block pass): a connected field's
+// spacing as its pipeline information gives it, or the field placed as FieldsOf will place it. 0
+// while the target has not been computed yet; RequestData then sets the cell of the run.
+double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
+{
+  std::vector<vtkDataObject*> inputs[2];
+  for (int port = 0; port < 2; ++port)
+  {
+    for (int c = 0; c < inputVector[port]->GetNumberOfInformationObjects(); ++c)
+    {
+      inputs[port].push_back(inputVector[port]->GetInformationObject(c)->Get(vtkDataObject::DATA_OBJECT()));
+    }
+  }
+  vtkDataObject* target = nullptr;
+  vtkImageData* field = nullptr;
+  targetAndField(inputs[0], inputs[1].empty() ? nullptr : vtkImageData::SafeDownCast(inputs[1][0]), target, field);
+  if (field)
+  {
+    for (int port = 0; port < 2; ++port)
+    {
+      for (int c = 0; c < inputVector[port]->GetNumberOfInformationObjects(); ++c)
+      {
+        vtkInformation* info = inputVector[port]->GetInformationObject(c);
+        if (info->Get(vtkDataObject::DATA_OBJECT()) == field && info->Has(vtkDataObject::SPACING()))
+        {
+          return info->Get(vtkDataObject::SPACING())[0];
+        }
+      }
+    }
+    return field->GetSpacing()[0];
+  }
+  const convert::PolygonMeshes meshes = convert::polygonMeshes(target);
+  GridLattice lattice;
+  if (meshes.meshes.empty())
+  {
+    return 0;
+  }
+  const Box box = convert::surfaceBounds({ meshes.meshes[0] });
+  const WrapSettings settings = this->CoreSettings().resolved(box);
+  const bool givenStart = this->GetNumberOfInputConnections(2) > 0;
+  return placeGrid(box, settings.fieldPlacement(box, givenStart), lattice) ? lattice.spacing.x() : 0.0;
 }
 
 int vtkShrinkWrapFilter::RequestUpdateExtent(
@@ -184,21 +256,14 @@ vtkMTimeType vtkShrinkWrapFilter::SessionKey()
 // (unless port 1 has one); the rest is the target, one dataset.
 bool vtkShrinkWrapFilter::TargetAndField(vtkInformationVector** inputVector, vtkDataSet*& target, vtkImageData*& field)
 {
-  field = vtkImageData::GetData(inputVector[1], 0);
-  target = nullptr;
-  int targets = 0;
+  std::vector<vtkDataObject*> port0;
   for (int c = 0; c < inputVector[0]->GetNumberOfInformationObjects(); ++c)
   {
-    vtkDataSet* data = vtkDataSet::GetData(inputVector[0], c);
-    auto* image = vtkImageData::SafeDownCast(data);
-    if (image && !field && image->GetPointData()->GetArray("SignedDistance"))
-    {
-      field = image;
-      continue;
-    }
-    target = data;
-    targets += data != nullptr;
+    port0.push_back(vtkDataSet::GetData(inputVector[0], c));
   }
+  vtkDataObject* found = nullptr;
+  const int targets = targetAndField(port0, vtkImageData::GetData(inputVector[1], 0), found, field);
+  target = vtkDataSet::SafeDownCast(found);
   if (targets > 1)
   {
     vtkErrorMacro("Shrink Wrap wraps one target at a time, and its Input holds " << targets
@@ -319,9 +384,7 @@ bool vtkShrinkWrapFilter::FieldsOf(
   }
   else
   {
-    GridPlacement placement;
-    placement.resolution = settings.resolution;
-    placement.offsetFactor = settings.fieldMargin(convert::surfaceBounds({ target }), givenStart);
+    const GridPlacement placement = settings.fieldPlacement(convert::surfaceBounds({ target }), givenStart);
     SignedDistanceResult result;
     SignedDistanceSettings distance;
     distance.windingNumber = settings.closeHoles;
@@ -486,8 +549,9 @@ void vtkShrinkWrapFilter::WriteOutput(int wanted, bool finished, vtkPolyData* ou
                                            << " triangle pairs cross; cell array SelfIntersecting).");
   }
   convert::addStepFields(surface.step, surface.step * this->TimeStep, status, output);
-  const convert::WrapSummary summary = convert::summarize(
-    output, s.fields().driving.grid().lattice().spacing.x(), surface.step, this->ComputeSeconds);
+  this->FieldCellSize = s.fields().driving.grid().lattice().spacing.x();
+  const convert::WrapSummary summary =
+    convert::summarize(output, this->FieldCellSize, surface.step, this->ComputeSeconds);
   convert::addSummary(summary, output);
   if (finished)
   {
@@ -524,4 +588,5 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "CacheMemoryLimit: " << this->CacheMemoryLimit << " MiB\n";
+  os << indent << "FieldCellSize: " << this->FieldCellSize << "\n";
 }

@@ -228,6 +228,12 @@ public:
   vtkGetMacro(CacheMemoryLimit, double);
   ///@}
 
+  /// The cell size of the distance field the wrap moves on (its own, as placed for the target and the
+  /// settings, or the connected one), in the target's units: planned when the pipeline's information
+  /// is updated (0 while the target has not been computed), and the run's once it ran. Shown in the
+  /// panel (Field Cell Size).
+  vtkGetMacro(FieldCellSize, double);
+
   /// Evolution steps computed since the cache was last dropped (for tests and diagnostics).
   int GetNumberOfComputedSteps() const;
   /// 1 when a distance field is connected (port 1, or beside the target on port 0): the panel then
@@ -294,6 +300,8 @@ private:
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
   bool TargetAndField(vtkInformationVector** inputVector, vtkDataSet*& target, vtkImageData*& field);
+  // The cell size of the field the next run will move on (FieldCellSize).
+  double PlannedFieldCell(vtkInformationVector** inputVector);
   bool StartSession(vtkInformationVector** inputVector);
   bool FieldsOf(vtkPolyData* target, vtkImageData* image, bool givenStart, const shrinkwrap::WrapSettings& settings,
     shrinkwrap::WrapFields& fields);
@@ -305,6 +313,7 @@ private:
   std::unique_ptr<shrinkwrap::WrapSession> Current;
   vtkMTimeType CurrentKey = 0;
   double ComputeSeconds = 0; // fields, start and steps of the current session
+  double FieldCellSize = 0;  // planned in RequestInformation, the run's in RequestData
 };
 
 #endif

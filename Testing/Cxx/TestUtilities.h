@@ -78,15 +78,12 @@ inline shrinkwrap::SurfaceMesh meshOf(const shrinkwrap::IndexedTriangles& surfac
   return mesh;
 }
 
-// The cell of the distance field Shrink Wrap computes for a target at a Resolution (the same placement
-// as the filter's, not a restatement of it).
-inline double fieldCell(vtkPolyData* target, int resolution)
+// The cell of the distance field a Shrink Wrap output moved on (its field data FieldCellSize); 0 if
+// the output has none.
+inline double fieldCell(vtkDataObject* wrap)
 {
-  shrinkwrap::GridPlacement placement;
-  placement.resolution = resolution;
-  shrinkwrap::GridLattice lattice;
-  shrinkwrap::placeGrid(shrinkwrap::convert::surfaceBounds({ target }), placement, lattice);
-  return lattice.spacing.maxCoeff();
+  vtkDataArray* cell = wrap->GetFieldData()->GetArray("FieldCellSize");
+  return cell && cell->GetNumberOfTuples() > 0 ? cell->GetTuple1(0) : 0.0;
 }
 
 // A mesh in OFF format (CGAL's data set) as vtkPolyData with its polygons as they are.

@@ -25,8 +25,8 @@ check(menu is not None and menu.GetAttribute("category") == "Shrink Wrap", "list
 
 reader = OpenDataFile(mesh)
 sdf = MeshSignedDistance(Input=reader)
-check(sdf.Resolution == 120 and abs(sdf.BoxScale - 1.1) < 1e-12 and sdf.OffsetFactor == 1.0,
-      "defaults: Resolution 120, BoxScale 1.1 (phi), OffsetFactor 1.0")
+check(sdf.Resolution == 120 and abs(sdf.BoxScale - 1.1) < 1e-12 and sdf.OffsetFactor == 0.15,
+      "defaults: Resolution 120, BoxScale 1.1 (phi), OffsetFactor 0.15")
 sdf.Resolution = 96
 sdf.UpdatePipeline()
 image = servermanager.Fetch(sdf)

@@ -92,7 +92,7 @@ check(data.GetNumberOfPoints() == 642 and data.GetFieldData().GetArray("StepInde
 
 # The Offset Surface start with remeshing (the defaults), by the panel names; against the paper's
 # icosphere with a fixed vertex count.
-offset = ShrinkWrap(Input=reader, StartingShape="Offset Surface", StartOffset=3, GapSize=0, Remeshing=1,
+offset = ShrinkWrap(Input=reader, StartingShape="Offset Surface", StartOffsetInCells=3, GapSize=0, Remeshing=1,
                     TargetEdgeLength=0, NumberOfSteps=40)
 offset.UpdatePipeline(40 * tau)
 _, data = points(offset)

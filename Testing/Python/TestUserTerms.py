@@ -1,8 +1,8 @@
 """pvpython test of what issue #12 asks of the filters as a user meets them: any dataset with cells as
 input (an unstructured grid gives the field and the wrap of its outer surface, equal to those of the
 polygons Extract Surface makes of it), a mesh and its field selected together wired both, one name per property (panel label without spaces = Python
-name = trace name), defaults a trace leaves out, and the run summary equal to the figures of the
-output's own arrays.
+name = trace name), defaults a trace leaves out, the run summary equal to the figures of the
+output's own arrays, and the cell sizes the panels show equal to the grids the runs use.
 
 Usage: pvpython TestUserTerms.py <ShrinkWrap plugin .so> <mesh>
 """
@@ -109,5 +109,24 @@ text = fd.GetAbstractArray("Summary").GetValue(0)
 check(("%d vertices" % wrap.GetNumberOfPoints()) in text and "25 steps" in text and
       "0 self-intersecting" in text and fd.GetArray("SelfIntersections").GetValue(0) == 0,
       "summary line: " + text)
+
+# The cell sizes the panels show (information properties), known before a run: Mesh Signed Distance's
+# grid, and the field Shrink Wrap moves on (its own or the connected one).
+grid = MeshSignedDistance(Input=surface)
+shown_before = grid.GridCellSize
+spacing = fetched(grid).GetSpacing()[0]
+check(shown_before > 0 and shown_before == spacing,
+      "Grid Cell Size shows the output's spacing before the run (%.6g, spacing %.6g)" % (shown_before, spacing))
+own = ShrinkWrap(Input=surface, Resolution=48)
+own.UpdatePipelineInformation()
+shown_before = own.FieldCellSize
+moved_on = fetched(own).GetFieldData().GetArray("FieldCellSize").GetValue(0)
+check(shown_before > 0 and shown_before == moved_on,
+      "Field Cell Size shows the own field's cell before the run (%.6g, the run's %.6g)" % (shown_before, moved_on))
+reused = ShrinkWrap(Input=surface, DistanceField=grid)
+reused.UpdatePipelineInformation()
+check(reused.FieldCellSize == spacing and
+      fetched(reused).GetFieldData().GetArray("FieldCellSize").GetValue(0) == spacing,
+      "with a Distance Field, Field Cell Size is that field's spacing (%.6g)" % reused.FieldCellSize)
 
 finish()

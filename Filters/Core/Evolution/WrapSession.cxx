@@ -60,24 +60,22 @@ WrapSettings WrapSettings::resolved(const Box& targetBox) const
   return s;
 }
 
-double WrapSettings::fieldMargin(const Box& targetBox, bool givenStart) const
+GridPlacement WrapSettings::fieldPlacement(const Box& targetBox, bool givenStart) const
 {
-  const GridPlacement paper;
-  if (givenStart || this->start.shape != StartShape::OffsetSurface)
-  {
-    return paper.offsetFactor;
-  }
-  // Beyond the box scaled by paper.boxScale, o s on every side (s its longest side) must hold the
+  GridPlacement placement;
+  placement.resolution = this->resolution;
+  placement.offsetFactor = kPaperOffsetFactor;
+  // Beyond the box scaled by placement.boxScale, o s on every side (s its longest side) must hold the
   // start's offset, the closing's radius and three cells of room: o s >= (offset + 3) h + gap / 2, with
   // h = s (1 + 2 o) / resolution.
-  const double side = paper.boxScale * targetBox.size().maxCoeff();
+  const double side = placement.boxScale * targetBox.size().maxCoeff();
   const double cells = (this->start.offset + 3) / std::max(this->resolution, 1);
   const double room = 1 - 2 * cells;
-  if (!(side > 0) || !(room > 0))
+  if (!givenStart && this->start.shape == StartShape::OffsetSurface && side > 0 && room > 0)
   {
-    return paper.offsetFactor;
+    placement.offsetFactor = std::min((cells + 0.5 * this->gapSize / side) / room, kPaperOffsetFactor);
   }
-  return std::min((cells + 0.5 * this->gapSize / side) / room, paper.offsetFactor);
+  return placement;
 }
 
 Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const DistanceSource> exact,

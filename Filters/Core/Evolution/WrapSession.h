@@ -52,10 +52,10 @@ struct WrapSettings
   WrapSettings resolved(const Box& targetBox) const;
   // Resolved settings: whether the Target Edge Length is sane for a target of this box.
   Status fits(const Box& targetBox) const;
-  // GridPlacement::offsetFactor of the field computed here: a box just large enough for the offset
-  // start and the gap closing (cells spent on the object), or the paper's for the icosphere or a
-  // given start, which may lie anywhere around the target. Resolved settings.
-  double fieldMargin(const Box& targetBox, bool givenStart) const;
+  // The placement of the field computed here: at the Resolution, in a box just large enough for the
+  // offset start and the gap closing (cells spent on the object), or the paper's for the icosphere or
+  // a given start, which may lie anywhere around the target. Resolved settings.
+  GridPlacement fieldPlacement(const Box& targetBox, bool givenStart) const;
 };
 
 // The distances a wrap moves on.

@@ -73,6 +73,7 @@ int TestMeshSignedDistanceFilter(int, char*[])
   filter->AddObserver(vtkCommand::WarningEvent, observer);
   filter->SetInputData(sphere(32));
   filter->SetResolution(60);
+  filter->SetOffsetFactor(1.0); // the paper's box
   filter->Update();
   vtkImageData* image = filter->GetOutput();
 
@@ -86,6 +87,16 @@ int TestMeshSignedDistanceFilter(int, char*[])
   SW_CHECK(spacing[0] == spacing[1] && spacing[1] == spacing[2], "equal spacing on all axes");
   SW_CHECK(std::abs((bounds[1] - bounds[0]) - 3.3 * 2.0) < 1e-9 * 2.0 + spacing[0],
     "BoxScale 1.1 and OffsetFactor 1 give 3.3 times the mesh extent");
+  {
+    vtkNew<vtkMeshSignedDistance> placed; // the default box: 1.1 x 1.3 = 1.43 times the sphere's
+    placed->SetInputData(sphere(32));
+    placed->SetResolution(60);
+    placed->Update();
+    double b[6];
+    placed->GetOutput()->GetBounds(b);
+    SW_CHECK(std::abs((b[1] - b[0]) - 1.43 * 2.0) < 1e-9 * 2.0 + placed->GetOutput()->GetSpacing()[0],
+      "by default BoxScale 1.1 and OffsetFactor 0.15 give 1.43 times the mesh extent");
+  }
   auto* values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("SignedDistance"));
   SW_CHECK(values != nullptr, "a float point array named SignedDistance");
   SW_CHECK(image->GetPointData()->GetScalars() == values, "SignedDistance is the active scalars");

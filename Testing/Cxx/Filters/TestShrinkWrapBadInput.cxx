@@ -303,6 +303,7 @@ void badDistanceFields()
   vtkNew<vtkMeshSignedDistance> sdf;
   sdf->SetInputData(sphere());
   sdf->SetResolution(24);
+  sdf->SetOffsetFactor(1.0); // the paper's box, which holds the icosphere of wrapOf
   sdf->Update();
   struct Case
   {

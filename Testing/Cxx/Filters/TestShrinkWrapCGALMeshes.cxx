@@ -1,8 +1,8 @@
 // Shrink Wrap on real meshes (CGAL's data set, Debian libcgal-demo) and the paper's "bent chair"
 // (Fig. 3: a deformed cube with holes). From the icosphere without remeshing (the paper's scheme with
 // edge flips and collapses; C = 3, 100 steps) at subdivision levels 3 and 4: no failure, a closed 2-manifold
-// in one piece; on bunny00 and armadillo the median |d| within one cell (of the field at the default
-// Resolution) and fewer than 2% of triangles with a minimum angle below 20 degrees (issue #4's bar;
+// in one piece; on bunny00 and armadillo the median |d| within one cell (of the field the wrap moved on,
+// its FieldCellSize) and fewer than 2% of triangles with a minimum angle below 20 degrees (issue #4's bar;
 // CGAL's alpha wrap at similar vertex counts has 5-17%). The same with D = 0.5. At the defaults (offset
 // start, remeshing, exact near field, gap closing, fronts that stop where they meet; issue #10), on
 // bunny00, armadillo and knot1: no failure, closed, one piece, no self-intersection, the median |d|
@@ -104,7 +104,7 @@ Figures wrap(vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)
   {
     *sampled = testing::evaluateWrap(testing::triangulated(out), *soup);
   }
-  const double h = testing::fieldCell(target, 120);
+  const double h = testing::fieldCell(out);
   std::vector<double> d;
   vtkDataArray* distance = out->GetPointData()->GetArray("Distance");
   for (vtkIdType i = 0; i < distance->GetNumberOfTuples(); ++i)

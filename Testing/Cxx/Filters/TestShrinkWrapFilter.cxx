@@ -145,7 +145,7 @@ void lastStep(vtkShrinkWrapFilter* wrap, vtkPolyData* box)
     d.push_back(std::abs(distance->GetTuple1(i)));
   }
   std::sort(d.begin(), d.end());
-  const double h = testing::fieldCell(box, 64);
+  const double h = testing::fieldCell(out);
   std::printf("after 60 steps: median |d| = %.3f h, 90th percentile %.3f h\n", d[d.size() / 2] / h, d[d.size() * 9 / 10] / h);
   SW_CHECK(d[d.size() / 2] < 2 * h, "the surface approaches the target");
 }
@@ -275,7 +275,7 @@ void distanceFieldPort(vtkPolyData* box, const std::vector<double>& middle)
   shrinkwrap::WrapSettings settings;
   settings.resolution = 64;
   const shrinkwrap::Box bounds = shrinkwrap::convert::boundsOf(box);
-  sdf->SetOffsetFactor(settings.resolved(bounds).fieldMargin(bounds, false));
+  sdf->SetOffsetFactor(settings.resolved(bounds).fieldPlacement(bounds, false).offsetFactor);
   vtkNew<vtkShrinkWrapFilter> withField;
   withField->SetInputData(box);
   withField->SetDistanceFieldConnection(sdf->GetOutputPort());
@@ -404,7 +404,7 @@ void splitSurfaceAsInitialSurface(vtkPolyData* box)
   SignedDistanceResult result;
   GridPlacement placement;
   placement.resolution = 48;
-  placement.offsetFactor = settings.fieldMargin(convert::boundsOf(box), true);
+  placement.offsetFactor = settings.fieldPlacement(convert::boundsOf(box), true).offsetFactor;
   std::shared_ptr<const TriangleSource> exact;
   signedDistanceGrid(soup, convert::surfaceBounds({ box }), placement, {}, field, result, {}, &exact);
   WrapFields fields;

@@ -141,6 +141,7 @@ void wrapsATorusFromAContour()
   vtkNew<vtkMeshSignedDistance> field;
   field->SetInputData(target);
   field->SetResolution(60);
+  field->SetOffsetFactor(1.0); // the paper's box, which holds the icosphere below
   field->Update();
   const double h = field->GetOutput()->GetSpacing()[0];
   vtkNew<vtkContourFilter> contour;

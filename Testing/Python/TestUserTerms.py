@@ -110,6 +110,19 @@ check(("%d vertices" % wrap.GetNumberOfPoints()) in text and "25 steps" in text 
       "0 self-intersecting" in text and fd.GetArray("SelfIntersections").GetValue(0) == 0,
       "summary line: " + text)
 
+# Found by the words users search for: ParaView's quick launch keeps the menu entries whose label holds
+# every typed word, so "sdf" and "distance field" need a label with them; that entry is Mesh Signed
+# Distance itself (same properties, same field).
+alias = DistanceFieldSDFMeshSignedDistance(Input=surface, Resolution=48)
+label = alias.SMProxy.GetXMLLabel().lower()
+check(all(all(word in label for word in search.split()) for search in ("sdf", "distance field", "signed distance")),
+      "a menu entry labelled '%s' holds the words of 'sdf', 'distance field' and 'signed distance'"
+      % alias.SMProxy.GetXMLLabel())
+named = MeshSignedDistance(Input=surface, Resolution=48)
+check(alias.ListProperties() == named.ListProperties() and
+      np.array_equal(array(fetched(alias), "SignedDistance"), array(fetched(named), "SignedDistance")),
+      "... and it is Mesh Signed Distance: the same properties and the same field")
+
 # The cell sizes the panels show (information properties), known before a run: Mesh Signed Distance's
 # grid, and the field Shrink Wrap moves on (its own or the connected one).
 grid = MeshSignedDistance(Input=surface)

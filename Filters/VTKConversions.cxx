@@ -162,6 +162,23 @@ PolygonMeshes polygonMeshes(vtkDataObject* input)
   return found;
 }
 
+std::vector<Vec3> pointsOf(vtkDataObject* input)
+{
+  std::vector<Vec3> points;
+  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
+  {
+    const vtkIdType n = leaf->GetNumberOfPoints();
+    points.reserve(points.size() + n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double p[3];
+      leaf->GetPoint(i, p);
+      points.emplace_back(p[0], p[1], p[2]);
+    }
+  }
+  return points;
+}
+
 TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts)
 {
   TriangleSoup soup;

@@ -37,6 +37,9 @@ struct PolygonMeshes
 };
 PolygonMeshes polygonMeshes(vtkDataObject* input);
 
+// Every point of every leaf of an input, for an input measured as points (issue #13).
+std::vector<Vec3> pointsOf(vtkDataObject* input);
+
 // What a soup was made of besides its triangles.
 struct SoupCounts
 {

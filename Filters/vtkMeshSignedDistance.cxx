@@ -20,6 +20,7 @@
 
 #include <new>
 #include <sstream>
+#include <string>
 
 vtkStandardNewMacro(vtkMeshSignedDistance);
 
@@ -80,7 +81,15 @@ int vtkMeshSignedDistance::RequestInformation(
     vtkAlgorithm* producer = this->GetInputAlgorithm(0, 0);
     const int port = this->GetInputConnection(0, 0)->GetIndex();
     producer->UpdatePiece(0, 1, 0);
-    bounds = convert::surfaceBounds(convert::polygonMeshes(producer->GetOutputDataObject(port)).meshes);
+    vtkDataObject* input = producer->GetOutputDataObject(port);
+    bounds = convert::surfaceBounds(convert::polygonMeshes(input).meshes);
+    if (bounds.empty()) // no polygons: the points (ReadInput)
+    {
+      for (const shrinkwrap::Vec3& p : convert::pointsOf(input))
+      {
+        bounds.extend(p);
+      }
+    }
   }
   shrinkwrap::GridLattice lattice;
   this->GridCellSize = 0;
@@ -157,6 +166,24 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
   const std::vector<vtkPolyData*>& meshes = input.meshes;
   convert::SoupCounts counts;
   soup = convert::soupOf(meshes, counts);
+  if (soup.triangles.empty() && counts.badCells == 0)
+  {
+    // No polygons and no 3-D cells: a point cloud, measured by its points (issue #13).
+    soup.points = convert::pointsOf(data);
+    if (const shrinkwrap::Status status = shrinkwrap::checkPoints(soup.points); !status)
+    {
+      vtkErrorMacro("Cannot measure distances: " << status.message() << ".");
+      return false;
+    }
+    vtkOutputWindowDisplayText(("Mesh Signed Distance: the input has no polygons; the field is the unsigned "
+      "distance to the nearest of its " + std::to_string(soup.points.size()) + " points.\n").c_str());
+    bounds = shrinkwrap::Box();
+    for (const shrinkwrap::Vec3& p : soup.points)
+    {
+      bounds.extend(p);
+    }
+    return true;
+  }
   if (counts.lines > 0 || counts.vertices > 0)
   {
     vtkWarningMacro("Ignoring " << counts.lines << " lines and " << counts.vertices
@@ -207,7 +234,9 @@ bool vtkMeshSignedDistance::Compute(const shrinkwrap::TriangleSoup& soup, const 
       throw std::bad_alloc();
     }
     shrinkwrap::onAllCores([&] {
-      result = shrinkwrap::computeSignedDistance(soup, lattice, settings, values->GetPointer(0), progress);
+      result = soup.triangles.empty() // a point cloud (ReadInput)
+        ? shrinkwrap::computePointDistance(soup.points, lattice, settings, values->GetPointer(0), progress)
+        : shrinkwrap::computeSignedDistance(soup, lattice, settings, values->GetPointer(0), progress);
     });
   }
   catch (const std::bad_alloc&)

@@ -44,7 +44,7 @@ Status placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLatt
   const Vec3 extent = scaled + Vec3::Constant(2 * offset);
   if (!(extent.maxCoeff() > 0))
   {
-    return Status::failure("the mesh has no extent (all its points coincide)");
+    return Status::failure("the input has no extent (all its points coincide)");
   }
   const double h = placement.cellSize > 0 ? placement.cellSize : extent.maxCoeff() / placement.resolution;
   lattice.spacing = Vec3::Constant(h);

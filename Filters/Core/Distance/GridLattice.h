@@ -81,8 +81,8 @@ struct GridPlacement
 {
   double boxScale = 1.1;      // phi: the mesh bounds are scaled by it about their centre
   double offsetFactor = 0.15; // o = offsetFactor * the largest side of the scaled box, added on every side
-  int resolution = 120;      // cells along the longest axis of the whole grid ("120^3" in Table 1)
-  double cellSize = 0;       // > 0 overrides resolution
+  int resolution = 120;       // cells along the longest axis of the whole grid ("120^3" in Table 1)
+  double cellSize = 0;        // > 0 overrides resolution
 };
 
 // Coordinates beyond +-1e30 are refused: distances are stored as float (largest 3.4e38) and their

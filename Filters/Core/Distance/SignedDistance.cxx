@@ -5,6 +5,7 @@
 #include "DistanceBand.h"
 #include "ClosestPointSweep.h"
 #include "EikonalSweep.h"
+#include "PointSource.h"
 #include "SignVotes.h"
 #include "WindingSign.h"
 
@@ -120,7 +121,11 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
       s << "; " << r.reorientedTriangles << " triangles faced against their neighbours and were turned";
     }
   };
-  if (!asked)
+  if (r.points > 0)
+  {
+    s << "unsigned: distances to the nearest of " << r.points << " input points (points have no inside)";
+  }
+  else if (!asked)
   {
     s << "unsigned: ComputeSign is off";
   }
@@ -153,7 +158,7 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
 
 bool signNeedsWarning(const SignedDistanceResult& r, bool asked)
 {
-  return asked && (!r.isSigned || r.signMethod == SignMethod::WindingNumber || r.invertedOrientation);
+  return asked && r.points == 0 && (!r.isSigned || r.signMethod == SignMethod::WindingNumber || r.invertedOrientation);
 }
 
 int workingBytesPerNode(const SignedDistanceSettings& settings)
@@ -277,6 +282,24 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   return result;
 }
 
+SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+{
+  const auto clock = std::chrono::steady_clock::now();
+  const PointSource source(points);
+  const double treeSeconds = secondsSince(clock);
+  SignedDistanceSettings unsignedSettings = settings;
+  unsignedSettings.computeSign = false;
+  SignedDistanceResult result;
+  if (progress.report(0.05))
+  {
+    result = computeSignedDistance(source, lattice, unsignedSettings, distance, progress);
+  }
+  result.treeSeconds = treeSeconds;
+  result.points = static_cast<long long>(points.size());
+  return result;
+}
+
 namespace
 {
 std::string gibibytes(double bytes)
@@ -299,6 +322,23 @@ Status checkSoup(const TriangleSoup& soup)
                            "scale or translate it first");
   if (!(soup.maxTriangleArea() > 0))
     return Status::failure("every triangle of the mesh is degenerate (zero area): there is no surface");
+  return {};
+}
+
+Status checkPoints(const std::vector<Vec3>& points)
+{
+  if (points.empty())
+    return Status::failure("the input has no polygons, no 3-D cells and no points, so nothing to measure from");
+  Box box;
+  for (const Vec3& p : points)
+  {
+    if (!p.allFinite())
+      return Status::failure("the points have NaN or infinite coordinates; fix or remove those points first");
+    box.extend(p);
+  }
+  if (!withinCoordinateRange(box))
+    return Status::failure("the points have coordinates beyond +-1e30, which distances in float cannot hold; "
+                           "scale or translate them first");
   return {};
 }
 

@@ -53,6 +53,7 @@ struct SignedDistanceResult
   long long reorientedTriangles = 0;  // turned to agree with their neighbours (TriangleSource)
   long long unconfirmedTriangles = 0; // inside another part or crossing one (by the winding number)
   long long windingEvaluations = 0;   // nodes whose side the winding number gave
+  long long points = 0;               // > 0: measured from this many input points (unsigned)
   // Seconds per stage.
   double treeSeconds = 0, outlineSeconds = 0, bandSeconds = 0, sweepSeconds = 0, signSeconds = 0;
 };
@@ -77,6 +78,14 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 SignedDistanceResult computeSignedDistance(const TriangleSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
+// The unsigned distance to the nearest of `points` (a scan, sampled points; issue #13): a PointSource
+// through the same band and sweeps; `settings.computeSign` does not apply (points have no inside).
+SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
+
+// Why points have no distance field, if they have none: none at all, or NaN, infinite or out-of-range
+// coordinates.
+Status checkPoints(const std::vector<Vec3>& points);
 
 // Why a soup has no distance field, if it has none: no triangles, NaN or infinite coordinates,
 // coordinates beyond kLargestCoordinate, or only degenerate triangles.

@@ -122,8 +122,14 @@ int TestMeshSignedDistanceBadInput(int, char*[])
   const double inf = std::numeric_limits<double>::infinity();
 
   run("empty polydata", filter, vtkNew<vtkPolyData>(), Expect::ErrorAndEmpty, "no polygons");
-  run("points without cells", filter, mesh(kTetPoints, {}), Expect::ErrorAndEmpty, "no polygons");
-  run("lines only", filter, mesh(kTetPoints, {}, { { 0, 1 }, { 1, 2, 3 } }), Expect::ErrorAndEmpty, "Ignoring 2 lines");
+  // Without polygons the points are measured (issue #13): a cloud, or the points of lines.
+  run("points without cells", filter, mesh(kTetPoints, {}), Expect::ValidOutput, "");
+  run("lines only", filter, mesh(kTetPoints, {}, { { 0, 1 }, { 1, 2, 3 } }), Expect::ValidOutput, "");
+  run("collinear points", filter, mesh({ { 0, 0, 0 }, { 1, 1, 1 }, { 2, 2, 2 } }, {}), Expect::ValidOutput, "");
+  run("coplanar points", filter, mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 } }, {}), Expect::ValidOutput, "");
+  run("one point", filter, mesh({ { 1, 2, 3 } }, {}), Expect::ErrorAndEmpty, "no extent");
+  run("all points equal", filter, mesh({ { 1, 2, 3 }, { 1, 2, 3 }, { 1, 2, 3 } }, {}), Expect::ErrorAndEmpty, "no extent");
+  run("a NaN point", filter, mesh({ { 0, 0, 0 }, { 1, nan, 0 }, { 0, 1, 0 } }, {}), Expect::ErrorAndEmpty, "NaN");
   run("lines beside a closed mesh", filter, mesh(kTetPoints, kTet, { { 0, 1 } }), Expect::ValidOutput, "Ignoring 1 lines");
   run("NaN coordinate", filter, mesh({ { 0, 0, 0 }, { 1, nan, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, kTet),
     Expect::ErrorAndEmpty, "NaN");

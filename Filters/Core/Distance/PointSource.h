@@ -1,0 +1,33 @@
+// A point set as a distance source (DistanceSource.h), for scans and sampled points (issue #13): the
+// distance to the nearest input point, unsigned (points have no sides). Each point is kept as a
+// triangle with three equal corners, so the AABB tree's nearest-triangle query is the nearest-point
+// query and band, sweeps and field come unchanged from Algorithm 1.
+#ifndef ShrinkWrap_PointSource_h
+#define ShrinkWrap_PointSource_h
+
+#include "AABBTree.h"
+#include "DistanceSource.h"
+
+#include <vector>
+
+namespace shrinkwrap
+{
+
+class PointSource : public DistanceSource
+{
+public:
+  explicit PointSource(const std::vector<Vec3>& points);
+  Box bounds() const override { return this->Points.bounds(); }
+  // The cells that hold a point (Algorithm 2's outline reduces to that).
+  bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const override;
+  // The nearest input point; side 0 and not sure: a point has no inside.
+  SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
+
+private:
+  TriangleSoup Points; // one triangle {i, i, i} per point
+  AABBTree Tree;
+};
+
+} // namespace shrinkwrap
+
+#endif

@@ -296,7 +296,8 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   }
   if (!target || target->GetNumberOfPolys() + target->GetNumberOfStrips() == 0)
   {
-    vtkErrorMacro("The target has no polygons to wrap.");
+    vtkErrorMacro("The target has no polygons to wrap (point clouds are not wrapped yet; Mesh Signed Distance "
+                  "measures the distance to their points).");
     return false;
   }
   const Box targetBox = convert::boundsOf(target);

@@ -85,10 +85,7 @@ int vtkMeshSignedDistance::RequestInformation(
     bounds = convert::surfaceBounds(convert::polygonMeshes(input).meshes);
     if (bounds.empty()) // no polygons: the points (ReadInput)
     {
-      for (const shrinkwrap::Vec3& p : convert::pointsOf(input))
-      {
-        bounds.extend(p);
-      }
+      bounds = shrinkwrap::Box::around(convert::pointsOf(input));
     }
   }
   shrinkwrap::GridLattice lattice;
@@ -177,11 +174,7 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
     }
     vtkOutputWindowDisplayText(("Mesh Signed Distance: the input has no polygons; the field is the unsigned "
       "distance to the nearest of its " + std::to_string(soup.points.size()) + " points.\n").c_str());
-    bounds = shrinkwrap::Box();
-    for (const shrinkwrap::Vec3& p : soup.points)
-    {
-      bounds.extend(p);
-    }
+    bounds = shrinkwrap::Box::around(soup.points);
     return true;
   }
   if (counts.lines > 0 || counts.vertices > 0)

@@ -1,6 +1,7 @@
 #include "vtkShrinkWrapFilter.h"
 
 #include "Parallel.h"
+#include "PointSource.h"
 #include "SelfIntersections.h"
 #include "SignedDistance.h"
 #include "VTKConversions.h"
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkShrinkWrapFilter);
@@ -27,6 +29,11 @@ using namespace shrinkwrap;
 
 namespace
 {
+// The automatic Gap Size of a point cloud, in median nearest-neighbour distances: the union of balls of
+// half of it covers the random gaps of a uniform sample (its covering radius is about 3.5 of them for
+// 4,000-20,000 points), so the wrap spans them and enters no hole the sampling left.
+constexpr double kPointGapPerNeighbourDistance = 8;
+
 // The target among port 0's inputs and the distance field, on port 1 or beside the target on port 0
 // (an image with SignedDistance there); the number of targets found.
 int targetAndField(
@@ -47,6 +54,26 @@ int targetAndField(
     targets += data != nullptr;
   }
   return targets;
+}
+
+// The points' unsigned field, computed here, and the fields of a wrap onto them.
+Status pointFields(const std::vector<Vec3>& points, bool givenStart, const WrapSettings& settings, WrapFields& fields)
+{
+  const Box box = Box::around(points);
+  GridLattice lattice;
+  Status status = placeGrid(box, settings.fieldPlacement(box, givenStart), lattice);
+  if (status)
+  {
+    status = checkMemory(lattice, SignedDistanceSettings());
+  }
+  if (!status)
+  {
+    return Status::failure("the points' distance field: " + status.message());
+  }
+  std::vector<float> values(lattice.nodeCount());
+  computePointDistance(points, lattice, SignedDistanceSettings(), values.data());
+  return pointWrapFields(DistanceGrid(lattice, std::move(values)), std::make_shared<const PointSource>(points),
+    settings, convert::contour, fields);
 }
 } // namespace
 
@@ -294,28 +321,59 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     vtkErrorMacro(<< valid.message() << ".");
     return false;
   }
-  if (!target || target->GetNumberOfPolys() + target->GetNumberOfStrips() == 0)
+  const bool hasPolygons = target && target->GetNumberOfPolys() + target->GetNumberOfStrips() > 0;
+  std::vector<Vec3> points;
+  if (!hasPolygons)
   {
-    vtkErrorMacro("The target has no polygons to wrap (point clouds are not wrapped yet; Mesh Signed Distance "
-                  "measures the distance to their points).");
-    return false;
+    // No polygons and no 3-D cells: the target is its points (issue #13).
+    points = convert::pointsOf(targetData);
+    Status ok = checkPoints(points);
+    if (ok)
+    {
+      ok = checkPointsEnclose(points);
+    }
+    if (!ok)
+    {
+      vtkErrorMacro("Cannot wrap: " << ok.message() << ".");
+      return false;
+    }
+    if (field)
+    {
+      vtkErrorMacro("Cannot wrap points on a Distance Field: disconnect it (the wrap computes the points' own).");
+      return false;
+    }
   }
-  const Box targetBox = convert::boundsOf(target);
+  const Box targetBox = hasPolygons ? convert::boundsOf(target) : Box::around(points);
   if (!targetBox.min.allFinite() || !targetBox.max.allFinite())
   {
     vtkErrorMacro("The target has NaN or infinite coordinates.");
     return false;
   }
-  const WrapSettings settings = this->CoreSettings().resolved(targetBox);
+  WrapSettings chosen = this->CoreSettings();
+  if (!hasPolygons && chosen.gapSize <= 0)
+  {
+    chosen.gapSize = kPointGapPerNeighbourDistance * medianNeighbourDistance(points);
+  }
+  const WrapSettings settings = chosen.resolved(targetBox);
   if (const Status fits = settings.fits(targetBox); !fits)
   {
     vtkErrorMacro(<< fits.message() << ".");
     return false;
   }
   WrapFields fields;
-  if (!this->FieldsOf(target, field, initial != nullptr, settings, fields))
+  if (hasPolygons && !this->FieldsOf(target, field, initial != nullptr, settings, fields))
   {
     return false;
+  }
+  if (const Status made = hasPolygons ? Status() : pointFields(points, initial != nullptr, settings, fields); !made)
+  {
+    vtkErrorMacro("Cannot wrap: " << made.message() << ".");
+    return false;
+  }
+  if (!hasPolygons)
+  {
+    vtkOutputWindowDisplayText(("Shrink Wrap: the target has no polygons; its " + std::to_string(points.size()) +
+      " points are wrapped.\n").c_str());
   }
   TriangleSurface given;
   if (initial && !convert::surfaceOf(initial, given))

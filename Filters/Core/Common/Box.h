@@ -26,6 +26,16 @@ struct Box
     this->min = this->min.cwiseMin(b.min);
     this->max = this->max.cwiseMax(b.max);
   }
+  template <typename Points>
+  static Box around(const Points& points) // the bounds of points (empty for none)
+  {
+    Box box;
+    for (const Vec3& p : points)
+    {
+      box.extend(p);
+    }
+    return box;
+  }
   Vec3 size() const { return this->empty() ? Vec3::Zero() : Vec3(this->max - this->min); }
   Vec3 center() const { return 0.5 * (this->min + this->max); }
   double diagonal() const { return this->size().norm(); }

@@ -3,7 +3,12 @@
 #include "Parallel.h"
 #include "StabilityScaling.h"
 
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace shrinkwrap
@@ -92,6 +97,60 @@ Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const Distan
   }
   fields.driving = TargetDistance(std::move(closed), exact, settings.exactBand, isSigned);
   fields.target = TargetDistance(std::move(grid), exact, settings.exactBand, isSigned);
+  return {};
+}
+
+Status checkPointsEnclose(const std::vector<Vec3>& points)
+{
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : points)
+  {
+    mean += p;
+  }
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : points)
+  {
+    covariance += (p - mean) * (p - mean).transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
+  // Extents along the principal axes (ascending eigenvalues: the thinnest first).
+  std::array<double, 3> extent{};
+  for (int a = 0; a < 3; ++a)
+  {
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const Vec3& p : points)
+    {
+      const double t = (p - mean).dot(axes.eigenvectors().col(a));
+      low = std::min(low, t);
+      high = std::max(high, t);
+    }
+    extent[a] = high - low;
+  }
+  const double tolerance = 1e-6 * extent[2];
+  if (!(extent[2] > 0))
+    return Status::failure("all the points coincide, so they enclose nothing to wrap");
+  if (extent[1] <= tolerance)
+    return Status::failure("the points lie on a line, so they enclose nothing to wrap (Mesh Signed Distance "
+                           "measures the distance to them)");
+  if (extent[0] <= tolerance)
+    return Status::failure("the points lie in a plane, so they enclose nothing to wrap (Mesh Signed Distance "
+                           "measures the distance to them)");
+  return {};
+}
+
+Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const DistanceSource> points,
+  const WrapSettings& settings, const Contour& contour, WrapFields& fields)
+{
+  DistanceGrid closed;
+  if (Status status = closingField(grid, 0.5 * settings.gapSize, contour, closed); !status)
+  {
+    return status;
+  }
+  // No exact near field for the driving distance: between the points the closing is a membrane,
+  // which the distance to the nearest point would pull into dimples.
+  fields.driving = TargetDistance(std::move(closed));
+  fields.target = TargetDistance(std::move(grid), settings.exactNearTarget ? points : nullptr, settings.exactBand, false);
   return {};
 }
 

@@ -69,6 +69,15 @@ struct WrapFields
 // itself for the near field; `settings` resolved.
 Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const DistanceSource> exact,
   const WrapSettings& settings, const Contour& contour, WrapFields& fields);
+// The fields of a wrap onto points (issue #13) from their unsigned grid: the wrap is driven by the
+// distance to the points closed by a ball of half the gap size (the union of balls around them,
+// eroded: a surface through the outer points that spans the gaps between them), and its closeness
+// is measured to the points themselves.
+// Why points cannot be wrapped, if they cannot: they coincide, or lie on a line or in a plane (within
+// 1e-6 of their extent), so they enclose nothing. (checkPoints first: finite, not empty.)
+Status checkPointsEnclose(const std::vector<Vec3>& points);
+Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const DistanceSource> points,
+  const WrapSettings& settings, const Contour& contour, WrapFields& fields);
 
 class WrapSession
 {

@@ -34,6 +34,16 @@ namespace
 // 4,000-20,000 points), so the wrap spans them and enters no hole the sampling left.
 constexpr double kPointGapPerNeighbourDistance = 8;
 
+// The settings for a wrap onto points: the automatic Gap Size from their spacing.
+WrapSettings withPointGap(WrapSettings settings, const std::vector<Vec3>& points)
+{
+  if (settings.gapSize <= 0)
+  {
+    settings.gapSize = kPointGapPerNeighbourDistance * medianNeighbourDistance(points);
+  }
+  return settings;
+}
+
 // The target among port 0's inputs and the distance field, on port 1 or beside the target on port 0
 // (an image with SignedDistance there); the number of targets found.
 int targetAndField(
@@ -234,13 +244,20 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
     return field->GetSpacing()[0];
   }
   const convert::PolygonMeshes meshes = convert::polygonMeshes(target);
-  GridLattice lattice;
-  if (meshes.meshes.empty())
+  Box box = meshes.meshes.empty() ? Box() : convert::surfaceBounds({ meshes.meshes[0] });
+  WrapSettings chosen = this->CoreSettings();
+  if (box.empty() && target) // no polygons: the points (StartSession)
   {
-    return 0;
+    const std::vector<Vec3> points = convert::pointsOf(target);
+    if (!checkPoints(points))
+    {
+      return 0;
+    }
+    box = Box::around(points);
+    chosen = withPointGap(chosen, points);
   }
-  const Box box = convert::surfaceBounds({ meshes.meshes[0] });
-  const WrapSettings settings = this->CoreSettings().resolved(box);
+  GridLattice lattice;
+  const WrapSettings settings = chosen.resolved(box);
   const bool givenStart = this->GetNumberOfInputConnections(2) > 0;
   return placeGrid(box, settings.fieldPlacement(box, givenStart), lattice) ? lattice.spacing.x() : 0.0;
 }
@@ -349,12 +366,8 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     vtkErrorMacro("The target has NaN or infinite coordinates.");
     return false;
   }
-  WrapSettings chosen = this->CoreSettings();
-  if (!hasPolygons && chosen.gapSize <= 0)
-  {
-    chosen.gapSize = kPointGapPerNeighbourDistance * medianNeighbourDistance(points);
-  }
-  const WrapSettings settings = chosen.resolved(targetBox);
+  const WrapSettings settings =
+    (hasPolygons ? this->CoreSettings() : withPointGap(this->CoreSettings(), points)).resolved(targetBox);
   if (const Status fits = settings.fits(targetBox); !fits)
   {
     vtkErrorMacro(<< fits.message() << ".");

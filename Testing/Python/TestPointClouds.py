@@ -123,6 +123,17 @@ for name, points, expected_genus, to_shape, diagonal in shapes:
     check(np.allclose(np.abs(distance[:500]), exact, rtol=0, atol=1e-5 * diagonal),
           "%s: the Distance array is the distance to the nearest input point" % name)
 
+# The panel's Field Cell Size for points, before the run (the cloud shown, as in the GUI), is the cell
+# the run moves on.
+shown_cloud = cloud(sphere_points(3000))
+shown_cloud.UpdatePipeline()
+planned = ShrinkWrap(Input=shown_cloud)
+planned.UpdatePipelineInformation()
+shown = planned.FieldCellSize
+planned.UpdatePipeline(planned.NumberOfSteps * planned.TimeStep)
+ran = servermanager.Fetch(planned).GetFieldData().GetArray("FieldCellSize").GetValue(0)
+check(shown > 0 and shown == ran, "Field Cell Size of points before the run: %.6g, the run's: %.6g" % (shown, ran))
+
 # Mesh Signed Distance on the sphere's points: unsigned, and the distance to the nearest point.
 points = sphere_points(500)
 field = servermanager.Fetch(MeshSignedDistance(Input=cloud(points), Resolution=24))

@@ -31,21 +31,29 @@ bool TriangleSource::outline(const GridLattice& lattice, const Progress& progres
   return outlineCells(this->Soup, lattice, progress, cells);
 }
 
+SourcePoint nearestOf(const ClosestHit& hit)
+{
+  SourcePoint p;
+  if (hit.triangle >= 0)
+  {
+    p.found = true;
+    p.squaredDistance = hit.squaredDistance;
+    p.point = hit.point;
+    p.element = hit.triangle;
+  }
+  return p;
+}
+
 SourcePoint TriangleSource::closestPoint(const Vec3& x, double maxSquaredDistance) const
 {
   const ClosestHit hit = this->Tree.closestPoint(x, maxSquaredDistance);
-  SourcePoint p;
-  if (hit.triangle < 0)
+  SourcePoint p = nearestOf(hit);
+  if (p.found)
   {
-    return p;
+    p.normal = this->Normals.at(hit.triangle, hit.feature);
+    p.side = (x - hit.point).dot(p.normal);
+    p.sure = this->Normals.sure(hit.triangle, hit.feature);
   }
-  p.found = true;
-  p.squaredDistance = hit.squaredDistance;
-  p.point = hit.point;
-  p.normal = this->Normals.at(hit.triangle, hit.feature);
-  p.side = (x - hit.point).dot(p.normal);
-  p.element = hit.triangle;
-  p.sure = this->Normals.sure(hit.triangle, hit.feature);
   return p;
 }
 

@@ -37,6 +37,10 @@ struct SourcePoint
   bool sure = true;
 };
 
+// The nearest point of an AABB tree's hit (not found when the tree found nothing); the side, normal
+// and sureness are the source's to add.
+SourcePoint nearestOf(const ClosestHit& hit);
+
 class DistanceSource
 {
 public:

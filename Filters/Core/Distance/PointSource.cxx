@@ -119,17 +119,8 @@ double medianNeighbourDistance(const std::vector<Vec3>& points)
 
 SourcePoint PointSource::closestPoint(const Vec3& x, double maxSquaredDistance) const
 {
-  const ClosestHit hit = this->Tree.closestPoint(x, maxSquaredDistance);
-  SourcePoint p;
-  if (hit.triangle < 0)
-  {
-    return p;
-  }
-  p.found = true;
-  p.squaredDistance = hit.squaredDistance;
-  p.point = hit.point;
-  p.element = hit.triangle;
-  p.sure = false;
+  SourcePoint p = nearestOf(this->Tree.closestPoint(x, maxSquaredDistance));
+  p.sure = false; // a point has no sides
   return p;
 }
 

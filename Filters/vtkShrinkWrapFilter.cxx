@@ -29,21 +29,6 @@ using namespace shrinkwrap;
 
 namespace
 {
-// The automatic Gap Size of a point cloud, in median nearest-neighbour distances: the union of balls of
-// half of it covers the random gaps of a uniform sample (its covering radius is about 3.5 of them for
-// 4,000-20,000 points), so the wrap spans them and enters no hole the sampling left.
-constexpr double kPointGapPerNeighbourDistance = 8;
-
-// The settings for a wrap onto points: the automatic Gap Size from their spacing.
-WrapSettings withPointGap(WrapSettings settings, const std::vector<Vec3>& points)
-{
-  if (settings.gapSize <= 0)
-  {
-    settings.gapSize = kPointGapPerNeighbourDistance * medianNeighbourDistance(points);
-  }
-  return settings;
-}
-
 // The target among port 0's inputs and the distance field, on port 1 or beside the target on port 0
 // (an image with SignedDistance there); the number of targets found.
 int targetAndField(
@@ -67,9 +52,10 @@ int targetAndField(
 }
 
 // The points' unsigned field, computed here, and the fields of a wrap onto them.
-Status pointFields(const std::vector<Vec3>& points, bool givenStart, const WrapSettings& settings, WrapFields& fields)
+Status pointFields(const std::shared_ptr<const PointSource>& points, double spacing, bool givenStart,
+  const WrapSettings& settings, WrapFields& fields)
 {
-  const Box box = Box::around(points);
+  const Box box = points->bounds();
   GridLattice lattice;
   Status status = placeGrid(box, settings.fieldPlacement(box, givenStart), lattice);
   if (status)
@@ -81,8 +67,8 @@ Status pointFields(const std::vector<Vec3>& points, bool givenStart, const WrapS
     return Status::failure("the points' distance field: " + status.message());
   }
   std::vector<float> values(lattice.nodeCount());
-  computePointDistance(points, lattice, SignedDistanceSettings(), values.data());
-  return pointWrapFields(DistanceGrid(lattice, std::move(values)), std::make_shared<const PointSource>(points),
+  computePointDistance(*points, lattice, SignedDistanceSettings(), values.data());
+  return pointWrapFields(DistanceGrid(lattice, std::move(values)), points, spacing,
     settings, convert::contour, fields);
 }
 } // namespace
@@ -243,6 +229,7 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
     }
     return field->GetSpacing()[0];
   }
+  const bool givenStart = this->GetNumberOfInputConnections(2) > 0;
   const convert::PolygonMeshes meshes = convert::polygonMeshes(target);
   Box box = meshes.meshes.empty() ? Box() : convert::surfaceBounds({ meshes.meshes[0] });
   WrapSettings chosen = this->CoreSettings();
@@ -254,11 +241,10 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
       return 0;
     }
     box = Box::around(points);
-    chosen = withPointGap(chosen, points);
+    chosen = withPointSizes(chosen, box, medianNeighbourDistance(points), givenStart);
   }
   GridLattice lattice;
   const WrapSettings settings = chosen.resolved(box);
-  const bool givenStart = this->GetNumberOfInputConnections(2) > 0;
   return placeGrid(box, settings.fieldPlacement(box, givenStart), lattice) ? lattice.spacing.x() : 0.0;
 }
 
@@ -366,8 +352,10 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     vtkErrorMacro("The target has NaN or infinite coordinates.");
     return false;
   }
-  const WrapSettings settings =
-    (hasPolygons ? this->CoreSettings() : withPointGap(this->CoreSettings(), points)).resolved(targetBox);
+  const double spacing = hasPolygons ? 0.0 : medianNeighbourDistance(points);
+  const WrapSettings settings = (hasPolygons ? this->CoreSettings()
+                                             : withPointSizes(this->CoreSettings(), targetBox, spacing, initial != nullptr))
+                                  .resolved(targetBox);
   if (const Status fits = settings.fits(targetBox); !fits)
   {
     vtkErrorMacro(<< fits.message() << ".");
@@ -378,7 +366,10 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   {
     return false;
   }
-  if (const Status made = hasPolygons ? Status() : pointFields(points, initial != nullptr, settings, fields); !made)
+  if (const Status made = hasPolygons
+        ? Status()
+        : pointFields(std::make_shared<const PointSource>(points), spacing, initial != nullptr, settings, fields);
+      !made)
   {
     vtkErrorMacro("Cannot wrap: " << made.message() << ".");
     return false;

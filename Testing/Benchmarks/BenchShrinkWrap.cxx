@@ -1,6 +1,7 @@
 // Shrink Wrap beside CGAL's alpha_wrap_3 in one run, on CGAL meshes with thin parts, fingers and legs,
 // holes, an open mesh and CAD parts with sharp edges (issue #10).
 //   BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b,...] [--set Name=value ...]
+//     [--points N [--noise percent]]  (issue #13: N points sampled on each mesh wrapped instead)
 // Ours: the defaults, and Target Edge Length diagonal / 25 and / 100 (the field's Resolution follows
 // L, so that a cell stays below L); the time includes the distance field. CGAL: alpha = diagonal / 20,
 // / 50, / 100, offset = alpha / 30 (CGAL's examples). Every wrap is judged the same way
@@ -20,10 +21,15 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/alpha_wrap_3.h>
 
+#include <vtkCellArray.h>
+#include <vtkContourFilter.h>
+#include <vtkPoints.h>
 #include <vtkStringArray.h>
+#include <vtkSurfaceReconstructionFilter.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <chrono>
+#include <random>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -115,6 +121,99 @@ void row(const std::string& method, double time, const TriangleSoup& wrap, const
 }
 
 using Setter = std::function<void(vtkShrinkWrapFilter*, double)>;
+const std::map<std::string, Setter>& setters();
+
+// Points sampled uniformly by area on the target (seeded), with Gaussian noise of `noise` % of the
+// diagonal, wrapped by ours at its defaults, alpha_wrap_3 on the same points (alpha = diagonal / 20,
+// / 50, / 100, offset alpha / 30) and VTK's vtkSurfaceReconstructionFilter + contour at 0; every wrap
+// judged against the original mesh (the truth). With `out`, the cloud and the wraps (ours, alpha
+// diag/50) are written as <out>_target.vtp, <out>_shrinkwrap.vtp, <out>_alphawrap_50.vtp.
+void cloudRows(const TriangleSoup& target, int count, double noise, const std::vector<std::pair<std::string, double>>& sets,
+  const std::string& out)
+{
+  const double diagonal = target.bounds().diagonal();
+  std::vector<Vec3> cloud = testing::samplePoints(target, count, 7);
+  cloud.erase(cloud.begin(), cloud.begin() + static_cast<std::ptrdiff_t>(target.points.size())); // samples only
+  std::mt19937_64 random(11);
+  std::normal_distribution<double> gauss(0, noise / 100 * diagonal);
+  for (Vec3& p : cloud)
+  {
+    p += noise > 0 ? Vec3(gauss(random), gauss(random), gauss(random)) : Vec3::Zero();
+  }
+  std::printf("(%d points, noise %.2f%% of the diagonal)\n", count, noise);
+  vtkNew<vtkPoints> points;
+  for (const Vec3& p : cloud)
+  {
+    points->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkPolyData> input;
+  input->SetPoints(points);
+  if (!out.empty())
+  {
+    vtkNew<vtkPolyData> shown; // the cloud with a vertex per point, so that ParaView draws it
+    shown->SetPoints(points);
+    vtkNew<vtkCellArray> vertices;
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      vertices->InsertNextCell(1, &i);
+    }
+    shown->SetVerts(vertices);
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(shown);
+    writer->SetFileName((out + "_target.vtp").c_str());
+    writer->SetDataModeToBinary();
+    writer->Write();
+  }
+  {
+    vtkNew<vtkShrinkWrapFilter> wrap;
+    wrap->SetInputData(input);
+    for (const auto& s : sets)
+    {
+      setters().at(s.first)(wrap, s.second);
+    }
+    const auto start = Clock::now();
+    wrap->Update();
+    const double total = seconds(start);
+    auto* status = vtkStringArray::SafeDownCast(wrap->GetOutput()->GetFieldData()->GetAbstractArray("Status"));
+    const TriangleSoup soup = testing::triangulated(wrap->GetOutput());
+    row("Shrink Wrap, defaults", total, soup, target, status ? status->GetValue(0) : "none");
+    if (!out.empty())
+    {
+      write(soup, out + "_shrinkwrap.vtp");
+    }
+  }
+  std::vector<Point> cgalPoints;
+  for (const Vec3& p : cloud)
+  {
+    cgalPoints.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (const int divisor : { 20, 50, 100 })
+  {
+    const double alpha = diagonal / divisor, offset = alpha / 30;
+    CgalMesh wrapped;
+    const auto start = Clock::now();
+    CGAL::alpha_wrap_3(cgalPoints, alpha, offset, wrapped);
+    const double total = seconds(start);
+    row("alpha_wrap_3 diag/" + std::to_string(divisor), total, soupOf(wrapped), target, "ok");
+    if (!out.empty() && divisor == 50)
+    {
+      write(soupOf(wrapped), out + "_alphawrap_50.vtp");
+    }
+  }
+  {
+    vtkNew<vtkSurfaceReconstructionFilter> reconstruction;
+    reconstruction->SetInputData(input);
+    vtkNew<vtkContourFilter> contour;
+    contour->SetInputConnection(reconstruction->GetOutputPort());
+    contour->SetValue(0, 0.0);
+    const auto start = Clock::now();
+    contour->Update();
+    const double total = seconds(start);
+    // The reconstruction's grid is in its own index space scaled to the points' bounds: the contour is
+    // already in the input's coordinates (vtkSurfaceReconstructionFilter sets origin and spacing).
+    row("vtkSurfaceReconstructionFilter + contour", total, testing::triangulated(contour->GetOutput()), target, "ok");
+  }
+}
 const std::map<std::string, Setter>& setters()
 {
   static const std::map<std::string, Setter> s = {
@@ -152,6 +251,8 @@ int main(int argc, char* argv[])
   std::vector<std::pair<std::string, double>> sets;
   bool ourVariants = true;
   bool timeOnly = false;
+  int cloudSize = 0;  // --points: wrap this many points sampled on each mesh instead of the mesh (issue #13)
+  double noise = 0;   // --noise: Gaussian noise on them, in % of the diagonal
   for (int a = 2; a < argc; ++a)
   {
     const std::string arg = argv[a];
@@ -178,6 +279,14 @@ int main(int argc, char* argv[])
         return 2;
       }
       sets.emplace_back(s.substr(0, eq), std::stod(s.substr(eq + 1)));
+    }
+    else if (arg == "--points" && a + 1 < argc)
+    {
+      cloudSize = std::atoi(argv[++a]);
+    }
+    else if (arg == "--noise" && a + 1 < argc)
+    {
+      noise = std::stod(argv[++a]);
     }
     else if (arg == "--defaults-only")
     {
@@ -211,6 +320,11 @@ int main(int argc, char* argv[])
     {
       std::printf("\n%s: %zu triangles, distances in %% of the diagonal %.4g\n\n", name.c_str(), target.triangles.size(), diagonal);
       header();
+    }
+    if (cloudSize > 0)
+    {
+      cloudRows(target, cloudSize, noise, sets, out.empty() ? out : out + "/" + name + "_points");
+      continue;
     }
 
     // Ours: the defaults, then two other target edge lengths.

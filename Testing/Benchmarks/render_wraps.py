@@ -1,5 +1,5 @@
-"""Renders a target mesh, its Shrink Wrap at the defaults and CGAL's alpha wrap (diag/50) side by side,
-edges shown, as the benchmark writes them (<name>_target.vtp, <name>_shrinkwrap.vtp,
+"""Renders a target mesh (or point cloud), its Shrink Wrap at the defaults and CGAL's alpha wrap
+(diag/50) side by side, edges shown, as the benchmark writes them (<name>_target.vtp, <name>_shrinkwrap.vtp,
 <name>_alphawrap_50.vtp).
 Usage: Testing/run-with-x.sh pvbatch render_wraps.py <folder> <name> <out.png> [view direction x,y,z] [view up x,y,z]"""
 import os
@@ -25,8 +25,16 @@ for i, (file, title) in enumerate(panels):
     view.OrientationAxesVisibility = 0
     view.Background = [1, 1, 1]
     view.UseColorPaletteForBackground = 0
-    shown = Show(XMLPolyDataReader(FileName=[os.path.join(folder, file)]), view)
-    shown.SetRepresentationType("Surface With Edges")
+    reader = XMLPolyDataReader(FileName=[os.path.join(folder, file)])
+    reader.UpdatePipeline()
+    shown = Show(reader, view)
+    if reader.GetDataInformation().GetNumberOfCells() == reader.GetDataInformation().GetNumberOfPoints():
+        # a point cloud (BenchShrinkWrap --points): its vertices
+        shown.SetRepresentationType("Points")
+        shown.PointSize = 2
+        title = title.replace("(target)", "(points)")
+    else:
+        shown.SetRepresentationType("Surface With Edges")
     shown.AmbientColor = shown.DiffuseColor = [0.85, 0.85, 0.8]
     shown.EdgeColor = [0.2, 0.2, 0.5]
     label = Show(Text(Text=title), view)

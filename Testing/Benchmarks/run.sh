@@ -47,3 +47,25 @@ mkdir -p "$build/wraps"
 "$build/bin/BenchShrinkWrap" "$build/cgal/data/meshes" --out "$build/wraps" 2>/dev/null
 "$(dirname "$0")/../run-with-x.sh" pvbatch "$(dirname "$0")/render_wraps.py" "$build/wraps" camel "$build/wraps/wraps_camel.png" 1,0,0 >/dev/null 2>&1 &&
   echo "Picture of the camel, its wrap and alpha wrap's: $build/wraps/wraps_camel.png"
+
+echo
+echo "## Shrink Wrap onto points beside alpha_wrap_3 and vtkSurfaceReconstructionFilter, $(date -u +%Y-%m-%d)"
+echo
+echo "Points sampled uniformly by area on five CGAL meshes (20,000 and 200,000; without and with Gaussian"
+echo "noise of 0.25% of the diagonal), wrapped by Shrink Wrap at its defaults, by alpha_wrap_3 on the same"
+echo "points (alpha = diagonal / 20, / 50, / 100, offset alpha / 30) and by vtkSurfaceReconstructionFilter +"
+echo "Contour at 0, same run; every wrap judged against the original mesh (the truth) as above."
+clouds=camel,hand,ChineseDragon-10kv,mech-holes-shark,armadillo
+for count in 20000 200000; do
+  for noise in 0 0.25; do
+    echo
+    echo "### $count points, noise $noise% of the diagonal"
+    "$build/bin/BenchShrinkWrap" "$build/cgal/data/meshes" --meshes "$clouds" --points "$count" --noise "$noise" \
+      --out "$build/wraps" 2>/dev/null
+    if [ "$count" = 20000 ] && [ "$noise" = 0 ]; then
+      "$(dirname "$0")/../run-with-x.sh" pvbatch "$(dirname "$0")/render_wraps.py" "$build/wraps" camel_points \
+        "$build/wraps/wraps_camel_points.png" 1,0,0 >/dev/null 2>&1 &&
+        echo "Picture of the camel's points, their wrap and alpha wrap's: $build/wraps/wraps_camel_points.png"
+    fi
+  done
+done

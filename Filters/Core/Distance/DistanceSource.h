@@ -35,6 +35,9 @@ struct SourcePoint
   // false where `side` may be wrong: the nearest point lies on an edge or corner of a hole's rim or of
   // an edge with more than two triangles, or on a triangle without a normal
   bool sure = true;
+  // How far a caller may trust this point over its own estimate, 0 to 1 (below 1 where a fitted
+  // surface fades out, PointSurface.h), so that switching between them leaves no step.
+  double trust = 1;
 };
 
 // The nearest point of an AABB tree's hit (not found when the tree found nothing); the side, normal

@@ -1,5 +1,7 @@
 #include "PointSource.h"
 
+#include "PointGrid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <array>
@@ -59,62 +61,33 @@ bool PointSource::outline(const GridLattice& lattice, const Progress& progress, 
 
 double medianNeighbourDistance(const std::vector<Vec3>& points)
 {
-  const Box box = Box::around(points);
   const std::size_t n = points.size();
-  const Vec3 size = box.size();
+  const Vec3 size = Box::around(points).size();
   if (n < 2 || !(size.maxCoeff() > 0))
   {
     return 0;
   }
-  // Cells of about one point each if the points filled the box; a surface's points are sparser there.
+  // Bins of about one point each if the points filled the box; a surface's points are sparser there.
   const Vec3 sides = size.cwiseMax(1e-3 * size.maxCoeff());
   const double cell = std::cbrt(sides.prod() / static_cast<double>(n));
-  const auto cellOf = [&](const Vec3& p) {
-    std::array<std::int64_t, 3> c;
-    for (int a = 0; a < 3; ++a)
-    {
-      c[a] = static_cast<std::int64_t>(std::floor((p[a] - box.min[a]) / cell));
-    }
-    return c;
-  };
-  const auto key = [](const std::array<std::int64_t, 3>& c) { return (c[0] << 42) ^ (c[1] << 21) ^ c[2]; };
-  std::vector<std::pair<std::int64_t, int>> order(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    order[i] = { key(cellOf(points[i])), static_cast<int>(i) };
-  }
-  std::sort(order.begin(), order.end());
-  std::vector<double> nearest;
   const std::size_t stride = std::max<std::size_t>(1, n / 20000);
-  for (std::size_t i = 0; i < n; i += stride)
+  // Points with no neighbour within the radius count as infinitely far, so the median is exact once
+  // it is finite: flat or thin clouds (sparser than the box suggests) need a wider radius.
+  for (double radius = cell; radius <= 64 * cell; radius *= 4)
   {
-    const auto c = cellOf(points[i]);
-    double best = std::numeric_limits<double>::infinity();
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-        {
-          const std::int64_t k = key({ c[0] + dx, c[1] + dy, c[2] + dz });
-          auto it = std::lower_bound(order.begin(), order.end(), std::make_pair(k, -1));
-          for (; it != order.end() && it->first == k; ++it)
-          {
-            if (it->second != static_cast<int>(i))
-            {
-              best = std::min(best, (points[it->second] - points[i]).squaredNorm());
-            }
-          }
-        }
-    if (best < std::numeric_limits<double>::infinity())
+    const PointGrid grid(points, radius);
+    std::vector<double> nearest;
+    for (std::size_t i = 0; i < n; i += stride)
     {
-      nearest.push_back(std::sqrt(best));
+      nearest.push_back(grid.neighbourDistance(static_cast<int>(i), radius));
+    }
+    std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
+    if (const double median = nearest[nearest.size() / 2]; median < std::numeric_limits<double>::infinity())
+    {
+      return median;
     }
   }
-  if (nearest.empty())
-  {
-    return 0;
-  }
-  std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
-  return nearest[nearest.size() / 2];
+  return 0;
 }
 
 SourcePoint PointSource::closestPoint(const Vec3& x, double maxSquaredDistance) const

@@ -22,6 +22,7 @@ public:
   bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const override;
   // The nearest input point; side 0 and not sure: a point has no inside.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
+  const std::vector<Vec3>& points() const { return this->Points.points; }
 
 private:
   TriangleSoup Points; // one triangle {i, i, i} per point

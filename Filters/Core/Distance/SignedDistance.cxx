@@ -288,6 +288,14 @@ SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const
   const auto clock = std::chrono::steady_clock::now();
   const PointSource source(points);
   const double treeSeconds = secondsSince(clock);
+  SignedDistanceResult result = computePointDistance(source, lattice, settings, distance, progress);
+  result.treeSeconds = treeSeconds;
+  return result;
+}
+
+SignedDistanceResult computePointDistance(const PointSource& source, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+{
   SignedDistanceSettings unsignedSettings = settings;
   unsignedSettings.computeSign = false;
   SignedDistanceResult result;
@@ -295,8 +303,7 @@ SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const
   {
     result = computeSignedDistance(source, lattice, unsignedSettings, distance, progress);
   }
-  result.treeSeconds = treeSeconds;
-  result.points = static_cast<long long>(points.size());
+  result.points = static_cast<long long>(source.points().size());
   return result;
 }
 

@@ -5,6 +5,7 @@
 #include "DistanceGrid.h"
 #include "DistanceSource.h"
 #include "GridLattice.h"
+#include "PointSource.h"
 #include "Progress.h"
 #include "Status.h"
 #include "TriangleSoup.h"
@@ -81,6 +82,8 @@ SignedDistanceResult computeSignedDistance(const TriangleSource& source, const G
 // The unsigned distance to the nearest of `points` (a scan, sampled points; issue #13): a PointSource
 // through the same band and sweeps; `settings.computeSign` does not apply (points have no inside).
 SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
+SignedDistanceResult computePointDistance(const PointSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 
 // Why points have no distance field, if they have none: none at all, or NaN, infinite or out-of-range

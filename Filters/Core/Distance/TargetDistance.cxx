@@ -32,16 +32,21 @@ DistanceSample TargetDistance::sample(const Vec3& x) const
   }
   const double distance = std::sqrt(p.squaredDistance);
   // The side: the grid's sign where it is clear (its votes survive a dirty target), the target's
-  // pseudonormal at the closest point within half a cell of it.
+  // pseudonormal at the closest point within half a cell of it; a source without sides (a point
+  // set's fitted surface) is oriented by the grid's gradient.
   double sign = 1;
-  if (this->Signed)
+  if (this->Signed && p.side == 0)
+  {
+    sign = (x - p.point).dot(far.gradient) < 0 ? -1.0 : 1.0;
+  }
+  else if (this->Signed)
   {
     sign = std::abs(far.value) > 0.5 * this->Cell ? (far.value < 0 ? -1.0 : 1.0) : (p.side < 0 ? -1.0 : 1.0);
   }
   DistanceSample near;
   near.value = sign * distance;
   near.gradient = distance > 1e-9 * this->Cell ? Vec3(sign * (x - p.point) / distance) : far.gradient;
-  const double w = std::clamp((reach - std::abs(far.value)) / this->Cell, 0.0, 1.0);
+  const double w = std::clamp((reach - std::abs(far.value)) / this->Cell, 0.0, 1.0) * std::clamp(p.trust, 0.0, 1.0);
   if (w >= 1)
   {
     return near;

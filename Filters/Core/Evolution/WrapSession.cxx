@@ -1,6 +1,8 @@
 #include "WrapSession.h"
 
+#include "Components.h"
 #include "Parallel.h"
+#include "PointSurface.h"
 #include "StabilityScaling.h"
 
 #include <Eigen/Eigenvalues>
@@ -13,6 +15,27 @@
 
 namespace shrinkwrap
 {
+
+namespace
+{
+// The width of the weights of a point set's fitted surface, in median neighbour distances: wide
+// enough to average a few rings of neighbours, narrow enough that curvature biases the fit little.
+constexpr double kFitWidthPerSpacing = 3;
+// The automatic Gap Size of a point cloud, in median nearest-neighbour distances: the union of balls of
+// half of it covers the random gaps of a uniform sample (its covering radius is about 3.5 of them for
+// 4,000-200,000 points), so the wrap spans them and enters no hole the sampling left.
+constexpr double kPointGapPerNeighbourDistance = 8;
+// ... and in cells of the field at least: a closing by a ball below a cell or so is lost in the grid's
+// interpolation, and the wrap then meets sub-cell tunnels in it (handles the points do not have).
+constexpr double kMinPointGapCells = 2.5;
+// The automatic Target Edge Length of a point cloud, in median neighbour distances: a triangle then
+// spans a few dozen points, the detail their fitted surface holds; never coarser than a mesh's
+// automatic length (diagonal / kLengthDivisor), nor finer than diagonal / kMaxPointLengthDivisor.
+// Measured on CGAL meshes sampled with 20,000 and 200,000 points (RESULTS.md): diagonal / 50 and about
+// diagonal / 100.
+constexpr double kPointEdgePerNeighbourDistance = 10;
+constexpr double kMaxPointLengthDivisor = 200;
+} // namespace
 
 Status WrapSettings::validate() const
 {
@@ -139,18 +162,62 @@ Status checkPointsEnclose(const std::vector<Vec3>& points)
   return {};
 }
 
-Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const DistanceSource> points,
+WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacing, bool givenStart)
+{
+  if (settings.targetLength <= 0 && spacing > 0)
+  {
+    const double diagonal = box.diagonal();
+    settings.targetLength =
+      std::clamp(kPointEdgePerNeighbourDistance * spacing, diagonal / kMaxPointLengthDivisor, diagonal / WrapSettings::kLengthDivisor);
+  }
+  if (settings.gapSize > 0)
+  {
+    return settings;
+  }
+  const double spacingGap = kPointGapPerNeighbourDistance * spacing;
+  settings.gapSize = spacingGap;
+  // The cell depends on the gap (the box holds the closing): twice round settles it.
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    GridLattice lattice;
+    if (!placeGrid(box, settings.resolved(box).fieldPlacement(box, givenStart), lattice))
+    {
+      break;
+    }
+    settings.gapSize = std::max(spacingGap, kMinPointGapCells * lattice.spacing.maxCoeff());
+  }
+  return settings;
+}
+
+Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> points, double spacing,
   const WrapSettings& settings, const Contour& contour, WrapFields& fields)
 {
+  // Points sample a sheet: the union of balls around them is a shell, and a closing that eroded it
+  // from the inside as well would open every gap between the points again. Without the walls of its
+  // cavities it is a solid, eroded from outside only.
+  const Contour outerContour = [&contour](const DistanceGrid& field, double value) {
+    TriangleSurface surface = contour(field, value);
+    removeCavities(surface);
+    return surface;
+  };
   DistanceGrid closed;
-  if (Status status = closingField(grid, 0.5 * settings.gapSize, contour, closed); !status)
+  if (Status status = closingField(grid, 0.5 * settings.gapSize, outerContour, closed); !status)
   {
     return status;
   }
-  // No exact near field for the driving distance: between the points the closing is a membrane,
-  // which the distance to the nearest point would pull into dimples.
-  fields.driving = TargetDistance(std::move(closed));
-  fields.target = TargetDistance(std::move(grid), settings.exactNearTarget ? points : nullptr, settings.exactBand, false);
+  // The near field of the driving distance: the points' fitted surface, not the nearest point (which
+  // would pull the closing's membranes between the points into dimples).
+  std::shared_ptr<const DistanceSource> surface;
+  if (settings.exactNearTarget)
+  {
+    surface = std::make_shared<const PointSurface>(points, kFitWidthPerSpacing * spacing);
+  }
+  fields.driving = TargetDistance(std::move(closed), surface, settings.exactBand, true);
+  // The wrap lies within half the gap of a point (inside the union of balls the closing erodes): a band
+  // that wide makes the Distance array exact at every vertex.
+  const double cell = grid.lattice().spacing.maxCoeff();
+  const double band = std::max(settings.exactBand, 0.5 * settings.gapSize / cell + 1);
+  fields.target = TargetDistance(std::move(grid), settings.exactNearTarget ? points : nullptr, band, false);
   return {};
 }
 

@@ -5,6 +5,7 @@
 #define ShrinkWrap_WrapSession_h
 
 #include "Evolver.h"
+#include "PointSource.h"
 #include "StartingSurface.h"
 #include "StepCache.h"
 
@@ -76,7 +77,12 @@ Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const Distan
 // Why points cannot be wrapped, if they cannot: they coincide, or lie on a line or in a plane (within
 // 1e-6 of their extent), so they enclose nothing. (checkPoints first: finite, not empty.)
 Status checkPointsEnclose(const std::vector<Vec3>& points);
-Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const DistanceSource> points,
+// Settings for a wrap onto points within `box` whose median neighbour distance is `spacing`
+// (medianNeighbourDistance): the automatic sizes (0) from the spacing: the Target Edge Length, and the
+// Gap Size, at least a few cells of the field computed for them (placed with `givenStart`) so that the
+// grid resolves the closing.
+WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacing, bool givenStart);
+Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> points, double spacing,
   const WrapSettings& settings, const Contour& contour, WrapFields& fields);
 
 class WrapSession

@@ -1,0 +1,60 @@
+// The surface a point set samples, for the near field of a wrap onto points (issue #13; TargetDistance.h).
+// Near x: the plane fitted to the points around x's nearest point (centroid and covariance, Gaussian
+// weights of width h), fitted again about x's foot on it, and over that plane a quadratic height field
+// (moving least squares). Driven by the distance to the nearest point, a wrap dimples towards every
+// point; driven by this it lands between them on the sampled surface, and averages noise over a
+// neighbourhood instead of following it. Where no plane fits, nothing is found and the caller's grid
+// decides: no points or no flat neighbourhood around the foot (a part thinner than h), or points on
+// one side of it only (a gap's rim), which fades the answer's trust out.
+#ifndef ShrinkWrap_PointSurface_h
+#define ShrinkWrap_PointSurface_h
+
+#include "PointGrid.h"
+#include "PointSource.h"
+
+#include <memory>
+
+namespace shrinkwrap
+{
+
+class PointSurface : public DistanceSource
+{
+public:
+  // `width`: h, the weights' width (a small multiple of the points' spacing).
+  PointSurface(std::shared_ptr<const PointSource> points, double width);
+  Box bounds() const override { return this->Points->bounds(); }
+  bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const override
+  {
+    return this->Points->outline(lattice, progress, cells);
+  }
+  // The surface point under x; side 0 (points have no sides: the caller orients the plane), not sure,
+  // and trusted less as the points around it lie to one side.
+  SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
+
+private:
+  struct Plane
+  {
+    Vec3 centroid;
+    Vec3 normal;
+  };
+  struct Neighbourhood // the points within the cutoff of a centre: offsets from it, weights
+  {
+    Vec3 centre;
+    std::vector<Vec3> offsets;
+    std::vector<double> weights;
+  };
+  void gather(const Vec3& centre, Neighbourhood& around) const;
+  // The plane fitted to a neighbourhood; false where none fits.
+  static bool fit(const Neighbourhood& around, Plane& plane);
+  // The height over `plane` at `foot` (on it) of the quadric fitted to the neighbourhood (the plane
+  // alone cuts through a curved surface: a bias of about h^2 times the curvature).
+  double height(const Neighbourhood& around, const Vec3& foot, const Plane& plane) const;
+
+  std::shared_ptr<const PointSource> Points;
+  double Width;
+  PointGrid Grid;
+};
+
+} // namespace shrinkwrap
+
+#endif

@@ -1,0 +1,161 @@
+// The surface fitted to points (PointSurface, issue #13), the near field of a wrap onto points: on a
+// plane it is exact; on a randomly sampled unit sphere the surface point under a query lies on the
+// sphere to a small fraction of the sampling's spacing, holes of the random sample included (the plane
+// alone is biased inwards by about h^2 / 2, the quadric removes that); with Gaussian noise of sigma
+// it lies well inside the noise band; over a hole far wider than h it finds nothing (the grid decides);
+// and medianNeighbourDistance / PointGrid agree with brute force.
+#include "PointGrid.h"
+#include "PointSurface.h"
+#include "TestUtilities.h"
+
+#include <random>
+
+namespace
+{
+using namespace shrinkwrap;
+
+std::vector<Vec3> spherePoints(int n, double sigma, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0, 1);
+  std::vector<Vec3> points(n);
+  for (Vec3& p : points)
+  {
+    p = Vec3(g(rng), g(rng), g(rng)).normalized();
+    p += sigma * Vec3(g(rng), g(rng), g(rng));
+  }
+  return points;
+}
+
+struct Landing
+{
+  double mean = 0, largest = 0, bias = 0;
+  int found = 0, queries = 0;
+};
+
+// Queries at radius 1 +- 0.05 in random directions: how far their surface points lie off the sphere.
+Landing onSphere(const PointSurface& surface, int queries)
+{
+  std::mt19937 rng(99);
+  std::normal_distribution<double> g(0, 1);
+  std::uniform_real_distribution<double> radius(0.95, 1.05);
+  Landing l;
+  l.queries = queries;
+  for (int q = 0; q < queries; ++q)
+  {
+    const Vec3 x = Vec3(g(rng), g(rng), g(rng)).normalized() * radius(rng);
+    const SourcePoint p = surface.closestPoint(x, 1.0);
+    if (!p.found || p.trust < 1)
+    {
+      continue;
+    }
+    const double off = p.point.norm() - 1;
+    ++l.found;
+    l.mean += std::abs(off);
+    l.bias += off;
+    l.largest = std::max(l.largest, std::abs(off));
+  }
+  l.mean /= std::max(l.found, 1);
+  l.bias /= std::max(l.found, 1);
+  return l;
+}
+
+void neighbourDistances()
+{
+  const std::vector<Vec3> points = spherePoints(3000, 0, 5);
+  std::vector<double> exact;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < points.size(); ++j)
+    {
+      best = j == i ? best : std::min(best, (points[i] - points[j]).norm());
+    }
+    exact.push_back(best);
+  }
+  const PointGrid grid(points, 0.05);
+  int wrong = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const double d = grid.neighbourDistance(static_cast<int>(i), 0.2);
+    wrong += exact[i] <= 0.2 ? d != exact[i] : d != std::numeric_limits<double>::infinity();
+  }
+  SW_CHECK(wrong == 0, "PointGrid: the nearest neighbour within a radius equals brute force (" << wrong << " wrong)");
+  std::vector<double> sorted = exact;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = medianNeighbourDistance(points);
+  SW_CHECK(median == sorted[sorted.size() / 2], "medianNeighbourDistance " << median << " equals brute force's "
+                                                                          << sorted[sorted.size() / 2]);
+}
+} // namespace
+
+int TestPointSurface(int, char*[])
+{
+  // A plane z = 0.25 sampled at random: the surface point of any query above it is its projection.
+  {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<Vec3> points(4000);
+    for (Vec3& p : points)
+    {
+      p = Vec3(u(rng), u(rng), 0.25);
+    }
+    const auto source = std::make_shared<const PointSource>(points);
+    const PointSurface surface(source, 3 * medianNeighbourDistance(points));
+    double worst = 0;
+    for (double x = -0.5; x <= 0.5; x += 0.05)
+    {
+      const Vec3 q(x, 0.3 * x, 0.25 + 0.1 * x);
+      const SourcePoint p = surface.closestPoint(q, 1.0);
+      worst = p.found ? std::max(worst, (p.point - Vec3(q.x(), q.y(), 0.25)).norm()) : 1.0;
+    }
+    SW_CHECK(worst < 1e-9, "plane: every query lands on its projection (worst " << worst << ")");
+  }
+  // A unit sphere, 4,000 random points (spacing s about 0.027, h = 3 s): measured mean 3e-5, largest
+  // 3e-3 (a tenth of s), bias -1e-5; the plane alone: bias about -h^2/2 = -3e-3.
+  {
+    const std::vector<Vec3> points = spherePoints(4000, 0, 7);
+    const double spacing = medianNeighbourDistance(points);
+    const PointSurface surface(std::make_shared<const PointSource>(points), 3 * spacing);
+    const Landing l = onSphere(surface, 4000);
+    std::cout << "sphere: spacing " << spacing << ", found " << l.found << " of " << l.queries << ", mean "
+              << l.mean << ", largest " << l.largest << ", bias " << l.bias << std::endl;
+    SW_CHECK(l.found >= 0.95 * l.queries, "sphere: the surface is found for 95% of the queries");
+    SW_CHECK(l.mean < 0.02 * spacing && l.largest < 0.25 * spacing && std::abs(l.bias) < 0.01 * spacing,
+      "sphere: surface points on the sphere (mean " << l.mean << ", largest " << l.largest << ", bias " << l.bias
+                                                    << "; bars 0.02, 0.25, 0.01 spacings)");
+  }
+  // The same with Gaussian noise sigma = 0.005 (0.25% of the diagonal): the points lie 0.8 sigma off on
+  // average; the fitted surface well inside that band.
+  {
+    const double sigma = 0.005;
+    const std::vector<Vec3> points = spherePoints(20000, sigma, 11);
+    const PointSurface surface(std::make_shared<const PointSource>(points), 3 * medianNeighbourDistance(points));
+    const Landing l = onSphere(surface, 4000);
+    std::cout << "noisy sphere: found " << l.found << ", mean " << l.mean << ", largest " << l.largest << ", bias "
+              << l.bias << std::endl;
+    SW_CHECK(l.found >= 0.95 * l.queries && l.mean < 0.4 * sigma && l.largest < 2.5 * sigma,
+      "noisy sphere: inside the noise band (mean " << l.mean << ", largest " << l.largest << "; bars 0.4, 2.5 sigma)");
+  }
+  // A plane with a hole of radius 0.4 (h about 0.06): nothing is found over the hole's centre, the
+  // grid decides there; beside the rim and beyond, the plane.
+  {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<Vec3> points;
+    while (points.size() < 4000)
+    {
+      const Vec3 p(u(rng), u(rng), 0);
+      if (p.norm() > 0.4)
+        points.push_back(p);
+    }
+    const PointSurface surface(std::make_shared<const PointSource>(points), 3 * medianNeighbourDistance(points));
+    const SourcePoint centre = surface.closestPoint(Vec3(0, 0, 0.02), 1.0);
+    const SourcePoint beyond = surface.closestPoint(Vec3(0.7, 0, 0.02), 1.0);
+    SW_CHECK(!centre.found, "holed plane: nothing over the hole's centre");
+    SW_CHECK(beyond.found && beyond.trust == 1 && std::abs(beyond.point.z()) < 1e-9,
+      "holed plane: the plane beyond the rim (z " << beyond.point.z() << ")");
+  }
+  neighbourDistances();
+  return testing::finish("TestPointSurface");
+}

@@ -11,7 +11,8 @@
 // triangles with a minimum angle below 20 degrees. --set applies a property to our wraps (D, C, C1,
 // C2, TimeStep, NumberOfSteps, Resolution, StartOffset, GapSize, TargetEdgeLength, Remeshing,
 // StartingShape, SubdivisionLevel, InitialRelaxation, CloseHoles), for tuning. --time-only runs our defaults alone and prints their
-// time and vertex count, without evaluation or peers (for profiling).
+// time and vertex count, without evaluation or peers (for profiling); with --points, our wrap of the
+// points evaluated, without peers.
 #include "TestUtilities.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
@@ -129,7 +130,7 @@ const std::map<std::string, Setter>& setters();
 // judged against the original mesh (the truth). With `out`, the cloud and the wraps (ours, alpha
 // diag/50) are written as <out>_target.vtp, <out>_shrinkwrap.vtp, <out>_alphawrap_50.vtp.
 void cloudRows(const TriangleSoup& target, int count, double noise, const std::vector<std::pair<std::string, double>>& sets,
-  const std::string& out)
+  const std::string& out, bool peers)
 {
   const double diagonal = target.bounds().diagonal();
   std::vector<Vec3> cloud = testing::samplePoints(target, count, 7);
@@ -181,6 +182,10 @@ void cloudRows(const TriangleSoup& target, int count, double noise, const std::v
     {
       write(soup, out + "_shrinkwrap.vtp");
     }
+  }
+  if (!peers)
+  {
+    return;
   }
   std::vector<Point> cgalPoints;
   for (const Vec3& p : cloud)
@@ -323,7 +328,7 @@ int main(int argc, char* argv[])
     }
     if (cloudSize > 0)
     {
-      cloudRows(target, cloudSize, noise, sets, out.empty() ? out : out + "/" + name + "_points");
+      cloudRows(target, cloudSize, noise, sets, out.empty() ? out : out + "/" + name + "_points", !timeOnly);
       continue;
     }
 

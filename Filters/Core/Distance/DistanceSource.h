@@ -1,8 +1,8 @@
 // What Algorithm 1 needs of a surface, as an interface: its bounds, the grid cells it touches (the
 // box-overlap query behind the outline), and for a point the nearest surface point with the side the
 // point is on (the closest-point query behind the band). Triangles implement it (TriangleSource: the
-// welded soup, its AABB tree, its pseudonormals, its octree outline); a point set with normals can
-// implement it the same way (issue #13) and get the band, sweeps and sign unchanged. Where the sides
+// welded soup, its AABB tree, its pseudonormals, its octree outline); a point set implements it
+// without sides (PointSource: the nearest point; PointSurface: the surface fitted to the points). Where the sides
 // of a surface are in doubt (holes, crossings, overlaps), its generalized winding number decides
 // (WindingSign.h).
 #ifndef ShrinkWrap_DistanceSource_h

@@ -12,6 +12,7 @@ namespace shrinkwrap
 
 namespace
 {
+constexpr int kScales = 3;             // widths h, 2 h, 4 h
 constexpr double kCutoff = 2.5;        // neighbours within this many widths (weights below 0.002 beyond)
 constexpr double kMinWeight = 1;       // a fit needs the weight of at least one point at the centre
 // In widths, the points' centroid beside the foot (along the plane): up to half of this the fit is
@@ -25,22 +26,26 @@ constexpr double kMaxLift = 0.2;       // in widths: the most a quadric may move
 
 PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double width)
   : Points(std::move(points))
-  , Width(width)
-  , Grid(this->Points->points(), kCutoff * width)
 {
+  this->Scales.reserve(kScales);
+  for (int s = 0; s < kScales; ++s)
+  {
+    const double w = width * (1 << s);
+    this->Scales.push_back({ w, PointGrid(this->Points->points(), kCutoff * w) });
+  }
 }
 
-void PointSurface::gather(const Vec3& centre, Neighbourhood& around) const
+void PointSurface::gather(const Vec3& centre, const Scale& scale, Neighbourhood& around) const
 {
   around.centre = centre;
   around.offsets.clear();
   around.weights.clear();
   const std::vector<Vec3>& points = this->Points->points();
-  const double scale = 1 / (this->Width * this->Width);
-  this->Grid.forEachWithin(centre, kCutoff * this->Width, [&](int id) {
+  const double inverse = 1 / (scale.width * scale.width);
+  scale.grid.forEachWithin(centre, kCutoff * scale.width, [&](int id) {
     const Vec3 d = points[id] - centre;
     around.offsets.push_back(d);
-    around.weights.push_back(std::exp(-d.squaredNorm() * scale));
+    around.weights.push_back(std::exp(-d.squaredNorm() * inverse));
   });
 }
 
@@ -75,7 +80,7 @@ bool PointSurface::fit(const Neighbourhood& around, Plane& plane)
   return true;
 }
 
-double PointSurface::height(const Neighbourhood& around, const Vec3& foot, const Plane& plane) const
+double PointSurface::height(const Neighbourhood& around, const Vec3& foot, const Plane& plane, double width)
 {
   // Heights over the plane, in widths, fitted by w = a0 + a1 u + a2 v + a3 u^2 + a4 u v + a5 v^2 about
   // the foot (u = v = 0): a0 is the surface's height there.
@@ -83,7 +88,7 @@ double PointSurface::height(const Neighbourhood& around, const Vec3& foot, const
   const Vec3 t2 = plane.normal.cross(t1);
   Eigen::Matrix<double, 6, 6> normalMatrix = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-  const double scale = 1 / this->Width;
+  const double scale = 1 / width;
   const Vec3 shift = around.centre - foot;
   for (std::size_t i = 0; i < around.offsets.size(); ++i)
   {
@@ -105,8 +110,8 @@ double PointSurface::height(const Neighbourhood& around, const Vec3& foot, const
   }
   // A quadric lifts a curved surface off its plane by about h^2 times the curvature; more is an
   // extrapolation into a gap between the points, where the plane is the safer guess.
-  const double lifted = solver.solve(rhs)[0] * this->Width;
-  return std::abs(lifted - planeHeight) <= kMaxLift * this->Width ? lifted : planeHeight;
+  const double lifted = solver.solve(rhs)[0] * width;
+  return std::abs(lifted - planeHeight) <= kMaxLift * width ? lifted : planeHeight;
 }
 
 SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance) const
@@ -119,13 +124,25 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
   {
     return none;
   }
-  this->gather(nearest.point, around);
-  if (!fit(around, plane))
+  // The finest scale at which the points around the nearest one look flat: noise thicker than a
+  // fraction of the width hides the plane until the width outgrows it.
+  const Scale* scale = nullptr;
+  for (const Scale& s : this->Scales)
+  {
+    this->gather(nearest.point, s, around);
+    if (fit(around, plane))
+    {
+      scale = &s;
+      break;
+    }
+  }
+  if (!scale)
   {
     return none;
   }
+  const double width = scale->width;
   // Refitted about the foot: the weights then centre where the surface point is.
-  this->gather(x - (x - plane.centroid).dot(plane.normal) * plane.normal, around);
+  this->gather(x - (x - plane.centroid).dot(plane.normal) * plane.normal, *scale, around);
   if (!fit(around, plane))
   {
     return none;
@@ -134,12 +151,12 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
   const Vec3 along = (plane.centroid - foot) - (plane.centroid - foot).dot(plane.normal) * plane.normal;
   // Trusted fully while the points lie around the foot, not at all once their centroid is
   // kMaxOffCentre widths to one side (a gap's rim), fading in between.
-  const double trust = std::clamp(2 - along.norm() / (0.5 * kMaxOffCentre * this->Width), 0.0, 1.0);
+  const double trust = std::clamp(2 - along.norm() / (0.5 * kMaxOffCentre * width), 0.0, 1.0);
   if (trust <= 0)
   {
     return none;
   }
-  foot += this->height(around, foot, plane) * plane.normal;
+  foot += height(around, foot, plane, width) * plane.normal;
   SourcePoint p = nearest;
   p.point = foot;
   p.squaredDistance = (x - foot).squaredNorm();

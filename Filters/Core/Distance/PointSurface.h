@@ -3,7 +3,7 @@
 // weights of width h), fitted again about x's foot on it, and over that plane a quadratic height field
 // (moving least squares). Driven by the distance to the nearest point, a wrap dimples towards every
 // point; driven by this it lands between them on the sampled surface, and averages noise over a
-// neighbourhood instead of following it. Where no plane fits, nothing is found and the caller's grid
+// neighbourhood instead of following it; where noise hides the plane at h, at 2 h or 4 h. Where no plane fits, nothing is found and the caller's grid
 // decides: no points or no flat neighbourhood around the foot (a part thinner than h), or points on
 // one side of it only (a gap's rim), which fades the answer's trust out.
 #ifndef ShrinkWrap_PointSurface_h
@@ -43,16 +43,20 @@ private:
     std::vector<Vec3> offsets;
     std::vector<double> weights;
   };
-  void gather(const Vec3& centre, Neighbourhood& around) const;
+  struct Scale // a width and the points binned for it
+  {
+    double width;
+    PointGrid grid;
+  };
+  void gather(const Vec3& centre, const Scale& scale, Neighbourhood& around) const;
   // The plane fitted to a neighbourhood; false where none fits.
   static bool fit(const Neighbourhood& around, Plane& plane);
   // The height over `plane` at `foot` (on it) of the quadric fitted to the neighbourhood (the plane
   // alone cuts through a curved surface: a bias of about h^2 times the curvature).
-  double height(const Neighbourhood& around, const Vec3& foot, const Plane& plane) const;
+  static double height(const Neighbourhood& around, const Vec3& foot, const Plane& plane, double width);
 
   std::shared_ptr<const PointSource> Points;
-  double Width;
-  PointGrid Grid;
+  std::vector<Scale> Scales; // finest first
 };
 
 } // namespace shrinkwrap

@@ -32,7 +32,7 @@ for i, (file, title) in enumerate(panels):
         # a point cloud (BenchShrinkWrap --points): its vertices
         shown.SetRepresentationType("Points")
         shown.PointSize = 2
-        title = title.replace("(target)", "(points)")
+        title = "%s, %d points" % (name.replace("_points", ""), reader.GetDataInformation().GetNumberOfPoints())
     else:
         shown.SetRepresentationType("Surface With Edges")
     shown.AmbientColor = shown.DiffuseColor = [0.85, 0.85, 0.8]

@@ -43,8 +43,9 @@ double PointGrid::neighbourDistance(int id, double radius) const
 {
   double best = std::numeric_limits<double>::infinity();
   this->forEachWithin(this->Points[id], radius, [&](int other) {
-    if (other != id)
-      best = std::min(best, (this->Points[other] - this->Points[id]).squaredNorm());
+    const double d = (this->Points[other] - this->Points[id]).squaredNorm();
+    if (d > 0)
+      best = std::min(best, d);
   });
   return std::sqrt(best);
 }

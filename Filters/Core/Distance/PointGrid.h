@@ -43,7 +43,8 @@ public:
           }
         }
   }
-  // The distance from point `id` to its nearest other point within `radius` (infinity: none).
+  // The distance from point `id` to its nearest point within `radius` apart from the points at its
+  // position (duplicates say nothing of the spacing); infinity: none.
   double neighbourDistance(int id, double radius) const;
 
 private:

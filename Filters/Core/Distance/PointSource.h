@@ -29,8 +29,8 @@ private:
   AABBTree Tree;
 };
 
-// The median distance from a point to its nearest neighbour (over up to 20,000 of the points, by a
-// hash grid of about one point per cell); 0 when no point has a neighbour near it.
+// The median distance from a point to its nearest neighbour at another position (over up to 20,000
+// of the points, by a hash grid); 0 when the points have no such neighbours (all coincide).
 double medianNeighbourDistance(const std::vector<Vec3>& points);
 
 } // namespace shrinkwrap

@@ -208,7 +208,7 @@ Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> poi
   // The near field of the driving distance: the points' fitted surface, not the nearest point (which
   // would pull the closing's membranes between the points into dimples).
   std::shared_ptr<const DistanceSource> surface;
-  if (settings.exactNearTarget)
+  if (settings.exactNearTarget && spacing > 0)
   {
     surface = std::make_shared<const PointSurface>(points, kFitWidthPerSpacing * spacing);
   }

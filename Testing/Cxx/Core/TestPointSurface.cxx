@@ -3,7 +3,7 @@
 // sphere to a small fraction of the sampling's spacing, holes of the random sample included (the plane
 // alone is biased inwards by about h^2 / 2, the quadric removes that); with Gaussian noise of sigma
 // it lies well inside the noise band; over a hole far wider than h it finds nothing (the grid decides);
-// and medianNeighbourDistance / PointGrid agree with brute force.
+// and medianNeighbourDistance / PointGrid agree with brute force, duplicated points aside.
 #include "PointGrid.h"
 #include "PointSurface.h"
 #include "TestUtilities.h"
@@ -86,6 +86,11 @@ void neighbourDistances()
   const double median = medianNeighbourDistance(points);
   SW_CHECK(median == sorted[sorted.size() / 2], "medianNeighbourDistance " << median << " equals brute force's "
                                                                           << sorted[sorted.size() / 2]);
+  // Every point twice (the vertices of an unwelded soup): the same spacing, not 0.
+  std::vector<Vec3> twice = points;
+  twice.insert(twice.end(), points.begin(), points.end());
+  SW_CHECK(medianNeighbourDistance(twice) == median, "medianNeighbourDistance ignores duplicates ("
+                                                        << medianNeighbourDistance(twice) << ")");
 }
 } // namespace
 

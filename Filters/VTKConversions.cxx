@@ -179,6 +179,55 @@ std::vector<Vec3> pointsOf(vtkDataObject* input)
   return points;
 }
 
+std::vector<Vec3> loosePointsOf(vtkPolyData* mesh)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::vector<char> used(n, 0);
+  const auto mark = [&](vtkIdType count, const vtkIdType* ids) {
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      if (ids[i] >= 0 && ids[i] < n)
+      {
+        used[ids[i]] = 1;
+      }
+    }
+  };
+  forEachCell(mesh->GetPolys(), mark);
+  forEachCell(mesh->GetStrips(), mark);
+  std::vector<Vec3> points;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!used[i])
+    {
+      double p[3];
+      mesh->GetPoint(i, p);
+      points.emplace_back(p[0], p[1], p[2]);
+    }
+  }
+  return points;
+}
+
+Geometry chooseGeometry(int inputGeometry, bool hasPolygons)
+{
+  switch (inputGeometry)
+  {
+    case 1:
+      return { true, false };
+    case 2:
+      return { false, true };
+    case 3:
+      return { true, true };
+    default:
+      return { hasPolygons, !hasPolygons };
+  }
+}
+
+const char* geometryName(int inputGeometry)
+{
+  static const char* const names[] = { "Automatic", "Polygons", "Points", "PolygonsAndPoints" };
+  return names[std::clamp(inputGeometry, 0, 3)];
+}
+
 TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts)
 {
   TriangleSoup soup;

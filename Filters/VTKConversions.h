@@ -40,6 +40,20 @@ PolygonMeshes polygonMeshes(vtkDataObject* input);
 // Every point of every leaf of an input, for an input measured as points (issue #13).
 std::vector<Vec3> pointsOf(vtkDataObject* input);
 
+// The points of a mesh that none of its polygons or strips uses (its vertices' and lines' points, and
+// points of no cell): the points beside its surface.
+std::vector<Vec3> loosePointsOf(vtkPolyData* mesh);
+
+// Which parts of an input a filter takes, by its InputGeometry (0 automatic: the polygons when it has
+// any, else the points; 1 polygons, 2 points, 3 both).
+struct Geometry
+{
+  bool polygons = false;
+  bool points = false;
+};
+Geometry chooseGeometry(int inputGeometry, bool hasPolygons);
+const char* geometryName(int inputGeometry); // for PrintSelf
+
 // What a soup was made of besides its triangles.
 struct SoupCounts
 {

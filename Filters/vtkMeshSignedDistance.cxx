@@ -82,10 +82,16 @@ int vtkMeshSignedDistance::RequestInformation(
     const int port = this->GetInputConnection(0, 0)->GetIndex();
     producer->UpdatePiece(0, 1, 0);
     vtkDataObject* input = producer->GetOutputDataObject(port);
-    bounds = convert::surfaceBounds(convert::polygonMeshes(input).meshes);
-    if (bounds.empty()) // no polygons: the points (ReadInput)
+    // The bounds of what ReadInput will measure.
+    const shrinkwrap::Box polygons = convert::surfaceBounds(convert::polygonMeshes(input).meshes);
+    const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, !polygons.empty());
+    if (use.polygons)
     {
-      bounds = shrinkwrap::Box::around(convert::pointsOf(input));
+      bounds.extend(polygons);
+    }
+    if (use.points)
+    {
+      bounds.extend(shrinkwrap::Box::around(convert::pointsOf(input)));
     }
   }
   shrinkwrap::GridLattice lattice;
@@ -119,10 +125,10 @@ int vtkMeshSignedDistance::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
-  shrinkwrap::TriangleSoup soup;
+  shrinkwrap::TriangleSoup soup, cloud;
   shrinkwrap::Box bounds;
   shrinkwrap::GridLattice lattice;
-  if (!this->ReadInput(vtkDataObject::GetData(inputVector[0], 0), soup, bounds))
+  if (!this->ReadInput(vtkDataObject::GetData(inputVector[0], 0), soup, cloud, bounds))
   {
     return 1;
   }
@@ -133,7 +139,7 @@ int vtkMeshSignedDistance::RequestData(
   }
   vtkNew<vtkFloatArray> values;
   shrinkwrap::SignedDistanceResult result;
-  if (!this->Compute(soup, lattice, values, result))
+  if (!this->Compute(soup, cloud, lattice, values, result))
   {
     return 1;
   }
@@ -152,47 +158,65 @@ int vtkMeshSignedDistance::RequestData(
   return 1;
 }
 
-bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleSoup& soup, shrinkwrap::Box& bounds)
+bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleSoup& soup,
+  shrinkwrap::TriangleSoup& cloud, shrinkwrap::Box& bounds)
 {
   const convert::PolygonMeshes input = convert::polygonMeshes(data);
-  if (!input.extractedFrom.empty())
-  {
-    vtkOutputWindowDisplayText(("Mesh Signed Distance: the input (" + input.extractedFrom +
-      ") is measured by its outer surface, as Extract Surface gives it.\n").c_str());
-  }
   const std::vector<vtkPolyData*>& meshes = input.meshes;
   convert::SoupCounts counts;
   soup = convert::soupOf(meshes, counts);
-  if (soup.triangles.empty() && counts.badCells == 0)
+  const convert::Geometry use =
+    convert::chooseGeometry(this->InputGeometry, !soup.triangles.empty() || counts.badCells > 0);
+  bounds = shrinkwrap::Box();
+  if (use.polygons)
   {
-    // No polygons and no 3-D cells: a point cloud, measured by its points (issue #13).
-    soup.points = convert::pointsOf(data);
-    if (const shrinkwrap::Status status = shrinkwrap::checkPoints(soup.points); !status)
+    if (soup.triangles.empty() && counts.badCells == 0)
+    {
+      vtkErrorMacro("Cannot measure distances: the input has no polygons or 3-D cells, and Input Geometry is "
+                    "Polygons; choose Automatic or Points to measure its points.");
+      return false;
+    }
+    if (!input.extractedFrom.empty())
+    {
+      vtkOutputWindowDisplayText(("Mesh Signed Distance: the input (" + input.extractedFrom +
+        ") is measured by its outer surface, as Extract Surface gives it.\n").c_str());
+    }
+    if (!use.points && (counts.lines > 0 || counts.vertices > 0))
+    {
+      vtkWarningMacro("Ignoring " << counts.lines << " lines and " << counts.vertices
+                                  << " vertices: only polygons and triangle strips have an inside.");
+    }
+    if (counts.badCells > 0)
+    {
+      vtkErrorMacro("The input has " << counts.badCells << " cells whose point ids are out of range: it is corrupt.");
+      return false;
+    }
+    if (const shrinkwrap::Status status = shrinkwrap::checkSoup(soup); !status)
     {
       vtkErrorMacro("Cannot measure distances: " << status.message() << ".");
       return false;
     }
-    vtkOutputWindowDisplayText(("Mesh Signed Distance: the input has no polygons; the field is the unsigned "
-      "distance to the nearest of its " + std::to_string(soup.points.size()) + " points.\n").c_str());
-    bounds = shrinkwrap::Box::around(soup.points);
-    return true;
+    bounds = convert::surfaceBounds(meshes);
   }
-  if (counts.lines > 0 || counts.vertices > 0)
+  else
   {
-    vtkWarningMacro("Ignoring " << counts.lines << " lines and " << counts.vertices
-                                << " vertices: only polygons and triangle strips have an inside.");
+    soup = shrinkwrap::TriangleSoup();
   }
-  if (counts.badCells > 0)
+  cloud = shrinkwrap::TriangleSoup();
+  if (use.points)
   {
-    vtkErrorMacro("The input has " << counts.badCells << " cells whose point ids are out of range: it is corrupt.");
-    return false;
+    // A point cloud, or the points beside the polygons (issue #13).
+    cloud.points = convert::pointsOf(data);
+    if (const shrinkwrap::Status status = shrinkwrap::checkPoints(cloud.points); !status)
+    {
+      vtkErrorMacro("Cannot measure distances: " << status.message() << ".");
+      return false;
+    }
+    vtkOutputWindowDisplayText(("Mesh Signed Distance: the field is the unsigned distance to the nearest of " +
+      std::string(use.polygons ? "the input's polygons and " : "") + "its " + std::to_string(cloud.points.size()) +
+      " points" + (this->InputGeometry == AUTOMATIC ? " (it has no polygons)" : "") + ".\n").c_str());
+    bounds.extend(shrinkwrap::Box::around(cloud.points));
   }
-  if (const shrinkwrap::Status status = shrinkwrap::checkSoup(soup); !status)
-  {
-    vtkErrorMacro("Cannot measure distances: " << status.message() << ".");
-    return false;
-  }
-  bounds = convert::surfaceBounds(meshes);
   return true;
 }
 
@@ -206,8 +230,8 @@ shrinkwrap::SignedDistanceSettings vtkMeshSignedDistance::DistanceSettings() con
   return settings;
 }
 
-bool vtkMeshSignedDistance::Compute(const shrinkwrap::TriangleSoup& soup, const shrinkwrap::GridLattice& lattice,
-  vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result)
+bool vtkMeshSignedDistance::Compute(const shrinkwrap::TriangleSoup& soup, const shrinkwrap::TriangleSoup& cloud,
+  const shrinkwrap::GridLattice& lattice, vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result)
 {
   const shrinkwrap::SignedDistanceSettings settings = this->DistanceSettings();
   if (const shrinkwrap::Status fits = shrinkwrap::checkMemory(lattice, settings); !fits)
@@ -227,9 +251,13 @@ bool vtkMeshSignedDistance::Compute(const shrinkwrap::TriangleSoup& soup, const 
       throw std::bad_alloc();
     }
     shrinkwrap::onAllCores([&] {
-      result = soup.triangles.empty() // a point cloud (ReadInput)
-        ? shrinkwrap::computePointDistance(soup.points, lattice, settings, values->GetPointer(0), progress)
-        : shrinkwrap::computeSignedDistance(soup, lattice, settings, values->GetPointer(0), progress);
+      float* distance = values->GetPointer(0);
+      if (cloud.points.empty())
+        result = shrinkwrap::computeSignedDistance(soup, lattice, settings, distance, progress);
+      else if (soup.triangles.empty())
+        result = shrinkwrap::computePointDistance(cloud.points, lattice, settings, distance, progress);
+      else
+        result = shrinkwrap::computeUnionDistance(soup, cloud.points, lattice, settings, distance, progress);
     });
   }
   catch (const std::bad_alloc&)
@@ -274,6 +302,7 @@ void vtkMeshSignedDistance::AddStatus(const shrinkwrap::SignedDistanceResult& re
 void vtkMeshSignedDistance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "InputGeometry: " << convert::geometryName(this->InputGeometry) << "\n";
   os << indent << "BoxScale: " << this->BoxScale << "\n";
   os << indent << "OffsetFactor: " << this->OffsetFactor << "\n";
   os << indent << "GridCellSize: " << this->GridCellSize << "\n";

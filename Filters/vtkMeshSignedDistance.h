@@ -12,7 +12,10 @@
  * Input: vtkPolyData, any other vtkDataSet with cells (its outer surface, as vtkDataSetSurfaceFilter
  * gives it), or a composite dataset of them (one field of all its meshes). Polygons of any size and
  * triangle strips are triangulated; non-manifold meshes and duplicated points are accepted. Lines and vertices are ignored (with a warning). Coordinates
- * beyond +-1e30 are refused: a float field cannot hold their distances.
+ * beyond +-1e30 are refused: a float field cannot hold their distances. An input without polygons or
+ * 3-D cells (a point cloud, vertices, the points of lines) is measured by its points: the unsigned
+ * distance to the nearest of them (issue #13). InputGeometry chooses otherwise for an input that has
+ * both (a mesh with loose points, a scan beside a model).
  *
  * Output: vtkImageData with the point array "SignedDistance" (float). Field data: "Signed" (1 when the
  * field is signed, 0 when it is unsigned) and "DistanceStatus" (a sentence saying why). A mesh with
@@ -52,11 +55,28 @@ public:
   vtkTypeMacro(vtkMeshSignedDistance, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  enum InputGeometries
+  {
+    AUTOMATIC = 0, ///< the polygons (and 3-D cells' surface) when there are any, else the points
+    POLYGONS = 1,  ///< the polygons only; an input without any is an error
+    POINTS = 2,    ///< every point of the input, the polygons' corners included (unsigned)
+    POLYGONS_AND_POINTS = 3 ///< the nearest of the polygons and the points (unsigned)
+  };
+
   enum SweepMethods
   {
     CLOSEST_POINT = 0, ///< propagate closest surface points (default; more exact at the same speed)
     EIKONAL = 1        ///< the paper's fast sweeping of |grad d| = 1 (Zhao 2005)
   };
+
+  ///@{
+  /**
+   * What of the input the distances are measured to: AUTOMATIC (default), POLYGONS, POINTS or
+   * POLYGONS_AND_POINTS (InputGeometries). A field from points is unsigned: points have no inside.
+   */
+  vtkSetClampMacro(InputGeometry, int, AUTOMATIC, POLYGONS_AND_POINTS);
+  vtkGetMacro(InputGeometry, int);
+  ///@}
 
   ///@{
   /**
@@ -148,6 +168,7 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  int InputGeometry = AUTOMATIC;
   // Defaults: the constructor takes them from the core's settings structs, where they are stated once.
   double BoxScale;
   double OffsetFactor;
@@ -165,11 +186,13 @@ private:
   // The output lattice: explicit, or placed around the bounds of the input's surface.
   shrinkwrap::Status ComputeLattice(const shrinkwrap::Box& surfaceBounds, shrinkwrap::GridLattice& lattice) const;
   shrinkwrap::SignedDistanceSettings DistanceSettings() const;
-  // The input as a triangle soup, with the bounds of its surface; false (reported) if it has none.
-  bool ReadInput(vtkDataObject* input, shrinkwrap::IndexedTriangles& soup, shrinkwrap::Box& bounds);
+  // What InputGeometry measures of the input: its triangles (`soup`) and points (`cloud`, points
+  // only), either empty when not measured, with the bounds of both; false (reported) if nothing.
+  bool ReadInput(vtkDataObject* input, shrinkwrap::IndexedTriangles& soup, shrinkwrap::IndexedTriangles& cloud,
+    shrinkwrap::Box& bounds);
   // The distances, threaded; false (reported) when memory ran out or the run was aborted.
-  bool Compute(const shrinkwrap::IndexedTriangles& soup, const shrinkwrap::GridLattice& lattice,
-    vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
+  bool Compute(const shrinkwrap::IndexedTriangles& soup, const shrinkwrap::IndexedTriangles& cloud,
+    const shrinkwrap::GridLattice& lattice, vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
   void AddStatus(const shrinkwrap::SignedDistanceResult& result, vtkImageData* output);
 
   vtkMeshSignedDistance(const vtkMeshSignedDistance&) = delete;

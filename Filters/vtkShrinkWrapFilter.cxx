@@ -4,6 +4,7 @@
 #include "PointSource.h"
 #include "SelfIntersections.h"
 #include "SignedDistance.h"
+#include "UnionSource.h"
 #include "VTKConversions.h"
 #include "WrapSession.h"
 
@@ -51,11 +52,16 @@ int targetAndField(
   return targets;
 }
 
-// The points' unsigned field, computed here, and the fields of a wrap onto them.
-Status pointFields(const std::shared_ptr<const PointSource>& points, double spacing, bool givenStart,
-  const WrapSettings& settings, WrapFields& fields)
+// The unsigned field of the points (and of the polygons beside them, if given), computed here, and the
+// fields of a wrap onto them.
+Status pointFields(const std::shared_ptr<const PointSource>& points, const std::shared_ptr<const TriangleSource>& polygons,
+  double spacing, bool givenStart, const WrapSettings& settings, WrapFields& fields)
 {
-  const Box box = points->bounds();
+  Box box = points->bounds();
+  if (polygons)
+  {
+    box.extend(polygons->bounds());
+  }
   GridLattice lattice;
   Status status = placeGrid(box, settings.fieldPlacement(box, givenStart), lattice);
   if (status)
@@ -67,9 +73,24 @@ Status pointFields(const std::shared_ptr<const PointSource>& points, double spac
     return Status::failure("the points' distance field: " + status.message());
   }
   std::vector<float> values(lattice.nodeCount());
-  computePointDistance(*points, lattice, SignedDistanceSettings(), values.data());
-  return pointWrapFields(DistanceGrid(lattice, std::move(values)), points, spacing,
-    settings, convert::contour, fields);
+  if (polygons)
+  {
+    SignedDistanceSettings unsignedDistance;
+    unsignedDistance.computeSign = false;
+    computeSignedDistance(UnionSource({ polygons, points }), lattice, unsignedDistance, values.data());
+  }
+  else
+  {
+    computePointDistance(*points, lattice, SignedDistanceSettings(), values.data());
+  }
+  return pointWrapFields(DistanceGrid(lattice, std::move(values)), points, spacing, settings, convert::contour,
+    fields, polygons);
+}
+
+// The points a wrap takes of its target: beside its polygons, the points none of them uses; else all.
+std::vector<Vec3> wrappedPoints(vtkDataObject* target, vtkPolyData* mesh, const convert::Geometry& use)
+{
+  return use.polygons ? (mesh ? convert::loosePointsOf(mesh) : std::vector<Vec3>()) : convert::pointsOf(target);
 }
 } // namespace
 
@@ -233,15 +254,20 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
   const convert::PolygonMeshes meshes = convert::polygonMeshes(target);
   Box box = meshes.meshes.empty() ? Box() : convert::surfaceBounds({ meshes.meshes[0] });
   WrapSettings chosen = this->CoreSettings();
-  if (box.empty() && target) // no polygons: the points (StartSession)
+  const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, !box.empty());
+  if (target && use.points) // as StartSession
   {
-    const std::vector<Vec3> points = convert::pointsOf(target);
-    if (!checkPoints(points))
+    const std::vector<Vec3> points = wrappedPoints(target, meshes.meshes.empty() ? nullptr : meshes.meshes[0], use);
+    if (checkPoints(points))
+    {
+      box = use.polygons ? box : Box();
+      box.extend(Box::around(points));
+      chosen = withPointSizes(chosen, box, medianNeighbourDistance(points), givenStart);
+    }
+    else if (!use.polygons) // no points: no field (StartSession says why); beside polygons: the polygons'
     {
       return 0;
     }
-    box = Box::around(points);
-    chosen = withPointSizes(chosen, box, medianNeighbourDistance(points), givenStart);
   }
   GridLattice lattice;
   const WrapSettings settings = chosen.resolved(box);
@@ -313,7 +339,15 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   }
   const convert::PolygonMeshes input = convert::polygonMeshes(targetData);
   vtkPolyData* target = input.meshes.empty() ? nullptr : input.meshes[0];
-  if (!input.extractedFrom.empty())
+  const convert::Geometry use =
+    convert::chooseGeometry(this->InputGeometry, target && target->GetNumberOfPolys() + target->GetNumberOfStrips() > 0);
+  if (use.polygons && !(target && target->GetNumberOfPolys() + target->GetNumberOfStrips() > 0))
+  {
+    vtkErrorMacro("Cannot wrap: the target has no polygons or 3-D cells, and Input Geometry is Polygons; choose "
+                  "Automatic or Points to wrap its points.");
+    return false;
+  }
+  if (use.polygons && !input.extractedFrom.empty())
   {
     vtkOutputWindowDisplayText(("Shrink Wrap: the target (" + input.extractedFrom +
       ") is wrapped by its outer surface, as Extract Surface gives it.\n").c_str());
@@ -324,37 +358,46 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     vtkErrorMacro(<< valid.message() << ".");
     return false;
   }
-  const bool hasPolygons = target && target->GetNumberOfPolys() + target->GetNumberOfStrips() > 0;
+  // The points wrapped, if any: all the target's, or those beside its polygons (issue #13).
   std::vector<Vec3> points;
-  if (!hasPolygons)
+  if (use.points)
   {
-    // No polygons and no 3-D cells: the target is its points (issue #13).
-    points = convert::pointsOf(targetData);
-    Status ok = checkPoints(points);
-    if (ok)
+    points = wrappedPoints(targetData, target, use);
+    if (use.polygons && points.empty())
     {
-      ok = checkPointsEnclose(points);
+      vtkWarningMacro("Input Geometry is Polygons and Points, but every point of the target lies on its polygons: "
+                      "the polygons are wrapped.");
     }
-    if (!ok)
+    else
     {
-      vtkErrorMacro("Cannot wrap: " << ok.message() << ".");
-      return false;
-    }
-    if (field)
-    {
-      vtkErrorMacro("Cannot wrap points on a Distance Field: disconnect it (the wrap computes the points' own).");
-      return false;
+      Status ok = checkPoints(points);
+      if (ok && !use.polygons)
+      {
+        ok = checkPointsEnclose(points);
+      }
+      if (!ok)
+      {
+        vtkErrorMacro("Cannot wrap: " << ok.message() << ".");
+        return false;
+      }
+      if (field)
+      {
+        vtkErrorMacro("Cannot wrap points on a Distance Field: disconnect it (the wrap computes the points' own).");
+        return false;
+      }
     }
   }
-  const Box targetBox = hasPolygons ? convert::boundsOf(target) : Box::around(points);
+  const bool wrapsPoints = !points.empty();
+  Box targetBox = use.polygons ? convert::boundsOf(target) : Box();
+  targetBox.extend(Box::around(points));
   if (!targetBox.min.allFinite() || !targetBox.max.allFinite())
   {
     vtkErrorMacro("The target has NaN or infinite coordinates.");
     return false;
   }
-  const double spacing = hasPolygons ? 0.0 : medianNeighbourDistance(points);
-  const WrapSettings settings = (hasPolygons ? this->CoreSettings()
-                                             : withPointSizes(this->CoreSettings(), targetBox, spacing, initial != nullptr))
+  const double spacing = wrapsPoints ? medianNeighbourDistance(points) : 0.0;
+  const WrapSettings settings = (wrapsPoints ? withPointSizes(this->CoreSettings(), targetBox, spacing, initial != nullptr)
+                                             : this->CoreSettings())
                                   .resolved(targetBox);
   if (const Status fits = settings.fits(targetBox); !fits)
   {
@@ -362,22 +405,36 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     return false;
   }
   WrapFields fields;
-  if (hasPolygons && !this->FieldsOf(target, field, initial != nullptr, settings, fields))
+  if (!wrapsPoints && !this->FieldsOf(target, field, initial != nullptr, settings, fields))
   {
     return false;
   }
-  if (const Status made = hasPolygons
-        ? Status()
-        : pointFields(std::make_shared<const PointSource>(points), spacing, initial != nullptr, settings, fields);
-      !made)
+  if (wrapsPoints)
   {
-    vtkErrorMacro("Cannot wrap: " << made.message() << ".");
-    return false;
-  }
-  if (!hasPolygons)
-  {
-    vtkOutputWindowDisplayText(("Shrink Wrap: the target has no polygons; its " + std::to_string(points.size()) +
-      " points are wrapped.\n").c_str());
+    std::shared_ptr<const TriangleSource> polygons;
+    if (use.polygons)
+    {
+      convert::SoupCounts counts;
+      const TriangleSoup soup = convert::soupOf({ target }, counts);
+      if (const Status valid = counts.badCells > 0 ? Status::failure("the target has cells whose point ids are out of range")
+                                                   : checkSoup(soup);
+          !valid)
+      {
+        vtkErrorMacro("Cannot wrap: " << valid.message() << ".");
+        return false;
+      }
+      polygons = std::make_shared<const TriangleSource>(soup);
+    }
+    if (const Status made =
+          pointFields(std::make_shared<const PointSource>(points), polygons, spacing, initial != nullptr, settings, fields);
+        !made)
+    {
+      vtkErrorMacro("Cannot wrap: " << made.message() << ".");
+      return false;
+    }
+    vtkOutputWindowDisplayText(("Shrink Wrap: " + std::string(use.polygons ? "the target's polygons and the " : "the target's ") +
+      std::to_string(points.size()) + (use.polygons ? " points beside them" : " points") + " are wrapped" +
+      (this->InputGeometry == AUTOMATIC ? " (it has no polygons)" : "") + ".\n").c_str());
   }
   TriangleSurface given;
   if (initial && !convert::surfaceOf(initial, given))
@@ -625,6 +682,7 @@ void vtkShrinkWrapFilter::WriteOutput(int wanted, bool finished, vtkPolyData* ou
 void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "InputGeometry: " << convert::geometryName(this->InputGeometry) << "\n";
   os << indent << "TimeStep: " << this->TimeStep << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "SubdivisionLevel: " << this->SubdivisionLevel << "\n";

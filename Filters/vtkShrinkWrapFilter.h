@@ -13,7 +13,9 @@
  * resumes from the cache.
  *
  * Inputs: port 0, the target (vtkPolyData with polygons, or any vtkDataSet with cells, wrapped by its
- * outer surface as vtkDataSetSurfaceFilter gives it); it may also hold the target's distance field (an
+ * outer surface as vtkDataSetSurfaceFilter gives it; without polygons or 3-D cells, or with
+ * InputGeometry POINTS, its points are wrapped: a scan, sampled points, vertices, issue #13; with
+ * POLYGONS_AND_POINTS, both); it may also hold the target's distance field (an
  * image with SignedDistance, as when both are selected as the filter is created in ParaView), which
  * then counts as port 1's. Port 1 (optional), "DistanceField": a
  * vtkImageData with a point array "SignedDistance", e.g. from Mesh Signed Distance; otherwise one is
@@ -76,6 +78,14 @@ public:
     VOLUME = 2
   };
 
+  enum InputGeometries
+  {
+    AUTOMATIC = 0, ///< the polygons (and 3-D cells' surface) when the target has any, else its points
+    POLYGONS = 1,  ///< the polygons only; a target without any is an error
+    POINTS = 2,    ///< every point of the target, the polygons' corners included
+    POLYGONS_AND_POINTS = 3 ///< the polygons and the points none of them uses, wrapped together
+  };
+
   enum StartingShapes
   {
     ICOSPHERE = 0,
@@ -86,6 +96,15 @@ public:
   void SetDistanceFieldConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   /// Port 2: a closed triangle surface to start from (optional).
   void SetInitialSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
+
+  ///@{
+  /// What of the target is wrapped: AUTOMATIC (default), POLYGONS, POINTS or POLYGONS_AND_POINTS
+  /// (InputGeometries). POINTS wraps a mesh whose polygons are not to be trusted (a scanner's
+  /// triangles) as a cloud; POLYGONS_AND_POINTS wraps a model and a scan (its vertices) together, the
+  /// automatic sizes following the points' spacing.
+  vtkSetClampMacro(InputGeometry, int, AUTOMATIC, POLYGONS_AND_POINTS);
+  vtkGetMacro(InputGeometry, int);
+  ///@}
 
   ///@{
   /// tau, the time step. Default 0.015.
@@ -264,6 +283,7 @@ protected:
   shrinkwrap::WrapSettings CoreSettings() const;
 
   // Defaults: the constructor takes them from shrinkwrap::WrapSettings, where they are stated once.
+  int InputGeometry = AUTOMATIC;
   double TimeStep;
   int NumberOfSteps;
   int SubdivisionLevel;

@@ -2,6 +2,8 @@
 //
 //   BenchSignedDistance <mesh.obj|.off> [--runs N] [--resolutions 90,120,180,240] [--no-vtk] [--no-accuracy]
 //   BenchSignedDistance <mesh> --memory R     (peak memory of one run at resolution R, fresh process)
+//   BenchSignedDistance <mesh> --points N      (issue #13: N points sampled on the mesh, measured as a
+//                                               cloud, beside the mesh's field on the same grid)
 //
 // For every resolution: Mesh Signed Distance (the filter, median of N runs, with the core's stage
 // times), OpenVDB meshToVolume (narrow band of 3 voxels; and that band plus fast sweeping over the
@@ -11,9 +13,11 @@
 #include "Parallel.h"
 #include "SignedDistance.h"
 #include "TestUtilities.h"
+#include "WrapEvaluation.h"
 #include "vtkMeshSignedDistance.h"
 
 #include <vtkImplicitPolyDataDistance.h>
+#include <vtkPoints.h>
 #include <vtkOBJReader.h>
 
 #include <openvdb/openvdb.h>
@@ -136,16 +140,66 @@ long currentRssKiB()
   }
   return 0;
 }
+// Issue #13's speed class: the field of N points sampled on the mesh beside the mesh's own field, on
+// the same grid (the mesh's), same run; its accuracy against the exact distance to the nearest point.
+void pointRows(vtkPolyData* mesh, const shrinkwrap::TriangleSoup& soup, int count, const std::vector<int>& resolutions,
+  int runs)
+{
+  std::vector<shrinkwrap::Vec3> cloud = testing::samplePoints(soup, count, 7);
+  cloud.erase(cloud.begin(), cloud.begin() + static_cast<std::ptrdiff_t>(soup.points.size())); // samples only
+  vtkNew<vtkPoints> points;
+  for (const shrinkwrap::Vec3& p : cloud)
+    points->InsertNextPoint(p.data());
+  vtkNew<vtkPolyData> input;
+  input->SetPoints(points);
+  std::printf("%d points sampled on the mesh, %d runs per figure (median)\n\n", count, runs);
+  std::printf("| grid | nodes | mesh field | **points field** | ratio points / mesh | points mean err | points max err |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  for (int resolution : resolutions)
+  {
+    vtkNew<vtkMeshSignedDistance> meshField, pointField;
+    meshField->SetInputData(mesh);
+    meshField->SetResolution(resolution);
+    meshField->SetOffsetFactor(shrinkwrap::kPaperOffsetFactor);
+    meshField->Update();
+    const shrinkwrap::GridLattice lattice = testing::latticeOf(meshField->GetOutput());
+    pointField->SetInputData(input);
+    pointField->UseExplicitGridOn();
+    const shrinkwrap::Box box = lattice.bounds();
+    pointField->SetOutputBounds(box.min.x(), box.max.x(), box.min.y(), box.max.y(), box.min.z(), box.max.z());
+    pointField->SetOutputDimensions(lattice.dims[0], lattice.dims[1], lattice.dims[2]);
+    std::vector<double> meshTimes, pointTimes; // interleaved: the machine's noise hits both
+    for (int r = 0; r < runs; ++r)
+    {
+      meshField->Modified();
+      meshTimes.push_back(seconds([&] { meshField->Update(); }));
+      pointField->Modified();
+      pointTimes.push_back(seconds([&] { pointField->Update(); }));
+    }
+    shrinkwrap::TriangleSoup pointSoup; // one triangle {i, i, i} per point: the exact nearest point
+    pointSoup.points = cloud;
+    for (int i = 0; i < static_cast<int>(cloud.size()); ++i)
+      pointSoup.triangles.push_back({ i, i, i });
+    const std::vector<float> exact = exactDistances(pointSoup, lattice);
+    auto* values = vtkFloatArray::SafeDownCast(pointField->GetOutput()->GetPointData()->GetArray("SignedDistance"));
+    const Accuracy accuracy =
+      accuracyOf(lattice, exact, [&](int i, int j, int k) { return values->GetValue(lattice.index(i, j, k)); });
+    std::printf("| %dx%dx%d | %lld | %.3f | **%.3f** | %.2f | %.3f h | %.3f h |\n", lattice.dims[0] - 1,
+      lattice.dims[1] - 1, lattice.dims[2] - 1, static_cast<long long>(lattice.nodeCount()), median(meshTimes),
+      median(pointTimes), median(pointTimes) / median(meshTimes), accuracy.mean, accuracy.max);
+  }
+}
 } // namespace
 
 int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::cerr << "usage: BenchSignedDistance mesh [--runs N] [--resolutions a,b] [--no-vtk] [--no-accuracy] [--memory R]\n";
+    std::cerr << "usage: BenchSignedDistance mesh [--runs N] [--resolutions a,b] [--no-vtk] [--no-accuracy] [--memory R] "
+                 "[--points N]\n";
     return 2;
   }
-  int runs = 5, memoryResolution = 0;
+  int runs = 5, memoryResolution = 0, pointCount = 0;
   bool runVtk = true, runAccuracy = true;
   std::vector<int> resolutions = { 90, 120, 180, 240 };
   for (int a = 2; a < argc; ++a)
@@ -167,6 +221,8 @@ int main(int argc, char* argv[])
       runAccuracy = false;
     else if (arg == "--memory" && a + 1 < argc)
       memoryResolution = std::atoi(argv[++a]);
+    else if (arg == "--points" && a + 1 < argc)
+      pointCount = std::atoi(argv[++a]);
   }
 
   vtkSmartPointer<vtkPolyData> mesh = load(argv[1]);
@@ -177,6 +233,11 @@ int main(int argc, char* argv[])
   }
   const shrinkwrap::TriangleSoup soup = testing::triangulated(mesh);
 
+  if (pointCount > 0)
+  {
+    pointRows(mesh, soup, pointCount, resolutions, runs);
+    return 0;
+  }
   if (memoryResolution > 0)
   {
     const long before = currentRssKiB();

@@ -23,6 +23,14 @@ echo "The same on CGAL's bunny00 (closed, so the field is signed), without the V
 echo
 "$bench" "$build/cgal/data/meshes/bunny00.off" --runs 5 --no-vtk 2>/dev/null | grep "^|"
 echo
+echo "Points (issue #13): the unsigned field of 20,000 and 200,000 points sampled on the same mesh (an input"
+echo "without polygons), beside the mesh's own field on the same grid, interleaved in the same run; errors"
+echo "against the exact distance to the nearest point:"
+for count in 20000 200000; do
+  echo
+  "$bench" "$mesh" --runs 5 --points "$count" --resolutions 90,120,180,240 2>/dev/null | grep -v "^COMPONENT"
+done
+echo
 echo "Peak memory (fresh process):"
 echo
 for r in 240; do echo "- $("$bench" "$mesh" --memory $r 2>/dev/null | grep memory)"; done

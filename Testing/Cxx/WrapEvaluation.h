@@ -34,7 +34,7 @@ struct WrapFigures
   double smallAngles = 0; // percent of triangles with a minimum angle below 20 degrees
 };
 
-// `count` points uniformly by area on the soup, then its vertices.
+// The soup's vertices, then `count` points uniformly by area on it.
 inline std::vector<shrinkwrap::Vec3> samplePoints(const shrinkwrap::TriangleSoup& soup, int count, unsigned seed = 1)
 {
   using shrinkwrap::Vec3;

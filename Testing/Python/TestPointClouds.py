@@ -3,7 +3,7 @@ manifold surface of the right genus that lies on the sampled shape (distances bo
 sampled over both surfaces, as the wrap benchmark measures them, in % of the diagonal); the wrap's
 Distance array is the distance to the nearest input point; a noisy sphere wraps inside its noise
 band; Mesh Signed Distance gives the unsigned
-distance to the points; bad point input gets a clear error and an empty output, and the pipeline
+distance to the points, and Input Geometry chooses polygons, points or both of a mixed input (for both filters); bad point input gets a clear error and an empty output, and the pipeline
 lives on.
 
 Usage: pvpython TestPointClouds.py <ShrinkWrap plugin .so>
@@ -18,7 +18,7 @@ from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import reference, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkStaticCellLocator
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkStaticCellLocator
 
 from checks import check, finish
 
@@ -164,6 +164,113 @@ check(field.GetFieldData().GetArray("Signed").GetValue(0) == 0 and (values >= 0)
       np.all(values >= exact - 1e-5 * h) and np.abs(values - exact).mean() < 0.1 * h,
       "Mesh Signed Distance of points: unsigned, never below the exact distance, mean error %.4f h"
       % (np.abs(values - exact).mean() / h))
+
+# Input Geometry: a sphere's triangles with three loose points (vertex cells) beside it. Polygons: the
+# signed field of the triangles alone; Points: the unsigned distance to the nearest of all points;
+# Polygons and Points: the unsigned distance to the nearest triangle or loose point (each against
+# brute force: the cell locator over the cells used, never below it, on average within a tenth of a
+# cell); Polygons of a cloud: a clear error.
+sphere = servermanager.Fetch(Sphere(Radius=1.0, ThetaResolution=24, PhiResolution=24))
+loose = np.array([[1.6, 0, 0], [0, -1.5, 0.2], [0.3, 0.2, 1.7]])
+mixed = vtkPolyData()
+mixed.DeepCopy(sphere)
+mixed.GetPointData().Initialize()
+vertices = vtkCellArray()
+for q in loose:
+    vertices.InsertNextCell(1, [mixed.GetPoints().InsertNextPoint(q)])
+mixed.SetVerts(vertices)
+mixed_source = TrivialProducer()
+mixed_source.GetClientSideObject().SetOutput(mixed)
+all_points = vtk_to_numpy(mixed.GetPoints().GetData()).astype(float)
+for choice in ("Polygons", "Points", "Polygons and Points"):
+    field = servermanager.Fetch(MeshSignedDistance(Input=mixed_source, Resolution=24, InputGeometry=choice))
+    values = vtk_to_numpy(field.GetPointData().GetArray("SignedDistance"))
+    nodes = np.array([field.GetPoint(i) for i in range(field.GetNumberOfPoints())])
+    h = field.GetSpacing()[0]
+    signed = field.GetFieldData().GetArray("Signed").GetValue(0) == 1
+    if choice == "Polygons":
+        exact = distance_to(sphere, nodes)
+        error = np.abs(np.abs(values) - exact)
+        ok = signed and values[np.argmin(np.linalg.norm(nodes - loose[0], axis=1))] > 0.4
+    elif choice == "Points":
+        exact = np.array([np.min(np.linalg.norm(all_points - q, axis=1)) for q in nodes])
+        error = values - exact
+        ok = not signed and (error >= -1e-5 * h).all()
+    else:
+        exact = distance_to(mixed, nodes)
+        error = values - exact
+        ok = not signed and (error >= -1e-5 * h).all()
+    check(ok and np.abs(error).mean() < 0.1 * h and np.abs(error).max() < 1.0 * h,
+          "Mesh Signed Distance, Input Geometry %s: %s, mean error %.4f h, largest %.3f h"
+          % (choice, "signed" if signed else "unsigned", np.abs(error).mean() / h, np.abs(error).max() / h))
+
+# Shrink Wrap, Input Geometry Points: the sphere mesh's points wrap as a cloud (its Distance array is
+# the distance to the nearest point, not to the triangles); Polygons of a cloud: a clear error.
+sphere_source = TrivialProducer()
+sphere_source.GetClientSideObject().SetOutput(sphere)
+wrap = ShrinkWrap(Input=sphere_source, InputGeometry="Points")
+wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+out = servermanager.Fetch(wrap)
+sphere_points_used = vtk_to_numpy(sphere.GetPoints().GetData()).astype(float)
+if out.GetNumberOfPoints() == 0:
+    check(False, "Shrink Wrap of a mesh's points: a wrap")
+else:
+    g, closed = genus(out)
+    wp = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
+    distance = vtk_to_numpy(out.GetPointData().GetArray("Distance"))
+    exact = np.array([np.min(np.linalg.norm(sphere_points_used - q, axis=1)) for q in wp[:500]])
+    check(closed and g == 0 and np.allclose(np.abs(distance[:500]), exact, rtol=0, atol=1e-5),
+          "Shrink Wrap, Input Geometry Points, of a sphere mesh: closed, genus %d, Distance to the nearest point" % g)
+# Polygons and Points: the sphere's triangles and a ball of loose points (vertex cells) bulging out of
+# it wrap together: one closed surface of genus 0 that reaches the ball's outer points and lies on the
+# sphere; with Polygons the same input wraps the sphere alone, far from the ball's top.
+ball = 0.3 * sphere_points(1500) + np.array([1.2, 0, 0])
+bulging = vtkPolyData()
+bulging.DeepCopy(sphere)
+bulging.GetPointData().Initialize()
+vertices = vtkCellArray()
+for q in ball:
+    vertices.InsertNextCell(1, [bulging.GetPoints().InsertNextPoint(q)])
+bulging.SetVerts(vertices)
+bulging_source = TrivialProducer()
+bulging_source.GetClientSideObject().SetOutput(bulging)
+outer = ball[np.linalg.norm(ball, axis=1) > 1.05]  # the ball's points outside the sphere
+on_sphere = vtk_to_numpy(sphere.GetPoints().GetData()).astype(float)
+on_sphere = on_sphere[np.linalg.norm(on_sphere - [1.2, 0, 0], axis=1) > 0.45]  # away from the ball
+diagonal = np.linalg.norm(np.ptp(np.vstack([on_sphere, ball]), axis=0))
+for choice in ("Polygons and Points", "Polygons"):
+    wrap = ShrinkWrap(Input=bulging_source, InputGeometry=choice)
+    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+    out = servermanager.Fetch(wrap)
+    if out.GetNumberOfPoints() == 0:
+        check(False, "Shrink Wrap, Input Geometry %s: a wrap" % choice)
+        continue
+    g, closed = genus(out)
+    to_ball = 100 * distance_to(out, outer) / diagonal
+    to_sphere = 100 * distance_to(out, on_sphere) / diagonal
+    if choice == "Polygons":
+        check(closed and g == 0 and to_ball.max() > 5 and to_sphere.mean() < 0.2,
+              "Shrink Wrap, Input Geometry Polygons, of a sphere with loose points: the sphere alone (the ball's top "
+              "%.1f%% of the diagonal away, the sphere %.3f%%)" % (to_ball.max(), to_sphere.mean()))
+    else:
+        check(closed and g == 0 and to_ball.mean() < 0.2 and to_ball.max() < 1.0 and to_sphere.mean() < 0.2,
+              "Shrink Wrap, Input Geometry Polygons and Points: closed, genus %d; the ball's outer points %.3f%% of the "
+              "diagonal from the wrap on average, largest %.2f%%; the sphere's vertices %.3f%% (bars 0.2%%, 1%%, 0.2%%)"
+              % (g, to_ball.mean(), to_ball.max(), to_sphere.mean()))
+
+for name, make, source in (("Mesh Signed Distance", MeshSignedDistance, cloud(sphere_points(500))),
+                           ("Shrink Wrap", ShrinkWrap, cloud(sphere_points(500)))):
+    f = make(Input=source, InputGeometry="Polygons")
+    said_errors = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, message):
+        said_errors.append(message)
+
+    f.GetClientSideObject().AddObserver("ErrorEvent", on_error)
+    f.UpdatePipeline()
+    check(servermanager.Fetch(f).GetNumberOfPoints() == 0 and "Input Geometry is Polygons" in " ".join(said_errors),
+          "%s, Input Geometry Polygons, of points: a clear error, an empty output" % name)
 
 # Bad point input: a clear error and an empty output; then the same filter wraps a good cloud.
 bad = (("one point", [[1, 2, 3]], "coincide"), ("all points equal", [[1, 2, 3]] * 5, "coincide"),

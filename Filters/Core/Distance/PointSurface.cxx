@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace shrinkwrap
@@ -24,14 +25,31 @@ constexpr double kMinPivot = 1e-6;     // of the quadric's normal equations, rel
 constexpr double kMaxLift = 0.2;       // in widths: the most a quadric may move the plane's surface point
 } // namespace
 
+PointSurface::Scale::Scale(std::vector<Vec3> sample, double w)
+  : width(w)
+  , points(std::move(sample))
+  , grid(this->points, kCutoff * w)
+{
+}
+
 PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double width)
   : Points(std::move(points))
 {
-  this->Scales.reserve(kScales);
+  const std::vector<Vec3>& all = this->Points->points();
   for (int s = 0; s < kScales; ++s)
   {
-    const double w = width * (1 << s);
-    this->Scales.push_back({ w, PointGrid(this->Points->points(), kCutoff * w) });
+    // One point in 4^s, picked by a hash of its index (not by stride: a scanner's order has rows).
+    const std::uint64_t mask = (std::uint64_t(1) << (2 * s)) - 1;
+    std::vector<Vec3> sample;
+    sample.reserve(all.size() >> (2 * s));
+    for (std::size_t i = 0; i < all.size(); ++i)
+    {
+      if ((((i + 1) * 0x9E3779B97F4A7C15ull) >> 40 & mask) == 0)
+      {
+        sample.push_back(all[i]);
+      }
+    }
+    this->Scales.push_back(std::make_unique<const Scale>(std::move(sample), width * (1 << s)));
   }
 }
 
@@ -40,7 +58,7 @@ void PointSurface::gather(const Vec3& centre, const Scale& scale, Neighbourhood&
   around.centre = centre;
   around.offsets.clear();
   around.weights.clear();
-  const std::vector<Vec3>& points = this->Points->points();
+  const std::vector<Vec3>& points = scale.points;
   const double inverse = 1 / (scale.width * scale.width);
   scale.grid.forEachWithin(centre, kCutoff * scale.width, [&](int id) {
     const Vec3 d = points[id] - centre;
@@ -127,12 +145,12 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
   // The finest scale at which the points around the nearest one look flat: noise thicker than a
   // fraction of the width hides the plane until the width outgrows it.
   const Scale* scale = nullptr;
-  for (const Scale& s : this->Scales)
+  for (const auto& s : this->Scales)
   {
-    this->gather(nearest.point, s, around);
+    this->gather(nearest.point, *s, around);
     if (fit(around, plane))
     {
-      scale = &s;
+      scale = s.get();
       break;
     }
   }

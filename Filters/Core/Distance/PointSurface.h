@@ -3,7 +3,8 @@
 // weights of width h), fitted again about x's foot on it, and over that plane a quadratic height field
 // (moving least squares). Driven by the distance to the nearest point, a wrap dimples towards every
 // point; driven by this it lands between them on the sampled surface, and averages noise over a
-// neighbourhood instead of following it; where noise hides the plane at h, at 2 h or 4 h. Where no plane fits, nothing is found and the caller's grid
+// neighbourhood instead of following it; where noise hides the plane at h, at 2 h or 4 h (over a quarter
+// or a sixteenth of the points: a wider fit averages as many points, not more). Where no plane fits, nothing is found and the caller's grid
 // decides: no points or no flat neighbourhood around the foot (a part thinner than h), or points on
 // one side of it only (a gap's rim), which fades the answer's trust out.
 #ifndef ShrinkWrap_PointSurface_h
@@ -43,10 +44,12 @@ private:
     std::vector<Vec3> offsets;
     std::vector<double> weights;
   };
-  struct Scale // a width and the points binned for it
+  struct Scale // a width and the points binned for it: at 2^s h, one point in 4^s (as many per fit)
   {
+    Scale(std::vector<Vec3> sample, double w);
     double width;
-    PointGrid grid;
+    std::vector<Vec3> points;
+    PointGrid grid; // of `points`
   };
   void gather(const Vec3& centre, const Scale& scale, Neighbourhood& around) const;
   // The plane fitted to a neighbourhood; false where none fits.
@@ -56,7 +59,7 @@ private:
   static double height(const Neighbourhood& around, const Vec3& foot, const Plane& plane, double width);
 
   std::shared_ptr<const PointSource> Points;
-  std::vector<Scale> Scales; // finest first
+  std::vector<std::unique_ptr<const Scale>> Scales; // finest first
 };
 
 } // namespace shrinkwrap

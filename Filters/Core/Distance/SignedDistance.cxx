@@ -6,6 +6,7 @@
 #include "ClosestPointSweep.h"
 #include "EikonalSweep.h"
 #include "PointSource.h"
+#include "UnionSource.h"
 #include "SignVotes.h"
 #include "WindingSign.h"
 
@@ -121,7 +122,12 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
       s << "; " << r.reorientedTriangles << " triangles faced against their neighbours and were turned";
     }
   };
-  if (r.points > 0)
+  if (r.points > 0 && r.triangles > 0)
+  {
+    s << "unsigned: distances to the nearest of " << r.triangles << " triangles and " << r.points
+      << " input points (points have no inside)";
+  }
+  else if (r.points > 0)
   {
     s << "unsigned: distances to the nearest of " << r.points << " input points (points have no inside)";
   }
@@ -304,6 +310,25 @@ SignedDistanceResult computePointDistance(const PointSource& source, const GridL
     result = computeSignedDistance(source, lattice, unsignedSettings, distance, progress);
   }
   result.points = static_cast<long long>(source.points().size());
+  return result;
+}
+
+SignedDistanceResult computeUnionDistance(const TriangleSoup& soup, const std::vector<Vec3>& points,
+  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+{
+  const auto clock = std::chrono::steady_clock::now();
+  const UnionSource source({ std::make_shared<const TriangleSource>(soup), std::make_shared<const PointSource>(points) });
+  const double treeSeconds = secondsSince(clock);
+  SignedDistanceSettings unsignedSettings = settings;
+  unsignedSettings.computeSign = false;
+  SignedDistanceResult result;
+  if (progress.report(0.05))
+  {
+    result = computeSignedDistance(source, lattice, unsignedSettings, distance, progress);
+  }
+  result.treeSeconds = treeSeconds;
+  result.points = static_cast<long long>(points.size());
+  result.triangles = static_cast<long long>(soup.triangles.size());
   return result;
 }
 

@@ -55,6 +55,7 @@ struct SignedDistanceResult
   long long unconfirmedTriangles = 0; // inside another part or crossing one (by the winding number)
   long long windingEvaluations = 0;   // nodes whose side the winding number gave
   long long points = 0;               // > 0: measured from this many input points (unsigned)
+  long long triangles = 0;            // with points: and from this many triangles (a union, unsigned)
   // Seconds per stage.
   double treeSeconds = 0, outlineSeconds = 0, bandSeconds = 0, sweepSeconds = 0, signSeconds = 0;
 };
@@ -85,6 +86,10 @@ SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 SignedDistanceResult computePointDistance(const PointSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
+// The unsigned distance to the nearest of the soup's triangles and the points (a mesh with loose
+// points, a scan beside a model; UnionSource.h).
+SignedDistanceResult computeUnionDistance(const TriangleSoup& soup, const std::vector<Vec3>& points,
+  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 
 // Why points have no distance field, if they have none: none at all, or NaN, infinite or out-of-range
 // coordinates.

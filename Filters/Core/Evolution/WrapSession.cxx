@@ -3,6 +3,7 @@
 #include "Components.h"
 #include "Parallel.h"
 #include "PointSurface.h"
+#include "UnionSource.h"
 #include "StabilityScaling.h"
 
 #include <Eigen/Eigenvalues>
@@ -190,7 +191,7 @@ WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacin
 }
 
 Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> points, double spacing,
-  const WrapSettings& settings, const Contour& contour, WrapFields& fields)
+  const WrapSettings& settings, const Contour& contour, WrapFields& fields, std::shared_ptr<const DistanceSource> polygons)
 {
   // Points sample a sheet: the union of balls around them is a shell, and a closing that eroded it
   // from the inside as well would open every gap between the points again. Without the walls of its
@@ -212,12 +213,19 @@ Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> poi
   {
     surface = std::make_shared<const PointSurface>(points, kFitWidthPerSpacing * spacing);
   }
-  fields.driving = TargetDistance(std::move(closed), surface, settings.exactBand, true);
+  std::shared_ptr<const DistanceSource> exact = points;
+  if (polygons)
+  {
+    surface = surface ? std::make_shared<const UnionSource>(std::vector<std::shared_ptr<const DistanceSource>>{ polygons, surface })
+                      : polygons;
+    exact = std::make_shared<const UnionSource>(std::vector<std::shared_ptr<const DistanceSource>>{ polygons, points });
+  }
+  fields.driving = TargetDistance(std::move(closed), settings.exactNearTarget ? surface : nullptr, settings.exactBand, true);
   // The wrap lies within half the gap of a point (inside the union of balls the closing erodes): a band
   // that wide makes the Distance array exact at every vertex.
   const double cell = grid.lattice().spacing.maxCoeff();
   const double band = std::max(settings.exactBand, 0.5 * settings.gapSize / cell + 1);
-  fields.target = TargetDistance(std::move(grid), settings.exactNearTarget ? points : nullptr, band, false);
+  fields.target = TargetDistance(std::move(grid), settings.exactNearTarget ? exact : nullptr, band, false);
   return {};
 }
 

@@ -70,10 +70,6 @@ struct WrapFields
 // itself for the near field; `settings` resolved.
 Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const DistanceSource> exact,
   const WrapSettings& settings, const Contour& contour, WrapFields& fields);
-// The fields of a wrap onto points (issue #13) from their unsigned grid: the wrap is driven by the
-// distance to the points closed by a ball of half the gap size (the union of balls around them,
-// eroded: a surface through the outer points that spans the gaps between them), and its closeness
-// is measured to the points themselves.
 // Why points cannot be wrapped, if they cannot: they coincide, or lie on a line or in a plane (within
 // 1e-6 of their extent), so they enclose nothing. (checkPoints first: finite, not empty.)
 Status checkPointsEnclose(const std::vector<Vec3>& points);
@@ -82,8 +78,15 @@ Status checkPointsEnclose(const std::vector<Vec3>& points);
 // Gap Size, at least a few cells of the field computed for them (placed with `givenStart`) so that the
 // grid resolves the closing.
 WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacing, bool givenStart);
+// The fields of a wrap onto points (issue #13) from their unsigned grid: the wrap is driven by the
+// distance to the points closed by a ball of half the gap size (the union of balls around them,
+// eroded: a surface through the outer points that spans the gaps between them), and its closeness
+// is measured to the points themselves. `polygons`, if given, are wrapped with the points (Input
+// Geometry "Polygons and Points"): `grid` is then the distance to both, and near them the wrap lands
+// on the nearer of the polygons and the points' fitted surface.
 Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> points, double spacing,
-  const WrapSettings& settings, const Contour& contour, WrapFields& fields);
+  const WrapSettings& settings, const Contour& contour, WrapFields& fields,
+  std::shared_ptr<const DistanceSource> polygons = nullptr);
 
 class WrapSession
 {

@@ -79,7 +79,8 @@ int TestPropertyDefaults(int argc, char* argv[])
 
   vtkNew<vtkMeshSignedDistance> m;
   compare("MeshSignedDistance", xmlDefaults(xml, "MeshSignedDistance"),
-    { { "SetResolution", [&] { return std::vector<double>{ double(m->GetResolution()) }; } },
+    { { "SetInputGeometry", [&] { return std::vector<double>{ double(m->GetInputGeometry()) }; } },
+      { "SetResolution", [&] { return std::vector<double>{ double(m->GetResolution()) }; } },
       { "SetCellSize", [&] { return std::vector<double>{ m->GetCellSize() }; } },
       { "SetComputeSign", [&] { return std::vector<double>{ double(m->GetComputeSign()) }; } },
       { "SetBoxScale", [&] { return std::vector<double>{ m->GetBoxScale() }; } },
@@ -101,7 +102,8 @@ int TestPropertyDefaults(int argc, char* argv[])
   vtkNew<vtkShrinkWrapFilter> w;
   auto one = [](double x) { return std::vector<double>{ x }; };
   compare("ShrinkWrap", xmlDefaults(xml, "ShrinkWrap"),
-    { { "SetTimeStep", [&] { return one(w->GetTimeStep()); } },
+    { { "SetInputGeometry", [&] { return one(w->GetInputGeometry()); } },
+      { "SetTimeStep", [&] { return one(w->GetTimeStep()); } },
       { "SetNumberOfSteps", [&] { return one(w->GetNumberOfSteps()); } },
       { "SetStartingShape", [&] { return one(w->GetStartingShape()); } },
       { "SetSubdivisionLevel", [&] { return one(w->GetSubdivisionLevel()); } },

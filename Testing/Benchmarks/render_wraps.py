@@ -14,6 +14,8 @@ panels = [(name + "_target.vtp", name + " (target)"),
           (name + "_shrinkwrap.vtp", "Shrink Wrap, defaults"),
           (name + "_alphawrap_50.vtp", "CGAL alpha_wrap_3, alpha = diag/50")]
 panels = [p for p in panels if os.path.exists(os.path.join(folder, p[0]))]
+if not panels:
+    sys.exit("render_wraps.py: no %s_*.vtp in %s" % (name, folder))
 layout = CreateLayout("wraps")
 cells = [0]
 for i in range(1, len(panels)):  # split the last cell: 1/n to the left, the rest to the right

@@ -339,9 +339,9 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
   }
   const convert::PolygonMeshes input = convert::polygonMeshes(targetData);
   vtkPolyData* target = input.meshes.empty() ? nullptr : input.meshes[0];
-  const convert::Geometry use =
-    convert::chooseGeometry(this->InputGeometry, target && target->GetNumberOfPolys() + target->GetNumberOfStrips() > 0);
-  if (use.polygons && !(target && target->GetNumberOfPolys() + target->GetNumberOfStrips() > 0))
+  const bool hasPolygons = target && target->GetNumberOfPolys() + target->GetNumberOfStrips() > 0;
+  const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, hasPolygons);
+  if (use.polygons && !hasPolygons)
   {
     vtkErrorMacro("Cannot wrap: the target has no polygons or 3-D cells, and Input Geometry is Polygons; choose "
                   "Automatic or Points to wrap its points.");

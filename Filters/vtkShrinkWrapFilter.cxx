@@ -213,7 +213,7 @@ int vtkShrinkWrapFilter::RequestInformation(
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), n + 1);
   const double range[2] = { 0.0, n * tau };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  this->FieldCellSize = this->PlannedFieldCell(inputVector);
+  onAllCores([&] { this->FieldCellSize = this->PlannedFieldCell(inputVector); }); // its points' spacing is threaded
   return 1;
 }
 

@@ -1,5 +1,6 @@
 #include "PointSource.h"
 
+#include "Parallel.h"
 #include "PointGrid.h"
 
 #include <algorithm>
@@ -76,11 +77,13 @@ double medianNeighbourDistance(const std::vector<Vec3>& points)
   for (double radius = cell; radius <= 64 * cell; radius *= 4)
   {
     const PointGrid grid(points, radius);
-    std::vector<double> nearest;
-    for (std::size_t i = 0; i < n; i += stride)
-    {
-      nearest.push_back(grid.neighbourDistance(static_cast<int>(i), radius));
-    }
+    std::vector<double> nearest((n + stride - 1) / stride);
+    parallelFor(0, static_cast<vtkIdType>(nearest.size()), [&](vtkIdType b, vtkIdType e) {
+      for (vtkIdType k = b; k < e; ++k)
+      {
+        nearest[k] = grid.neighbourDistance(static_cast<int>(k * stride), radius);
+      }
+    });
     std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
     if (const double median = nearest[nearest.size() / 2]; median < std::numeric_limits<double>::infinity())
     {

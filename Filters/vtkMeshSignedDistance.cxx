@@ -205,16 +205,34 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
   cloud = shrinkwrap::TriangleSoup();
   if (use.points)
   {
-    // A point cloud, or the points beside the polygons (issue #13).
-    cloud.points = convert::pointsOf(data);
+    // A point cloud, or the points beside the polygons (issue #13): the polygons' own corners lie on
+    // them already.
+    if (use.polygons)
+    {
+      for (vtkPolyData* mesh : meshes)
+      {
+        const std::vector<shrinkwrap::Vec3> loose = convert::loosePointsOf(mesh);
+        cloud.points.insert(cloud.points.end(), loose.begin(), loose.end());
+      }
+      if (cloud.points.empty())
+      {
+        vtkWarningMacro("Input Geometry is Polygons and Points, but every point of the input lies on its polygons: "
+                        "the polygons are measured.");
+        return true;
+      }
+    }
+    else
+    {
+      cloud.points = convert::pointsOf(data);
+    }
     if (const shrinkwrap::Status status = shrinkwrap::checkPoints(cloud.points); !status)
     {
       vtkErrorMacro("Cannot measure distances: " << status.message() << ".");
       return false;
     }
     vtkOutputWindowDisplayText(("Mesh Signed Distance: the field is the unsigned distance to the nearest of " +
-      std::string(use.polygons ? "the input's polygons and " : "") + "its " + std::to_string(cloud.points.size()) +
-      " points" + (this->InputGeometry == AUTOMATIC ? " (it has no polygons)" : "") + ".\n").c_str());
+      std::string(use.polygons ? "the input's polygons and " : "its ") + std::to_string(cloud.points.size()) +
+      (use.polygons ? " points beside them" : " points") + (this->InputGeometry == AUTOMATIC ? " (it has no polygons)" : "") + ".\n").c_str());
     bounds.extend(shrinkwrap::Box::around(cloud.points));
   }
   return true;

@@ -60,7 +60,7 @@ public:
     AUTOMATIC = 0, ///< the polygons (and 3-D cells' surface) when there are any, else the points
     POLYGONS = 1,  ///< the polygons only; an input without any is an error
     POINTS = 2,    ///< every point of the input, the polygons' corners included (unsigned)
-    POLYGONS_AND_POINTS = 3 ///< the nearest of the polygons and the points (unsigned)
+    POLYGONS_AND_POINTS = 3 ///< the nearest of the polygons and the points none of them uses (unsigned)
   };
 
   enum SweepMethods

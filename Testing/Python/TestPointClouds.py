@@ -26,15 +26,37 @@ LoadPlugin(sys.argv[1], ns=globals())
 rng = np.random.default_rng(13)
 
 
+def producer(data):
+    """A data object as a pipeline source."""
+    source = TrivialProducer()
+    source.GetClientSideObject().SetOutput(data)
+    return source
+
+
 def cloud(points):
     """A points-only polydata (no cells) as a pipeline source."""
     p = vtkPoints()
     p.SetData(numpy_to_vtk(np.ascontiguousarray(points, dtype=np.float64), deep=1))
     data = vtkPolyData()
     data.SetPoints(p)
-    source = TrivialProducer()
-    source.GetClientSideObject().SetOutput(data)
-    return source
+    return producer(data)
+
+
+def with_loose_points(mesh, points):
+    """A copy of a mesh with extra points, a vertex cell each (on none of its polygons)."""
+    data = vtkPolyData()
+    data.DeepCopy(mesh)
+    data.GetPointData().Initialize()
+    vertices = vtkCellArray()
+    for q in points:
+        vertices.InsertNextCell(1, [data.GetPoints().InsertNextPoint(q)])
+    data.SetVerts(vertices)
+    return data
+
+
+def nearest_point_distance(points, queries):
+    """Each query's distance to the nearest of the points (brute force)."""
+    return np.array([np.min(np.linalg.norm(points - q, axis=1)) for q in queries])
 
 
 def wrapped(source):
@@ -119,7 +141,7 @@ for name, points, expected_genus, to_shape, diagonal in shapes:
           "%s: wrap to shape mean %.3f%%, largest %.2f%%; points to wrap mean %.3f%%, largest %.2f%% of the "
           "diagonal (bars %.2f%%, %.1f%%)" % (name, to.mean(), to.max(), back.mean(), back.max(), BAR_MEAN, BAR_LARGEST))
     distance = vtk_to_numpy(out.GetPointData().GetArray("Distance"))
-    exact = np.array([np.min(np.linalg.norm(points - q, axis=1)) for q in wp[:500]])
+    exact = nearest_point_distance(points, wp[:500])
     check(np.allclose(np.abs(distance[:500]), exact, rtol=0, atol=1e-5 * diagonal),
           "%s: the Distance array is the distance to the nearest input point" % name)
 
@@ -158,7 +180,7 @@ points = sphere_points(500)
 field = servermanager.Fetch(MeshSignedDistance(Input=cloud(points), Resolution=24))
 values = vtk_to_numpy(field.GetPointData().GetArray("SignedDistance"))
 nodes = np.array([field.GetPoint(i) for i in range(field.GetNumberOfPoints())])
-exact = np.array([np.min(np.linalg.norm(points - q, axis=1)) for q in nodes])
+exact = nearest_point_distance(points, nodes)
 h = field.GetSpacing()[0]
 check(field.GetFieldData().GetArray("Signed").GetValue(0) == 0 and (values >= 0).all() and
       np.all(values >= exact - 1e-5 * h) and np.abs(values - exact).mean() < 0.1 * h,
@@ -172,15 +194,8 @@ check(field.GetFieldData().GetArray("Signed").GetValue(0) == 0 and (values >= 0)
 # cell); Polygons of a cloud: a clear error.
 sphere = servermanager.Fetch(Sphere(Radius=1.0, ThetaResolution=24, PhiResolution=24))
 loose = np.array([[1.6, 0, 0], [0, -1.5, 0.2], [0.3, 0.2, 1.7]])
-mixed = vtkPolyData()
-mixed.DeepCopy(sphere)
-mixed.GetPointData().Initialize()
-vertices = vtkCellArray()
-for q in loose:
-    vertices.InsertNextCell(1, [mixed.GetPoints().InsertNextPoint(q)])
-mixed.SetVerts(vertices)
-mixed_source = TrivialProducer()
-mixed_source.GetClientSideObject().SetOutput(mixed)
+mixed = with_loose_points(sphere, loose)
+mixed_source = producer(mixed)
 all_points = vtk_to_numpy(mixed.GetPoints().GetData()).astype(float)
 for choice in ("Polygons", "Points", "Polygons and Points"):
     field = servermanager.Fetch(MeshSignedDistance(Input=mixed_source, Resolution=24, InputGeometry=choice))
@@ -193,7 +208,7 @@ for choice in ("Polygons", "Points", "Polygons and Points"):
         error = np.abs(np.abs(values) - exact)
         ok = signed and values[np.argmin(np.linalg.norm(nodes - loose[0], axis=1))] > 0.4
     elif choice == "Points":
-        exact = np.array([np.min(np.linalg.norm(all_points - q, axis=1)) for q in nodes])
+        exact = nearest_point_distance(all_points, nodes)
         error = values - exact
         ok = not signed and (error >= -1e-5 * h).all()
     else:
@@ -206,9 +221,7 @@ for choice in ("Polygons", "Points", "Polygons and Points"):
 
 # Shrink Wrap, Input Geometry Points: the sphere mesh's points wrap as a cloud (its Distance array is
 # the distance to the nearest point, not to the triangles); Polygons of a cloud: a clear error.
-sphere_source = TrivialProducer()
-sphere_source.GetClientSideObject().SetOutput(sphere)
-wrap = ShrinkWrap(Input=sphere_source, InputGeometry="Points")
+wrap = ShrinkWrap(Input=producer(sphere), InputGeometry="Points")
 wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
 out = servermanager.Fetch(wrap)
 sphere_points_used = vtk_to_numpy(sphere.GetPoints().GetData()).astype(float)
@@ -218,22 +231,14 @@ else:
     g, closed = genus(out)
     wp = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
     distance = vtk_to_numpy(out.GetPointData().GetArray("Distance"))
-    exact = np.array([np.min(np.linalg.norm(sphere_points_used - q, axis=1)) for q in wp[:500]])
+    exact = nearest_point_distance(sphere_points_used, wp[:500])
     check(closed and g == 0 and np.allclose(np.abs(distance[:500]), exact, rtol=0, atol=1e-5),
           "Shrink Wrap, Input Geometry Points, of a sphere mesh: closed, genus %d, Distance to the nearest point" % g)
 # Polygons and Points: the sphere's triangles and a ball of loose points (vertex cells) bulging out of
 # it wrap together: one closed surface of genus 0 that reaches the ball's outer points and lies on the
 # sphere; with Polygons the same input wraps the sphere alone, far from the ball's top.
 ball = 0.3 * sphere_points(1500) + np.array([1.2, 0, 0])
-bulging = vtkPolyData()
-bulging.DeepCopy(sphere)
-bulging.GetPointData().Initialize()
-vertices = vtkCellArray()
-for q in ball:
-    vertices.InsertNextCell(1, [bulging.GetPoints().InsertNextPoint(q)])
-bulging.SetVerts(vertices)
-bulging_source = TrivialProducer()
-bulging_source.GetClientSideObject().SetOutput(bulging)
+bulging_source = producer(with_loose_points(sphere, ball))
 outer = ball[np.linalg.norm(ball, axis=1) > 1.05]  # the ball's points outside the sphere
 on_sphere = vtk_to_numpy(sphere.GetPoints().GetData()).astype(float)
 on_sphere = on_sphere[np.linalg.norm(on_sphere - [1.2, 0, 0], axis=1) > 0.45]  # away from the ball

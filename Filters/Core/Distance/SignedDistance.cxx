@@ -299,16 +299,23 @@ SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const
   return result;
 }
 
-SignedDistanceResult computePointDistance(const PointSource& source, const GridLattice& lattice,
+namespace
+{
+// A field from points: unsigned, whatever `settings` ask (progress from 0.05 on: the source is built).
+SignedDistanceResult unsignedDistance(const DistanceSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress)
 {
   SignedDistanceSettings unsignedSettings = settings;
   unsignedSettings.computeSign = false;
-  SignedDistanceResult result;
-  if (progress.report(0.05))
-  {
-    result = computeSignedDistance(source, lattice, unsignedSettings, distance, progress);
-  }
+  return progress.report(0.05) ? computeSignedDistance(source, lattice, unsignedSettings, distance, progress)
+                               : SignedDistanceResult();
+}
+} // namespace
+
+SignedDistanceResult computePointDistance(const PointSource& source, const GridLattice& lattice,
+  const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+{
+  SignedDistanceResult result = unsignedDistance(source, lattice, settings, distance, progress);
   result.points = static_cast<long long>(source.points().size());
   return result;
 }
@@ -319,13 +326,7 @@ SignedDistanceResult computeUnionDistance(const TriangleSoup& soup, const std::v
   const auto clock = std::chrono::steady_clock::now();
   const UnionSource source({ std::make_shared<const TriangleSource>(soup), std::make_shared<const PointSource>(points) });
   const double treeSeconds = secondsSince(clock);
-  SignedDistanceSettings unsignedSettings = settings;
-  unsignedSettings.computeSign = false;
-  SignedDistanceResult result;
-  if (progress.report(0.05))
-  {
-    result = computeSignedDistance(source, lattice, unsignedSettings, distance, progress);
-  }
+  SignedDistanceResult result = unsignedDistance(source, lattice, settings, distance, progress);
   result.treeSeconds = treeSeconds;
   result.points = static_cast<long long>(points.size());
   result.triangles = static_cast<long long>(soup.triangles.size());

@@ -20,8 +20,9 @@ struct Line
   std::int32_t* site;
   std::int64_t stride;
   int length;
-  double origin; // coordinate of the first node along the line's axis
+  double origin; // coordinate of node 0 of the whole grid line along the line's axis
   double step;
+  int first = 0; // index of the line's first node on the whole grid line (a slab's column starts later)
 };
 
 // Scratch space of one thread for the lower envelope of one line.
@@ -29,7 +30,7 @@ struct Envelope
 {
   struct Parabola
   {
-    // The site's coordinate along the line, from the line's first node: the envelope's cuts subtract
+    // The site's coordinate along the line, from the line's origin: the envelope's cuts subtract
     // squares of it, which far from the origin (1e9) would lose every digit a cell has.
     double vertex;
     double offset; // squared distance from the line to the site
@@ -39,29 +40,31 @@ struct Envelope
   std::vector<int> hull;        // candidates on the lower envelope, left to right
   std::vector<double> boundary; // where hull[k] starts to win
 
-  // Every node of the line takes the site nearest to it among the sites its nodes hold
-  // (Felzenszwalb & Huttenlocher 2012, with sites off the line: parabolas (t - vertex)^2 + offset).
-  // With `distance` (the last pass), each node's distance to its site is written there too.
+  // The sites the line's nodes hold (those of nodes first .. end - 1 only), each run once.
   template <typename OffsetOf>
-  void apply(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, float* distance)
+  void collect(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, int first = 0,
+    int end = -1)
   {
     this->candidates.clear();
-    for (int t = 0; t < line.length; ++t)
+    for (int t = first; t < (end < 0 ? line.length : end); ++t)
     {
       const std::int32_t s = line.site[t * line.stride];
       if (s >= 0 && (this->candidates.empty() || this->candidates.back().site != s))
       {
-        this->candidates.push_back({ sites[s][axis] - line.origin, offsetOf(sites[s]), s });
+        this->add(line, axis, sites, offsetOf, s);
       }
     }
-    if (this->candidates.empty())
-    {
-      for (int t = 0; distance && t < line.length; ++t)
-      {
-        distance[t * line.stride] = std::numeric_limits<float>::infinity(); // no surface on the grid
-      }
-      return;
-    }
+  }
+  template <typename OffsetOf>
+  void add(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, std::int32_t s)
+  {
+    this->candidates.push_back({ sites[s][axis] - line.origin, offsetOf(sites[s]), s });
+  }
+
+  // The lower envelope of the candidates (Felzenszwalb & Huttenlocher 2012, with sites off the line:
+  // parabolas (t - vertex)^2 + offset).
+  void build()
+  {
     // Sites lie within a few cells of their nodes, so the list is nearly sorted: insertion sort.
     auto& c = this->candidates;
     for (std::size_t a = 1; a < c.size(); ++a)
@@ -110,15 +113,37 @@ struct Envelope
         this->boundary.push_back(cut);
       }
     }
+  }
+
+  // The hull entry that wins at whole-line node t (as the sweep of `assign` finds it).
+  std::size_t winnerAt(const Line& line, int t) const
+  {
+    const double x = t * line.step;
+    const auto after = std::lower_bound(this->boundary.begin() + 1, this->boundary.end(), x);
+    return static_cast<std::size_t>(after - this->boundary.begin()) - 1;
+  }
+
+  // Every node of the line takes the site nearest to it among the candidates; with `distance` (the
+  // last pass), each node's distance to its site is written there too.
+  void assign(const Line& line, float* distance)
+  {
+    if (this->candidates.empty())
+    {
+      for (int t = 0; distance && t < line.length; ++t)
+      {
+        distance[t * line.stride] = std::numeric_limits<float>::infinity(); // no surface on the grid
+      }
+      return;
+    }
     std::size_t k = 0;
     for (int t = 0; t < line.length; ++t)
     {
-      const double x = t * line.step;
+      const double x = (line.first + t) * line.step;
       while (k + 1 < this->hull.size() && this->boundary[k + 1] < x)
       {
         ++k;
       }
-      const Parabola& best = c[this->hull[k]];
+      const Parabola& best = this->candidates[this->hull[k]];
       line.site[t * line.stride] = best.site;
       if (distance)
       {
@@ -126,6 +151,17 @@ struct Envelope
           static_cast<float>(std::sqrt((x - best.vertex) * (x - best.vertex) + best.offset));
       }
     }
+  }
+
+  template <typename OffsetOf>
+  void apply(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, float* distance)
+  {
+    this->collect(line, axis, sites, offsetOf);
+    if (!this->candidates.empty())
+    {
+      this->build();
+    }
+    this->assign(line, distance);
   }
 };
 
@@ -170,6 +206,130 @@ bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sit
     }
   }
   return true;
+}
+
+bool sweepClosestPointsInPlanes(
+  const GridLattice& slab, const std::vector<Vec3>& sites, std::int32_t* siteOfNode, const Progress& progress)
+{
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    envelopePass(slab, sites, siteOfNode, axis, nullptr);
+    if (!progress.report((axis + 1) / 2.0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+namespace
+{
+// Calls f(envelope, column line, i, j) for every z column of the slab, rows of columns in parallel
+// (f of one row in order of i).
+template <typename F>
+void forEachColumn(const SlabPlanes& planes, std::int32_t* siteOfNode, F&& f)
+{
+  const GridLattice& whole = planes.whole;
+  const int nx = whole.dims[0], ny = whole.dims[1];
+  const std::int64_t plane = static_cast<std::int64_t>(nx) * ny;
+  vtkSMPThreadLocal<Envelope> scratch;
+  parallelFor(0, ny, [&](vtkIdType b, vtkIdType e) {
+    Envelope& envelope = scratch.Local();
+    for (vtkIdType j = b; j < e; ++j)
+    {
+      for (int i = 0; i < nx; ++i)
+      {
+        const Line line{ siteOfNode + i + j * nx, plane, planes.last - planes.first + 1, whole.origin[2],
+          whole.spacing[2], planes.first };
+        f(envelope, line, i, static_cast<int>(j));
+      }
+    }
+  });
+}
+
+auto columnOffset(const GridLattice& whole, int i, int j)
+{
+  const double cu = whole.origin[0] + i * whole.spacing[0], cw = whole.origin[1] + j * whole.spacing[1];
+  return [cu, cw](const Vec3& s) { return (s[0] - cu) * (s[0] - cu) + (s[1] - cw) * (s[1] - cw); };
+}
+} // namespace
+
+ColumnSites columnWinners(const SlabPlanes& planes, const std::vector<std::array<int, 2>>& wanted,
+  const std::vector<Vec3>& sites, std::int32_t* siteOfNode)
+{
+  const GridLattice& whole = planes.whole;
+  const int nx = whole.dims[0], ny = whole.dims[1], nz = whole.dims[2];
+  const int ownedBegin = planes.ownedFirst - planes.first, ownedEnd = planes.ownedLast - planes.first + 1;
+  std::vector<std::vector<std::int32_t>> rowCounts(ny), rowSites(ny);
+  forEachColumn(planes, siteOfNode, [&](Envelope& envelope, const Line& line, int i, int j) {
+    auto& counts = rowCounts[j];
+    auto& out = rowSites[j];
+    if (i == 0)
+    {
+      counts.assign(nx, 0);
+    }
+    envelope.collect(line, 2, sites, columnOffset(whole, i, j), ownedBegin, ownedEnd);
+    if (envelope.candidates.empty())
+    {
+      return;
+    }
+    envelope.build();
+    const std::size_t before = out.size();
+    // The hull entries winning at the nodes of each wanted range: a run of the hull each.
+    auto addRun = [&](int t0, int t1) {
+      if (t0 > t1)
+      {
+        return;
+      }
+      for (std::size_t k = envelope.winnerAt(line, t0); k <= envelope.winnerAt(line, t1); ++k)
+      {
+        const std::int32_t s = envelope.candidates[envelope.hull[k]].site;
+        if (out.size() == before || out.back() != s)
+        {
+          out.push_back(s);
+        }
+      }
+    };
+    for (const auto& range : wanted)
+    {
+      addRun(std::max(range[0], 0), std::min(range[1], nz - 1));
+    }
+    counts[i] = static_cast<std::int32_t>(out.size() - before);
+  });
+  ColumnSites result;
+  result.start.reserve(static_cast<std::size_t>(nx) * ny + 1);
+  result.start.push_back(0);
+  for (int j = 0; j < ny; ++j)
+  {
+    for (std::int32_t c : rowCounts[j])
+    {
+      result.start.push_back(result.start.back() + c);
+    }
+    result.sites.insert(result.sites.end(), rowSites[j].begin(), rowSites[j].end());
+  }
+  return result;
+}
+
+void sweepColumns(const SlabPlanes& planes, const std::vector<Vec3>& sites, const ColumnSites& others,
+  std::int32_t* siteOfNode, float* distance)
+{
+  const GridLattice& whole = planes.whole;
+  const int nx = whole.dims[0];
+  const int ownedBegin = planes.ownedFirst - planes.first, ownedEnd = planes.ownedLast - planes.first + 1;
+  forEachColumn(planes, siteOfNode, [&](Envelope& envelope, const Line& line, int i, int j) {
+    const auto offsetOf = columnOffset(whole, i, j);
+    envelope.collect(line, 2, sites, offsetOf, ownedBegin, ownedEnd);
+    const std::size_t column = i + static_cast<std::size_t>(j) * nx;
+    for (std::int64_t k = others.start[column]; k < others.start[column + 1]; ++k)
+    {
+      envelope.add(line, 2, sites, offsetOf, others.sites[k]);
+    }
+    if (!envelope.candidates.empty())
+    {
+      envelope.build();
+    }
+    envelope.assign(line, distance + (line.site - siteOfNode));
+  });
 }
 
 } // namespace shrinkwrap

@@ -14,7 +14,7 @@ namespace shrinkwrap
 {
 
 std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vector<std::int64_t>& cells,
-  int extraLayers, bool withGridBoundary, std::uint8_t* state)
+  int extraLayers, const std::array<bool, 6>& gridFaces, std::uint8_t* state)
 {
   const std::int64_t sx = 1, sy = lattice.dims[0], sz = static_cast<std::int64_t>(lattice.dims[0]) * lattice.dims[1];
   std::vector<std::int64_t> nodes;
@@ -48,10 +48,16 @@ std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vecto
       if (c[2] + 1 < lattice.dims[2]) add(n + sz);
     }
   }
-  if (withGridBoundary)
+  const auto& d = lattice.dims;
+  for (int face = 0; face < 6; ++face)
   {
-    const auto& d = lattice.dims;
-    forEachFaceNode(lattice, { 0, d[0] - 1, 0, d[1] - 1, 0, d[2] - 1 }, add);
+    if (gridFaces[face])
+    {
+      std::array<int, 6> box = { 0, d[0] - 1, 0, d[1] - 1, 0, d[2] - 1 };
+      const int axis = face / 2;
+      box[2 * axis] = box[2 * axis + 1] = face % 2 ? d[axis] - 1 : 0;
+      forEachFaceNode(lattice, box, add);
+    }
   }
   return nodes;
 }

@@ -42,10 +42,15 @@ struct DistanceBand
 };
 
 // Marks the nodes of the given cells (and `extraLayers` rings of 6-neighbours) as band nodes in
-// state, and lists them. With withGridBoundary, every node on the grid's faces joins too: a grid that
-// does not contain the whole mesh needs exact distances and signs there.
+// state, and lists them. The nodes on the grid's faces that gridFaces names (-x, +x, -y, +y, -z, +z)
+// join too: a grid that does not contain the whole mesh needs exact distances and signs there (a
+// slab's own cut faces are not the grid's).
+inline std::array<bool, 6> allFaces(bool on)
+{
+  return { on, on, on, on, on, on };
+}
 std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vector<std::int64_t>& cells,
-  int extraLayers, bool withGridBoundary, std::uint8_t* state);
+  int extraLayers, const std::array<bool, 6>& gridFaces, std::uint8_t* state);
 
 // Exact distances, closest points and signs at the band nodes; the signs go into state too (band
 // nodes within `onSurface` of the surface stay BandOnSurface). Returns false if aborted.

@@ -50,6 +50,15 @@ struct GridLattice
   double minSpacing() const { return this->spacing.minCoeff(); }
 };
 
+// Planes first .. last (along z) of a lattice, as a lattice of their own.
+inline GridLattice planesOf(const GridLattice& whole, int first, int last)
+{
+  GridLattice planes = whole;
+  planes.origin[2] += first * whole.spacing[2];
+  planes.dims[2] = std::max(0, last - first + 1);
+  return planes;
+}
+
 // Calls f(node index) once for every node on the faces of the box of node indices
 // box = (imin, imax, jmin, jmax, kmin, kmax), inclusive.
 template <typename F>

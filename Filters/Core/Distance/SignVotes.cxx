@@ -10,10 +10,12 @@ namespace
 {
 // Scanline flood fill from seed over nodes in state `from`, relabelled `to`: a stack of x-runs
 // ("spans") rather than of nodes, so each run is claimed at once and every node is read a few times
-// in memory order. visit(m) sees every 6-neighbour m of the region's nodes, for the votes.
-template <typename Visit>
+// in memory order. visit(m) sees every 6-neighbour m of the region's nodes, for the votes. Only
+// planes kFirst .. kLast are flooded (a slab's own; the planes around them are visited only), and
+// claimed(row, k, x0, x1) hears of every run.
+template <typename Visit, typename Claimed>
 long long flood(const GridLattice& lattice, std::uint8_t* state, const std::vector<std::int64_t>& seeds,
-  std::uint8_t from, std::uint8_t to, Visit&& visit)
+  std::uint8_t from, std::uint8_t to, int kFirst, int kLast, Visit&& visit, Claimed&& claimed)
 {
   const auto& d = lattice.dims;
   const std::int64_t sy = d[0], sz = sy * d[1];
@@ -34,6 +36,7 @@ long long flood(const GridLattice& lattice, std::uint8_t* state, const std::vect
       ++x1;
     }
     std::fill(state + row + x0, state + row + x1 + 1, to);
+    claimed(row, k, x0, x1);
     return Span{ row, j, k, x0, x1 };
   };
   std::vector<Span> stack;
@@ -68,10 +71,11 @@ long long flood(const GridLattice& lattice, std::uint8_t* state, const std::vect
         continue;
       }
       const std::int64_t row = r[0] * sy + r[1] * sz;
+      const bool inside = r[1] >= kFirst && r[1] <= kLast;
       for (int x = span.x0; x <= span.x1; ++x)
       {
         visit(row + x);
-        if (state[row + x] == from)
+        if (inside && state[row + x] == from)
         {
           // The new span's nodes are region nodes, not band nodes: nothing to visit for votes.
           const Span found = claim(row, r[0], r[1], x);
@@ -82,6 +86,13 @@ long long flood(const GridLattice& lattice, std::uint8_t* state, const std::vect
     }
   }
   return count;
+}
+
+template <typename Visit>
+long long flood(const GridLattice& lattice, std::uint8_t* state, const std::vector<std::int64_t>& seeds,
+  std::uint8_t from, std::uint8_t to, Visit&& visit)
+{
+  return flood(lattice, state, seeds, from, to, 0, lattice.dims[2] - 1, visit, [](std::int64_t, int, int, int) {});
 }
 } // namespace
 
@@ -189,14 +200,101 @@ SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const st
   }
   if (votes.inverted)
   {
-    parallelFor(0, total, [&](std::int64_t b, std::int64_t e) {
-      for (std::int64_t n = b; n < e; ++n)
-      {
-        state[n] = state[n] == BandInside ? BandOutside : (state[n] == BandOutside ? BandInside : state[n]);
-      }
-    });
+    invertBandSigns(state, total);
   }
   return votes;
+}
+
+SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast,
+  const std::vector<int>& labelledPlanes, std::uint8_t* state, const Progress& progress, bool& aborted)
+{
+  SlabRegions regions;
+  aborted = false;
+  const auto& d = lattice.dims;
+  const std::int64_t plane = static_cast<std::int64_t>(d[0]) * d[1];
+  regions.planes = labelledPlanes;
+  regions.labels.assign(labelledPlanes.size() * plane, -1);
+  std::vector<int> slot(d[2], -1); // where a plane's labels are kept
+  for (std::size_t p = 0; p < labelledPlanes.size(); ++p)
+  {
+    slot[labelledPlanes[p]] = static_cast<int>(p);
+  }
+  const long long total = (ownedLast - ownedFirst + 1) * plane;
+  long long labelled = 0;
+  for (int k = ownedFirst; k <= ownedLast; ++k)
+  {
+    for (std::int64_t n = k * plane; n < (k + 1) * plane; ++n)
+    {
+      if (state[n] != Unvisited)
+      {
+        continue;
+      }
+      const auto id = static_cast<std::int32_t>(regions.seed.size());
+      long long outside = 0, inside = 0;
+      labelled += flood(
+        lattice, state, std::vector<std::int64_t>(1, n), Unvisited, Outside, ownedFirst, ownedLast,
+        [&](std::int64_t m) {
+          outside += state[m] == BandOutside;
+          inside += state[m] == BandInside;
+        },
+        [&](std::int64_t row, int kr, int x0, int x1) {
+          if (slot[kr] >= 0)
+          {
+            std::int32_t* labels = regions.labels.data() + slot[kr] * plane + (row - kr * plane);
+            std::fill(labels + x0, labels + x1 + 1, id);
+          }
+        });
+      regions.seed.push_back(n);
+      regions.inside.push_back(inside);
+      regions.outside.push_back(outside);
+      if (!progress.report(static_cast<double>(labelled) / total))
+      {
+        aborted = true;
+        return regions;
+      }
+    }
+  }
+  return regions;
+}
+
+void labelSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast, const SlabRegions& regions,
+  const std::vector<char>& isInside, std::uint8_t* state)
+{
+  for (std::size_t r = 0; r < regions.seed.size(); ++r)
+  {
+    if (isInside[r])
+    {
+      flood(lattice, state, std::vector<std::int64_t>(1, regions.seed[r]), Outside, Inside, ownedFirst, ownedLast,
+        [](std::int64_t) {}, [](std::int64_t, int, int, int) {});
+    }
+  }
+}
+
+void applySigns(const std::uint8_t* state, std::int64_t count, bool isSigned, float* distance)
+{
+  if (!isSigned)
+  {
+    return;
+  }
+  parallelFor(0, count, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t n = b; n < e; ++n)
+    {
+      if (state[n] == Inside || state[n] == BandInside)
+      {
+        distance[n] = -distance[n];
+      }
+    }
+  });
+}
+
+void invertBandSigns(std::uint8_t* state, std::int64_t count)
+{
+  parallelFor(0, count, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t n = b; n < e; ++n)
+    {
+      state[n] = state[n] == BandInside ? BandOutside : (state[n] == BandOutside ? BandInside : state[n]);
+    }
+  });
 }
 
 } // namespace shrinkwrap

@@ -11,6 +11,8 @@
 #include "DistanceBand.h"
 
 #include <array>
+#include <cstdint>
+#include <vector>
 
 namespace shrinkwrap
 {
@@ -31,6 +33,31 @@ struct SignVotes
 // band be labelled without a flood. Sets aborted if the progress callback asked to stop.
 SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const std::array<int, 6>& bandExtent,
   std::uint8_t* state, const Progress& progress, bool& aborted);
+
+// Negates the distances of the inside nodes (band and off-band) of an unsigned field, if signed.
+void applySigns(const std::uint8_t* state, std::int64_t count, bool isSigned, float* distance);
+
+// Swaps BandInside and BandOutside (a mesh facing inwards).
+void invertBandSigns(std::uint8_t* state, std::int64_t count);
+
+// The regions of one slab of planes (SlabDistance.h): its processes flood their own planes, and then
+// join the regions that meet across their borders and count their votes together.
+struct SlabRegions
+{
+  std::vector<std::int64_t> seed;   // per region: its first node
+  std::vector<long long> inside, outside; // per region: its votes
+  std::vector<int> planes;          // the planes whose nodes' regions are listed in labels
+  std::vector<std::int32_t> labels; // per node of those planes: its region, -1 for a band node
+};
+
+// Floods the Unvisited nodes of planes ownedFirst .. ownedLast into regions (labelled Outside for
+// now), counting the votes of band nodes next to them (in the planes around too: the lattice must
+// hold a band plane beyond each side that has one). Sets aborted if progress asked to stop.
+SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast,
+  const std::vector<int>& labelledPlanes, std::uint8_t* state, const Progress& progress, bool& aborted);
+// Labels the regions whose isInside is set Inside.
+void labelSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast, const SlabRegions& regions,
+  const std::vector<char>& isInside, std::uint8_t* state);
 
 } // namespace shrinkwrap
 

@@ -81,7 +81,8 @@ bool signByWinding(const DistanceSource& source, const GridLattice& lattice, con
       return false;
     }
   }
-  const WindingSignResult w = signByWindingNumber(source, lattice, band, site.data(), state, progress.stage(0.3, 1));
+  const WindingSignResult w = signByWindingNumber(
+    source, lattice, band.closest, trustedNormals(source, band), site.data(), state, progress.stage(0.3, 1));
   if (!w.completed)
   {
     return false;
@@ -94,23 +95,6 @@ bool signByWinding(const DistanceSource& source, const GridLattice& lattice, con
   return true;
 }
 
-// Negates the inside (band and off-band) of an unsigned field.
-void applySigns(const GridLattice& lattice, const std::uint8_t* state, bool isSigned, float* distance)
-{
-  if (!isSigned)
-  {
-    return;
-  }
-  parallelFor(0, lattice.nodeCount(), [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t n = b; n < e; ++n)
-    {
-      if (state[n] == Inside || state[n] == BandInside)
-      {
-        distance[n] = -distance[n];
-      }
-    }
-  });
-}
 } // namespace
 
 std::string signStatus(const SignedDistanceResult& r, bool asked)
@@ -237,7 +221,7 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   const bool meshInsideGrid =
     (surface.min.array() > grid.min.array()).all() && (surface.max.array() < grid.max.array()).all();
   std::vector<std::int64_t> nodes =
-    bandNodes(lattice, cells, settings.bandLayers, !meshInsideGrid, state.data());
+    bandNodes(lattice, cells, settings.bandLayers, allFaces(!meshInsideGrid), state.data());
   // A node of a touched cell is within a cell diagonal of the surface; each extra layer adds a cell.
   const double searchRadius = 1.001 * (1 + settings.bandLayers) * lattice.spacing.norm();
   if (!computeBand(source, lattice, std::move(nodes), searchRadius, 1e-6 * lattice.minSpacing(),
@@ -282,7 +266,7 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
       return result;
     }
   }
-  applySigns(lattice, state.data(), result.isSigned, distance);
+  applySigns(state.data(), lattice.nodeCount(), result.isSigned, distance);
   result.signSeconds = secondsSince(clock);
   result.completed = progress.report(1);
   return result;

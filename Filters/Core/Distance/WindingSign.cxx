@@ -8,20 +8,11 @@
 namespace shrinkwrap
 {
 
-WindingSignResult signByWindingNumber(const DistanceSource& source, const GridLattice& lattice,
-  const DistanceBand& band, const std::int32_t* site, std::uint8_t* state, const Progress& progress)
+std::vector<Vec3> trustedNormals(const DistanceSource& source, const DistanceBand& band)
 {
-  WindingSignResult result;
+  // A site is trusted where its pseudonormal is sure and its triangle's sides are confirmed.
+  // Untrusted sites get n = 0: the winding number decides.
   const std::vector<char>& confirmed = source.sidesConfirmed();
-  for (char c : confirmed)
-  {
-    result.unconfirmed += !c;
-  }
-  // A site is trusted where its pseudonormal is sure and its triangle's sides are confirmed. Then, for
-  // every node x whose closest point c is the site's, the side is
-  // that of the pseudonormal n at c (Baerentzen & Aanaes: (x - c) . n > 0 outside, whatever the
-  // feature), where x is clearly off the plane across n (cos > 0.05: a thin blade's normal cone is
-  // almost a half space). Untrusted sites get n = 0: the winding number decides.
   const std::size_t nb = band.nodes.size();
   std::vector<Vec3> normal(nb);
   parallelFor(0, static_cast<vtkIdType>(nb), [&](vtkIdType b, vtkIdType e) {
@@ -32,6 +23,21 @@ WindingSignResult signByWindingNumber(const DistanceSource& source, const GridLa
       normal[k] = trusted ? Vec3(band.normal[k][0], band.normal[k][1], band.normal[k][2]) : Vec3::Zero();
     }
   });
+  return normal;
+}
+
+WindingSignResult signByWindingNumber(const DistanceSource& source, const GridLattice& lattice,
+  const std::vector<Vec3>& sitePoints, const std::vector<Vec3>& normal, const std::int32_t* site,
+  std::uint8_t* state, const Progress& progress)
+{
+  WindingSignResult result;
+  for (char c : source.sidesConfirmed())
+  {
+    result.unconfirmed += !c;
+  }
+  // For every node x whose closest point c is a trusted site's, the side is that of the pseudonormal
+  // n at c (Baerentzen & Aanaes: (x - c) . n > 0 outside, whatever the feature), where x is clearly
+  // off the plane across n (cos > 0.05: a thin blade's normal cone is almost a half space).
   const auto& d = lattice.dims;
   const double h = lattice.minSpacing();
   std::atomic<long long> evaluated{ 0 }, inside{ 0 };
@@ -53,7 +59,7 @@ WindingSignResult signByWindingNumber(const DistanceSource& source, const GridLa
         bool isInside = false, decided = false;
         if (s >= 0)
         {
-          const Vec3 r = x - band.closest[s];
+          const Vec3 r = x - sitePoints[s];
           const double height = normal[s].dot(r);
           decided = std::abs(height) > 0.05 * r.norm() && std::abs(height) > 1e-9 * h;
           isInside = height < 0;

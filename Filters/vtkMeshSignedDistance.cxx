@@ -2,6 +2,7 @@
 
 #include "Parallel.h"
 #include "SignedDistance.h"
+#include "SlabDistance.h"
 #include "VTKConversions.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -10,7 +11,9 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkExtentTranslator.h"
 #include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPointData.h"
@@ -18,13 +21,134 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
+#include <algorithm>
+#include <array>
+#include <vector>
 #include <new>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkMeshSignedDistance);
 
 namespace convert = shrinkwrap::convert;
+
+namespace
+{
+// The processes of ParaView's MPI engine (pvbatch, pvserver), as the slab computation talks to them.
+class ControllerExchange : public shrinkwrap::SlabExchange
+{
+public:
+  explicit ControllerExchange(vtkMultiProcessController* controller) : Controller(controller) {}
+  int rank() const override { return this->Controller->GetLocalProcessId(); }
+  int size() const override { return this->Controller->GetNumberOfProcesses(); }
+  std::vector<std::vector<char>> allGather(const std::vector<char>& mine) const override
+  {
+    const int n = this->size();
+    vtkIdType length = static_cast<vtkIdType>(mine.size());
+    std::vector<vtkIdType> lengths(n), offsets(n, 0);
+    this->Controller->AllGather(&length, lengths.data(), 1);
+    for (int r = 1; r < n; ++r)
+    {
+      offsets[r] = offsets[r - 1] + lengths[r - 1];
+    }
+    std::vector<char> all(static_cast<std::size_t>(offsets[n - 1] + lengths[n - 1]));
+    this->Controller->AllGatherV(mine.data(), all.data(), length, lengths.data(), offsets.data());
+    std::vector<std::vector<char>> messages(n);
+    for (int r = 0; r < n; ++r)
+    {
+      messages[r].assign(all.begin() + offsets[r], all.begin() + offsets[r] + lengths[r]);
+    }
+    return messages;
+  }
+
+private:
+  vtkMultiProcessController* Controller;
+};
+
+using Extent = std::array<int, 6>;
+
+Extent intersection(const Extent& a, const Extent& b)
+{
+  return { std::max(a[0], b[0]), std::min(a[1], b[1]), std::max(a[2], b[2]), std::min(a[3], b[3]),
+    std::max(a[4], b[4]), std::min(a[5], b[5]) };
+}
+
+vtkIdType nodesOf(const Extent& e)
+{
+  return e[1] < e[0] || e[3] < e[2] || e[5] < e[4]
+    ? 0
+    : static_cast<vtkIdType>(e[1] - e[0] + 1) * (e[3] - e[2] + 1) * (e[5] - e[4] + 1);
+}
+
+// Calls f(index in `within`, index in `part`) for each x run of `part` (a sub-extent of `within`):
+// its first node's indices, row by row.
+template <typename F>
+void forEachRow(const Extent& within, const Extent& part, F&& f)
+{
+  const vtkIdType wx = within[1] - within[0] + 1, wy = within[3] - within[2] + 1;
+  vtkIdType at = 0;
+  for (int k = part[4]; k <= part[5]; ++k)
+  {
+    for (int j = part[2]; j <= part[3]; ++j, at += part[1] - part[0] + 1)
+    {
+      f((part[0] - within[0]) + wx * ((j - within[2]) + wy * (k - within[4])), at);
+    }
+  }
+}
+
+// Each rank's piece (`wanted`, its update extent, of any shape) from the ranks' slabs of planes
+// (rank r holds planes r * nz / n .. (r + 1) * nz / n - 1, whole in x and y): a gather to each rank
+// of the parts of the others' slabs that its piece overlaps. Collective.
+void piecesFromSlabs(vtkMultiProcessController* controller, const shrinkwrap::GridLattice& lattice,
+  vtkFloatArray* slab, int first, int last, const int wanted[6], vtkFloatArray* piece)
+{
+  const int n = controller->GetNumberOfProcesses(), rank = controller->GetLocalProcessId();
+  const int nz = lattice.dims[2];
+  std::vector<int> all(6 * n);
+  controller->AllGather(wanted, all.data(), 6);
+  auto slabOf = [&](int r) {
+    return Extent{ 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, r * nz / n, (r + 1) * nz / n - 1 };
+  };
+  const Extent mine = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, first, last };
+  const Extent own = { wanted[0], wanted[1], wanted[2], wanted[3], wanted[4], wanted[5] };
+  piece->SetName(slab->GetName());
+  piece->SetNumberOfValues(nodesOf(own));
+  for (int d = 0; d < n; ++d)
+  {
+    const Extent target = { all[6 * d], all[6 * d + 1], all[6 * d + 2], all[6 * d + 3], all[6 * d + 4], all[6 * d + 5] };
+    const Extent part = intersection(mine, target);
+    const int width = part[1] - part[0] + 1;
+    std::vector<float> send(nodesOf(part));
+    if (!send.empty())
+    {
+      forEachRow(mine, part, [&](vtkIdType from, vtkIdType to) {
+        std::copy_n(slab->GetPointer(from), width, send.data() + to);
+      });
+    }
+    std::vector<vtkIdType> lengths(n, 0), offsets(n, 0);
+    for (int r = 0; r < n; ++r)
+    {
+      lengths[r] = nodesOf(intersection(slabOf(r), target));
+      offsets[r] = r > 0 ? offsets[r - 1] + lengths[r - 1] : 0;
+    }
+    std::vector<float> received(rank == d ? offsets[n - 1] + lengths[n - 1] : 0);
+    controller->GatherV(send.data(), received.data(), static_cast<vtkIdType>(send.size()), lengths.data(),
+      offsets.data(), d);
+    for (int r = 0; rank == d && r < n; ++r)
+    {
+      const Extent from = intersection(slabOf(r), target);
+      const int w = from[1] - from[0] + 1;
+      if (nodesOf(from) > 0)
+      {
+        forEachRow(own, from, [&](vtkIdType to, vtkIdType at) {
+          std::copy_n(received.data() + offsets[r] + at, w, piece->GetPointer(to));
+        });
+      }
+    }
+  }
+}
+} // namespace
 
 vtkMeshSignedDistance::vtkMeshSignedDistance()
 {
@@ -103,6 +227,7 @@ int vtkMeshSignedDistance::RequestInformation(
     outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
     outInfo->Set(vtkDataObject::ORIGIN(), lattice.origin.data(), 3);
     outInfo->Set(vtkDataObject::SPACING(), lattice.spacing.data(), 3);
+    outInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
   }
   vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_FLOAT, 1);
   return 1;
@@ -137,22 +262,54 @@ int vtkMeshSignedDistance::RequestData(
     vtkErrorMacro("Cannot place the grid: " << placed.message() << ".");
     return 1;
   }
+  // Under MPI with a piece per rank, this rank computes an even share of the grid's planes with
+  // the others (SlabDistance.h), and the ranks then hand each other what their pieces hold; otherwise
+  // the whole grid (a request for part of it is cropped).
+  int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool byPieces = controller && controller->GetNumberOfProcesses() > 1 &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) == controller->GetNumberOfProcesses() &&
+    this->SweepMethod == CLOSEST_POINT && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
   vtkNew<vtkFloatArray> values;
   shrinkwrap::SignedDistanceResult result;
-  if (!this->Compute(soup, cloud, lattice, values, result))
+  if (byPieces)
+  {
+    const ControllerExchange exchange(controller);
+    const int n = controller->GetNumberOfProcesses(), rank = controller->GetLocalProcessId();
+    const int first = rank * lattice.dims[2] / n, last = (rank + 1) * lattice.dims[2] / n - 1;
+    vtkNew<vtkFloatArray> slab;
+    if (!this->Compute(soup, cloud, lattice, first, last, &exchange, slab, result))
+    {
+      return 1;
+    }
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+    piecesFromSlabs(controller, lattice, slab, first, last, extent, values);
+  }
+  else if (!this->Compute(soup, cloud, lattice, 0, lattice.dims[2] - 1, nullptr, values, result))
   {
     return 1;
   }
-  int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
   output->SetExtent(extent);
   output->SetOrigin(lattice.origin.data());
   output->SetSpacing(lattice.spacing.data());
   output->GetPointData()->SetScalars(values);
-  // A downstream request for part of the grid (streaming, or a piece per MPI rank) gets that part.
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  // A downstream request for part of the grid (streaming) gets that part.
+  if (!byPieces && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
   {
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
     output->Crop(extent);
+  }
+  // Ghost layers, when asked for (a contour or gradient across piece borders): the nodes beyond the
+  // piece proper (as the pipeline's extent translator splits the grid) are marked, so that their
+  // cells are not counted twice.
+  if (byPieces && outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) > 0)
+  {
+    int whole[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 }, proper[6];
+    vtkNew<vtkExtentTranslator> translator;
+    translator->PieceToExtentThreadSafe(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()), 0, whole, proper,
+      vtkExtentTranslator::BLOCK_MODE, 0);
+    output->GenerateGhostArray(proper);
   }
   this->AddStatus(result, output);
   return 1;
@@ -249,12 +406,30 @@ shrinkwrap::SignedDistanceSettings vtkMeshSignedDistance::DistanceSettings() con
 }
 
 bool vtkMeshSignedDistance::Compute(const shrinkwrap::TriangleSoup& soup, const shrinkwrap::TriangleSoup& cloud,
-  const shrinkwrap::GridLattice& lattice, vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result)
+  const shrinkwrap::GridLattice& lattice, int first, int last, const shrinkwrap::SlabExchange* exchange,
+  vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result)
 {
   const shrinkwrap::SignedDistanceSettings settings = this->DistanceSettings();
-  if (const shrinkwrap::Status fits = shrinkwrap::checkMemory(lattice, settings); !fits)
+  // Under MPI, what must fit is this rank's piece (with a few planes around it), not the grid.
+  const shrinkwrap::GridLattice planes = shrinkwrap::planesOf(lattice, first, last);
+  const int halo = exchange ? settings.bandLayers + 2 : 0;
+  const shrinkwrap::Status fits = shrinkwrap::checkMemory(
+    shrinkwrap::planesOf(lattice, std::max(0, first - halo), std::min(lattice.dims[2] - 1, last + halo)), settings);
+  if (!fits)
   {
-    vtkErrorMacro("Cannot compute the field: " << fits.message() << "; lower Resolution or raise CellSize.");
+    vtkErrorMacro("Cannot compute the field: " << fits.message() << "; lower Resolution or raise CellSize"
+                                               << (exchange ? ", or run on more MPI ranks." : "."));
+  }
+  if (exchange && !shrinkwrap::everyProcess(*exchange, static_cast<bool>(fits)))
+  {
+    if (fits)
+    {
+      vtkErrorMacro("Cannot compute the field: another MPI rank cannot (see its error).");
+    }
+    return false;
+  }
+  if (!fits)
+  {
     return false;
   }
   values->SetName("SignedDistance");
@@ -264,13 +439,22 @@ bool vtkMeshSignedDistance::Compute(const shrinkwrap::TriangleSoup& soup, const 
   });
   try // the memory estimate can be beaten by a process limit (ulimit -v, a job's cap)
   {
-    if (!values->SetNumberOfValues(lattice.nodeCount()))
+    if (!values->SetNumberOfValues(planes.nodeCount()))
     {
       throw std::bad_alloc();
     }
     shrinkwrap::onAllCores([&] {
       float* distance = values->GetPointer(0);
-      if (cloud.points.empty())
+      if (exchange)
+      {
+        const shrinkwrap::Status status = shrinkwrap::computeSlabDistance(
+          soup, cloud.points, lattice, first, last, settings, *exchange, distance, result, progress);
+        if (!status)
+        {
+          throw std::runtime_error(status.message());
+        }
+      }
+      else if (cloud.points.empty())
         result = shrinkwrap::computeSignedDistance(soup, lattice, settings, distance, progress);
       else if (soup.triangles.empty())
         result = shrinkwrap::computePointDistance(cloud.points, lattice, settings, distance, progress);

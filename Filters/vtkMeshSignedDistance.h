@@ -45,6 +45,7 @@ struct GridLattice;
 struct IndexedTriangles;
 struct SignedDistanceResult;
 struct SignedDistanceSettings;
+class SlabExchange;
 class Status;
 }
 
@@ -190,9 +191,12 @@ private:
   // only), either empty when not measured, with the bounds of both; false (reported) if nothing.
   bool ReadInput(vtkDataObject* input, shrinkwrap::IndexedTriangles& soup, shrinkwrap::IndexedTriangles& cloud,
     shrinkwrap::Box& bounds);
-  // The distances, threaded; false (reported) when memory ran out or the run was aborted.
+  // The distances at planes first .. last of the lattice, threaded: all of them, or with `exchange`
+  // this MPI rank's piece, computed with the other ranks; false (reported) when memory ran out or the
+  // run was aborted.
   bool Compute(const shrinkwrap::IndexedTriangles& soup, const shrinkwrap::IndexedTriangles& cloud,
-    const shrinkwrap::GridLattice& lattice, vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
+    const shrinkwrap::GridLattice& lattice, int first, int last, const shrinkwrap::SlabExchange* exchange,
+    vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
   void AddStatus(const shrinkwrap::SignedDistanceResult& result, vtkImageData* output);
 
   vtkMeshSignedDistance(const vtkMeshSignedDistance&) = delete;

@@ -2,6 +2,8 @@
 
 #include "ClosestPointSweep.h"
 #include "DistanceBand.h"
+#include "PointSource.h"
+#include "UnionSource.h"
 #include "SignVotes.h"
 #include "WindingSign.h"
 
@@ -515,6 +517,37 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
   }
   result.completed = progress.report(1);
   return {};
+}
+
+Status computeSlabDistance(const TriangleSoup& soup, const std::vector<Vec3>& points, const GridLattice& whole,
+  int first, int last, const SignedDistanceSettings& settings, const SlabExchange& exchange, float* distance,
+  SignedDistanceResult& result, const Progress& progress)
+{
+  SignedDistanceSettings unsignedSettings = settings;
+  unsignedSettings.computeSign = false; // points have no inside
+  if (points.empty())
+  {
+    const TriangleSource source(soup);
+    const Status status =
+      computeSlabSignedDistance(source, whole, first, last, settings, exchange, distance, result, progress);
+    result.boundaryEdges = source.boundaryEdges();
+    result.nonManifoldEdges = source.nonManifoldEdges();
+    result.reorientedTriangles = source.reorientedTriangles();
+    return status;
+  }
+  const Status status = soup.triangles.empty()
+    ? computeSlabSignedDistance(PointSource(points), whole, first, last, unsignedSettings, exchange, distance, result, progress)
+    : computeSlabSignedDistance(UnionSource({ std::make_shared<const TriangleSource>(soup), std::make_shared<const PointSource>(points) }),
+        whole, first, last, unsignedSettings, exchange, distance, result, progress);
+  result.points = static_cast<long long>(points.size());
+  result.triangles = static_cast<long long>(soup.triangles.size());
+  return status;
+}
+
+bool everyProcess(const SlabExchange& exchange, bool yes)
+{
+  const auto all = exchange.allGather(std::vector<char>(1, yes ? 1 : 0));
+  return std::all_of(all.begin(), all.end(), [](const std::vector<char>& m) { return !m.empty() && m[0]; });
 }
 
 } // namespace shrinkwrap

@@ -39,6 +39,16 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
   const SignedDistanceSettings& settings, const SlabExchange& exchange, float* distance,
   SignedDistanceResult& result, const Progress& progress = {});
 
+// What Mesh Signed Distance measures, by pieces: the soup's triangles (signed as settings ask), the
+// points (unsigned), or both (unsigned), as computeSignedDistance, computePointDistance and
+// computeUnionDistance do on the whole grid.
+Status computeSlabDistance(const TriangleSoup& soup, const std::vector<Vec3>& points, const GridLattice& whole,
+  int first, int last, const SignedDistanceSettings& settings, const SlabExchange& exchange, float* distance,
+  SignedDistanceResult& result, const Progress& progress = {});
+
+// Whether every process says yes (collective).
+bool everyProcess(const SlabExchange& exchange, bool yes);
+
 } // namespace shrinkwrap
 
 #endif

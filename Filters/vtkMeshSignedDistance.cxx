@@ -12,6 +12,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkExtentTranslator.h"
+#include "vtkInformationIntegerRequestKey.h"
 #include "vtkIntArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
@@ -22,6 +23,7 @@
 #include "vtkStringArray.h"
 
 #include <algorithm>
+#include <cstring>
 #include <array>
 #include <vector>
 #include <new>
@@ -42,7 +44,7 @@ public:
   explicit ControllerExchange(vtkMultiProcessController* controller) : Controller(controller) {}
   int rank() const override { return this->Controller->GetLocalProcessId(); }
   int size() const override { return this->Controller->GetNumberOfProcesses(); }
-  std::vector<std::vector<char>> allGather(const std::vector<char>& mine) const override
+  shrinkwrap::Messages allGather(const std::vector<char>& mine) const override
   {
     const int n = this->size();
     vtkIdType length = static_cast<vtkIdType>(mine.size());
@@ -52,19 +54,74 @@ public:
     {
       offsets[r] = offsets[r - 1] + lengths[r - 1];
     }
-    std::vector<char> all(static_cast<std::size_t>(offsets[n - 1] + lengths[n - 1]));
-    this->Controller->AllGatherV(mine.data(), all.data(), length, lengths.data(), offsets.data());
-    std::vector<std::vector<char>> messages(n);
-    for (int r = 0; r < n; ++r)
-    {
-      messages[r].assign(all.begin() + offsets[r], all.begin() + offsets[r] + lengths[r]);
-    }
-    return messages;
+    shrinkwrap::Messages all;
+    all.bytes.resize(static_cast<std::size_t>(offsets[n - 1] + lengths[n - 1]));
+    this->Controller->AllGatherV(mine.data(), all.bytes.data(), length, lengths.data(), offsets.data());
+    all.offsets.assign(offsets.begin(), offsets.end());
+    all.offsets.push_back(all.bytes.size());
+    return all;
   }
 
 private:
   vtkMultiProcessController* Controller;
 };
+
+// Whether the ranks can compute one field together, and how. Collective.
+struct Agreement
+{
+  std::string why; // why they cannot: one of them could not read its input or place its grid, or
+                   // they hold different surfaces or grids
+  bool slabs = true; // every rank asks for whole planes (or nothing): each computes just those
+};
+
+Agreement agree(const ControllerExchange& exchange, bool ready, const shrinkwrap::TriangleSoup& soup,
+  const shrinkwrap::TriangleSoup& cloud, const shrinkwrap::GridLattice& lattice, const int update[6])
+{
+  struct Fingerprint
+  {
+    char ready;
+    std::int64_t points, triangles, loose;
+    int dims[3];
+    double origin[3], spacing[3];
+    int update[6];
+  } mine{ ready, static_cast<std::int64_t>(soup.points.size()), static_cast<std::int64_t>(soup.triangles.size()),
+    static_cast<std::int64_t>(cloud.points.size()), { lattice.dims[0], lattice.dims[1], lattice.dims[2] },
+    { lattice.origin[0], lattice.origin[1], lattice.origin[2] },
+    { lattice.spacing[0], lattice.spacing[1], lattice.spacing[2] },
+    { update[0], update[1], update[2], update[3], update[4], update[5] } };
+  const char* bytes = reinterpret_cast<const char*>(&mine);
+  const shrinkwrap::Messages all = exchange.allGather(std::vector<char>(bytes, bytes + sizeof(mine)));
+  std::ostringstream why;
+  Agreement agreement;
+  for (std::size_t r = 0; r < all.count(); ++r)
+  {
+    Fingerprint other;
+    std::memcpy(&other, all.data(r), sizeof(other));
+    const int* e = other.update;
+    agreement.slabs = agreement.slabs &&
+      (e[5] < e[4] || (e[0] == 0 && e[1] == other.dims[0] - 1 && e[2] == 0 && e[3] == other.dims[1] - 1));
+    if (!why.str().empty())
+    {
+      continue;
+    }
+    if (!other.ready)
+    {
+      why << "MPI rank " << r << " cannot (see its error).";
+    }
+    else if (ready &&
+      (other.points != mine.points || other.triangles != mine.triangles || other.loose != mine.loose ||
+        !std::equal(other.dims, other.dims + 3, mine.dims) || !std::equal(other.origin, other.origin + 3, mine.origin) ||
+        !std::equal(other.spacing, other.spacing + 3, mine.spacing)))
+    {
+      why << "MPI rank " << r << " holds " << other.triangles << " triangles and a " << other.dims[0] << " x "
+          << other.dims[1] << " x " << other.dims[2] << " grid, rank " << exchange.rank() << " " << mine.triangles
+          << " and " << mine.dims[0] << " x " << mine.dims[1] << " x " << mine.dims[2]
+          << " (every rank needs the whole input and the same grid settings).";
+    }
+  }
+  agreement.why = why.str();
+  return agreement;
+}
 
 using Extent = std::array<int, 6>;
 
@@ -228,6 +285,7 @@ int vtkMeshSignedDistance::RequestInformation(
     outInfo->Set(vtkDataObject::ORIGIN(), lattice.origin.data(), 3);
     outInfo->Set(vtkDataObject::SPACING(), lattice.spacing.data(), 3);
     outInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
+    vtkExtentTranslator::UPDATE_SPLIT_MODE()->Set(outInfo, vtkExtentTranslator::Z_SLAB_MODE);
   }
   vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_FLOAT, 1);
   return 1;
@@ -250,31 +308,54 @@ int vtkMeshSignedDistance::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
-  shrinkwrap::TriangleSoup soup, cloud;
-  shrinkwrap::Box bounds;
-  shrinkwrap::GridLattice lattice;
-  if (!this->ReadInput(vtkDataObject::GetData(inputVector[0], 0), soup, cloud, bounds))
-  {
-    return 1;
-  }
-  if (const shrinkwrap::Status placed = this->ComputeLattice(bounds, lattice); !placed)
-  {
-    vtkErrorMacro("Cannot place the grid: " << placed.message() << ".");
-    return 1;
-  }
   // Under MPI with a piece per rank, this rank computes an even share of the grid's planes with
   // the others (SlabDistance.h), and the ranks then hand each other what their pieces hold; otherwise
   // the whole grid (a request for part of it is cropped).
-  int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const bool byPieces = controller && controller->GetNumberOfProcesses() > 1 &&
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) == controller->GetNumberOfProcesses() &&
     this->SweepMethod == CLOSEST_POINT && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
-  vtkNew<vtkFloatArray> values;
-  shrinkwrap::SignedDistanceResult result;
+  shrinkwrap::TriangleSoup soup, cloud;
+  shrinkwrap::Box bounds;
+  shrinkwrap::GridLattice lattice;
+  bool ready = this->ReadInput(vtkDataObject::GetData(inputVector[0], 0), soup, cloud, bounds);
+  if (const shrinkwrap::Status placed = ready ? this->ComputeLattice(bounds, lattice) : shrinkwrap::Status(); !placed)
+  {
+    vtkErrorMacro("Cannot place the grid: " << placed.message() << ".");
+    ready = false;
+  }
+  // Every rank must measure the same surface on the same grid: a rank that cannot, or holds another
+  // input, stops all of them (rather than leave the others waiting for it).
+  int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+  const ControllerExchange exchange(controller);
+  Agreement agreement;
   if (byPieces)
   {
-    const ControllerExchange exchange(controller);
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+    agreement = agree(exchange, ready, soup, cloud, lattice, extent);
+    if (!agreement.why.empty())
+    {
+      vtkErrorMacro("Cannot compute the field by pieces: " << agreement.why);
+      return 1;
+    }
+  }
+  if (!ready)
+  {
+    return 1;
+  }
+  vtkNew<vtkFloatArray> values;
+  shrinkwrap::SignedDistanceResult result;
+  if (byPieces && agreement.slabs)
+  {
+    // The pieces are slabs of whole planes (the split this filter asks for): each rank computes its own.
+    if (!this->Compute(soup, cloud, lattice, extent[4], extent[5], &exchange, values, result))
+    {
+      return 1;
+    }
+  }
+  else if (byPieces)
+  {
+    // Pieces of other shapes (a consumer that splits otherwise): even shares of planes, then handed round.
     const int n = controller->GetNumberOfProcesses(), rank = controller->GetLocalProcessId();
     const int first = rank * lattice.dims[2] / n, last = (rank + 1) * lattice.dims[2] / n - 1;
     vtkNew<vtkFloatArray> slab;
@@ -282,7 +363,6 @@ int vtkMeshSignedDistance::RequestData(
     {
       return 1;
     }
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
     piecesFromSlabs(controller, lattice, slab, first, last, extent, values);
   }
   else if (!this->Compute(soup, cloud, lattice, 0, lattice.dims[2] - 1, nullptr, values, result))
@@ -306,9 +386,10 @@ int vtkMeshSignedDistance::RequestData(
   {
     int whole[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 }, proper[6];
     vtkNew<vtkExtentTranslator> translator;
+    vtkInformationIntegerRequestKey* split = vtkExtentTranslator::UPDATE_SPLIT_MODE();
     translator->PieceToExtentThreadSafe(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
       outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()), 0, whole, proper,
-      vtkExtentTranslator::BLOCK_MODE, 0);
+      split->Has(outInfo) ? split->Get(outInfo) : vtkExtentTranslator::BLOCK_MODE, 0);
     output->GenerateGhostArray(proper);
   }
   this->AddStatus(result, output);

@@ -1,7 +1,8 @@
 """Mesh Signed Distance on N^3 nodes under ParaView's MPI engine (issue #14): wall time of the update
 (slowest rank) and peak memory per rank, as one Markdown table row.
 
-Usage: [mpiexec -np R] pvbatch [--symmetric] mpi_distance.py <ShrinkWrap plugin .so> <mesh .off/.obj> <N> <label>
+Usage: [mpiexec -np R] pvbatch [--symmetric] mpi_distance.py <ShrinkWrap plugin .so> <mesh .vtk> <N> <label>
+       pvpython mpi_distance.py --convert <mesh .off> <mesh .vtk>   (ParaView 5.11 reads no OFF)
 Threads per rank: VTK_SMP_MAX_THREADS (unset: all cores).
 """
 import resource
@@ -12,11 +13,8 @@ from paraview.simple import *  # noqa: F401,F403
 from paraview.modules.vtkRemotingCore import vtkProcessModule
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkIOLegacy import vtkPolyDataReader, vtkPolyDataWriter
 
-plugin, path, nodes, label = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
-LoadPlugin(plugin, ns=globals())
-controller = vtkProcessModule.GetProcessModule().GetGlobalController()
-rank, ranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 
 
 def read_off(name):
@@ -40,13 +38,24 @@ def read_off(name):
     return mesh
 
 
-if path.endswith(".off"):
-    source = PVTrivialProducer()
-    source.GetClientSideObject().SetOutput(read_off(path))
-else:
-    source = OpenDataFile(path)
-source.UpdatePipeline()
-b = source.GetDataInformation().GetBounds()
+if sys.argv[1] == "--convert":
+    writer = vtkPolyDataWriter()
+    writer.SetFileName(sys.argv[3])
+    writer.SetInputData(read_off(sys.argv[2]))
+    writer.SetFileTypeToBinary()
+    writer.Write()
+    sys.exit(0)
+
+plugin, path, nodes, label = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+LoadPlugin(plugin, ns=globals())
+controller = vtkProcessModule.GetProcessModule().GetGlobalController()
+rank, ranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
+source = OpenDataFile(path)
+bounds_reader = vtkPolyDataReader()  # the whole mesh's bounds on every rank (a piece's are its own)
+bounds_reader.SetFileName(path)
+bounds_reader.Update()
+b = bounds_reader.GetOutput().GetBounds()
+del bounds_reader
 pad = [0.05 * (b[2 * a + 1] - b[2 * a]) for a in range(3)]
 distance = MeshSignedDistance(Input=source, UseExplicitGrid=1, OutputDimensions=[nodes] * 3,
                               OutputBounds=[b[0] - pad[0], b[1] + pad[0], b[2] - pad[1], b[3] + pad[1],

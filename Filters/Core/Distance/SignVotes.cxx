@@ -99,13 +99,14 @@ long long flood(const GridLattice& lattice, std::uint8_t* state, const std::vect
 namespace
 {
 // The grid nodes outside `inner`, a box of node indices with at least one node to spare on every side:
-// one connected shell of off-band nodes. They are labelled Outside row by row, and the nodes on the
-// faces of `inner` returned as seeds of the same region.
+// one connected shell of off-band nodes. They are labelled Outside row by row (in planes kFirst ..
+// kLast, a slab's), and the nodes on the faces of `inner` (in those planes) returned as seeds of the
+// same region.
 std::vector<std::int64_t> labelShell(
-  const GridLattice& lattice, const std::array<int, 6>& inner, std::uint8_t* state)
+  const GridLattice& lattice, const std::array<int, 6>& inner, std::uint8_t* state, int kFirst, int kLast)
 {
   const auto& d = lattice.dims;
-  parallelFor(0, d[2], [&](int b, int e) {
+  parallelFor(kFirst, kLast + 1, [&](int b, int e) {
     for (int k = b; k < e; ++k)
     {
       for (int j = 0; j < d[1]; ++j)
@@ -123,7 +124,17 @@ std::vector<std::int64_t> labelShell(
     }
   });
   std::vector<std::int64_t> seeds;
-  forEachFaceNode(lattice, inner, [&](std::int64_t n) { seeds.push_back(n); });
+  std::array<int, 6> box = inner;
+  box[4] = std::max(inner[4], kFirst);
+  box[5] = std::min(inner[5], kLast);
+  forEachFaceNode(lattice, box, [&](std::int64_t n) {
+    const auto c = lattice.coordinates(n);
+    if (c[0] == inner[0] || c[0] == inner[1] || c[1] == inner[2] || c[1] == inner[3] || c[2] == inner[4] ||
+      c[2] == inner[5]) // a face of the inner box, not where the slab cuts it
+    {
+      seeds.push_back(n);
+    }
+  });
   return seeds;
 }
 } // namespace
@@ -146,7 +157,7 @@ SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const st
   std::vector<std::int64_t> seeds;
   if (shell)
   {
-    seeds = labelShell(lattice, inner, state);
+    seeds = labelShell(lattice, inner, state, 0, d[2] - 1);
     labelled = total - static_cast<long long>(inner[1] - inner[0] + 1) * (inner[3] - inner[2] + 1) *
         (inner[5] - inner[4] + 1);
   }
@@ -206,7 +217,8 @@ SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const st
 }
 
 SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast,
-  const std::vector<int>& labelledPlanes, std::uint8_t* state, const Progress& progress, bool& aborted)
+  const std::vector<int>& labelledPlanes, const std::array<int, 6>* shell, std::uint8_t* state,
+  const Progress& progress, bool& aborted)
 {
   SlabRegions regions;
   aborted = false;
@@ -221,18 +233,12 @@ SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int own
   }
   const long long total = (ownedLast - ownedFirst + 1) * plane;
   long long labelled = 0;
-  for (int k = ownedFirst; k <= ownedLast; ++k)
-  {
-    for (std::int64_t n = k * plane; n < (k + 1) * plane; ++n)
-    {
-      if (state[n] != Unvisited)
-      {
-        continue;
-      }
+  // One region from the given seeds (the first node of the seeds, or of the slab, stands for it).
+  auto addRegion = [&](const std::vector<std::int64_t>& seeds) {
       const auto id = static_cast<std::int32_t>(regions.seed.size());
       long long outside = 0, inside = 0;
       labelled += flood(
-        lattice, state, std::vector<std::int64_t>(1, n), Unvisited, Outside, ownedFirst, ownedLast,
+        lattice, state, seeds, Unvisited, Outside, ownedFirst, ownedLast,
         [&](std::int64_t m) {
           outside += state[m] == BandOutside;
           inside += state[m] == BandInside;
@@ -244,10 +250,44 @@ SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int own
             std::fill(labels + x0, labels + x1 + 1, id);
           }
         });
-      regions.seed.push_back(n);
+      regions.seed.push_back(seeds.empty() ? ownedFirst * plane : seeds[0]);
       regions.inside.push_back(inside);
       regions.outside.push_back(outside);
-      if (!progress.report(static_cast<double>(labelled) / total))
+      return progress.report(static_cast<double>(labelled) / total);
+  };
+  if (shell)
+  {
+    // Region 0: the outside shell, labelled without a flood (as signRegions), and what its faces reach.
+    const std::vector<std::int64_t> seeds = labelShell(lattice, *shell, state, ownedFirst, ownedLast);
+    const auto& in = *shell;
+    for (std::size_t p = 0; p < labelledPlanes.size(); ++p)
+    {
+      const int k = labelledPlanes[p];
+      for (int j = 0; j < d[1]; ++j)
+      {
+        for (int i = 0; i < d[0]; ++i)
+        {
+          if (i < in[0] || i > in[1] || j < in[2] || j > in[3] || k < in[4] || k > in[5])
+          {
+            regions.labels[p * plane + i + static_cast<std::int64_t>(j) * d[0]] = 0;
+          }
+        }
+      }
+    }
+    labelled += total - static_cast<long long>(in[1] - in[0] + 1) * (in[3] - in[2] + 1) *
+        std::max(0, std::min(in[5], ownedLast) - std::max(in[4], ownedFirst) + 1);
+    if (!addRegion(seeds))
+    {
+      aborted = true;
+      return regions;
+    }
+    regions.seed[0] = -1; // the shell is outside by definition: never relabelled
+  }
+  for (int k = ownedFirst; k <= ownedLast; ++k)
+  {
+    for (std::int64_t n = k * plane; n < (k + 1) * plane; ++n)
+    {
+      if (state[n] == Unvisited && !addRegion(std::vector<std::int64_t>(1, n)))
       {
         aborted = true;
         return regions;
@@ -262,7 +302,7 @@ void labelSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast,
 {
   for (std::size_t r = 0; r < regions.seed.size(); ++r)
   {
-    if (isInside[r])
+    if (isInside[r] && regions.seed[r] >= 0)
     {
       flood(lattice, state, std::vector<std::int64_t>(1, regions.seed[r]), Outside, Inside, ownedFirst, ownedLast,
         [](std::int64_t) {}, [](std::int64_t, int, int, int) {});

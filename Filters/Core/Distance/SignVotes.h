@@ -52,9 +52,12 @@ struct SlabRegions
 
 // Floods the Unvisited nodes of planes ownedFirst .. ownedLast into regions (labelled Outside for
 // now), counting the votes of band nodes next to them (in the planes around too: the lattice must
-// hold a band plane beyond each side that has one). Sets aborted if progress asked to stop.
+// hold a band plane beyond each side that has one). With `shell` (the box of node indices around
+// the whole band, with a node to spare on every side, as signRegions finds it), the nodes outside it
+// are region 0, the corner region, labelled without a flood. Sets aborted if progress asked to stop.
 SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast,
-  const std::vector<int>& labelledPlanes, std::uint8_t* state, const Progress& progress, bool& aborted);
+  const std::vector<int>& labelledPlanes, const std::array<int, 6>* shell, std::uint8_t* state,
+  const Progress& progress, bool& aborted);
 // Labels the regions whose isInside is set Inside.
 void labelSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast, const SlabRegions& regions,
   const std::vector<char>& isInside, std::uint8_t* state);

@@ -38,14 +38,14 @@ struct Writer
 
 struct Reader
 {
-  const std::vector<char>& bytes;
+  const char* bytes; // a message (byte 0: whether its sender stopped)
   std::size_t at = 1;
 
   template <typename T>
   T get()
   {
     T value;
-    std::memcpy(&value, this->bytes.data() + this->at, sizeof(T));
+    std::memcpy(&value, this->bytes + this->at, sizeof(T));
     this->at += sizeof(T);
     return value;
   }
@@ -53,18 +53,26 @@ struct Reader
   std::vector<T> getVector()
   {
     std::vector<T> values(this->get<std::uint64_t>());
-    std::memcpy(values.data(), this->bytes.data() + this->at, values.size() * sizeof(T));
+    std::memcpy(values.data(), this->bytes + this->at, values.size() * sizeof(T));
     this->at += values.size() * sizeof(T);
     return values;
   }
 };
 
 // One collective round: every process's message, in rank order; false if any process stopped.
-bool exchangeRound(const SlabExchange& exchange, bool stopped, Writer& message, std::vector<std::vector<char>>& all)
+bool exchangeRound(const SlabExchange& exchange, bool stopped, Writer& message, Messages& all)
 {
   message.bytes[0] = stopped ? 1 : 0;
   all = exchange.allGather(message.bytes);
-  return std::none_of(all.begin(), all.end(), [](const std::vector<char>& m) { return m.empty() || m[0]; });
+  message = Writer();
+  for (std::size_t r = 0; r < all.count(); ++r)
+  {
+    if (all.length(r) == 0 || all.data(r)[0])
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 struct PlaneRange
@@ -175,17 +183,17 @@ struct RegionSides
   std::int64_t planeSize = 0;
 };
 
-RegionSides decideSides(const std::vector<std::vector<char>>& all, const std::vector<PlaneRange>& owned,
+RegionSides decideSides(const Messages& all, const std::vector<PlaneRange>& owned,
   std::int64_t planeSize, bool cornerIsOutside)
 {
   RegionSides sides;
   sides.planeSize = planeSize;
-  const std::size_t n = all.size();
+  const std::size_t n = all.count();
   std::vector<long long> inside, outside;
   sides.firstRegion.resize(n);
   for (std::size_t r = 0; r < n; ++r)
   {
-    Reader in{ all[r] };
+    Reader in{ all.data(r) };
     sides.firstRegion[r] = static_cast<std::int64_t>(inside.size());
     const auto in_ = in.getVector<long long>(), out_ = in.getVector<long long>();
     inside.insert(inside.end(), in_.begin(), in_.end());
@@ -269,15 +277,15 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
   const PlaneRange mine{ std::max(first, 0), std::min(last, nz - 1) };
 
   // Round 1: who computes which planes, and who owns them.
-  std::vector<std::vector<char>> all;
+  Messages all;
   Writer ranges;
   ranges.put(mine.first);
   ranges.put(mine.last);
   exchangeRound(exchange, false, ranges, all);
   std::vector<PlaneRange> computed, owned;
-  for (const auto& message : all)
+  for (std::size_t r = 0; r < all.count(); ++r)
   {
-    Reader in{ message };
+    Reader in{ all.data(r) };
     const int f = in.get<int>();
     computed.push_back({ f, in.get<int>() });
   }
@@ -323,10 +331,42 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
         progress.stage(0.2, 0.45), band, state.data());
   }
 
-  // Round 2: the sign regions, flooded per slab, joined across the borders, decided together.
+  // Round 2: the sign regions, flooded per slab, joined across the borders, decided together. The
+  // nodes outside the box around the whole band are one region (the outside), without a flood.
   bool needWinding = false;
   if (settings.computeSign)
   {
+    std::array<int, 6> extent = { whole.dims[0], -1, whole.dims[1], -1, nz, -1 };
+    for (std::int64_t n : band.nodes)
+    {
+      auto c = outerLattice.coordinates(n);
+      c[2] += outer.first;
+      for (int a = 0; a < 3; ++a)
+      {
+        extent[2 * a] = std::min(extent[2 * a], c[a]);
+        extent[2 * a + 1] = std::max(extent[2 * a + 1], c[a]);
+      }
+    }
+    Writer bandBox;
+    bandBox.put(extent);
+    if (!exchangeRound(exchange, stopped, bandBox, all))
+    {
+      return {};
+    }
+    for (std::size_t r = 0; r < all.count(); ++r)
+    {
+      Reader in{ all.data(r) };
+      const auto e = in.get<std::array<int, 6>>();
+      for (int a = 0; a < 3; ++a)
+      {
+        extent[2 * a] = std::min(extent[2 * a], e[2 * a]);
+        extent[2 * a + 1] = std::max(extent[2 * a + 1], e[2 * a + 1]);
+      }
+    }
+    std::array<int, 6> shell = { extent[0] - 1, extent[1] + 1, extent[2] - 1, extent[3] + 1, extent[4] - 1 - outer.first,
+      extent[5] + 1 - outer.first };
+    const bool withShell = meshInsideGrid && extent[0] - 1 > 0 && extent[2] - 1 > 0 && extent[4] - 1 > 0 &&
+      extent[1] + 1 < whole.dims[0] - 1 && extent[3] + 1 < whole.dims[1] - 1 && extent[5] + 1 < nz - 1;
     SlabRegions regions;
     std::vector<int> labelled; // whole-grid planes: the owned planes next to or inside other slabs
     for (int k = own.first; k <= own.last; ++k)
@@ -344,7 +384,7 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
     if (!stopped && !own.empty())
     {
       regions = floodSlabRegions(outerLattice, own.first - outer.first, own.last - outer.first, labelled,
-        state.data(), progress.stage(0.45, 0.55), stopped);
+        withShell ? &shell : nullptr, state.data(), progress.stage(0.45, 0.55), stopped);
     }
     for (int& k : regions.planes)
     {
@@ -402,7 +442,6 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
 
   // Round 3: the x and y passes alone, the z pass with the other slabs' winners of each column.
   std::vector<std::int32_t> site(slab.nodeCount(), -1);
-  std::vector<Vec3> sitePoints = band.closest;
   std::vector<Vec3> siteNormals = needWinding ? trustedNormals(source, band) : std::vector<Vec3>();
   for (std::size_t k = 0; k < band.nodes.size(); ++k)
   {
@@ -412,6 +451,9 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
       site[n] = static_cast<std::int32_t>(k);
     }
   }
+  const auto bandSize = static_cast<long long>(band.nodes.size());
+  std::vector<Vec3> sitePoints = std::move(band.closest);
+  band = DistanceBand(); // the rest of the band is done with: its memory goes to the passes
   const SlabPlanes planes{ whole, mine.first, mine.last, own.first, own.last };
   ColumnSites winners;
   if (!stopped && !mine.empty())
@@ -424,15 +466,14 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
   }
   Writer message;
   message.put(winners.start);
-  std::vector<Vec3> points(winners.sites.size()), normals;
-  std::transform(winners.sites.begin(), winners.sites.end(), points.begin(), [&](std::int32_t s) { return sitePoints[s]; });
-  if (needWinding)
-  {
-    normals.resize(winners.sites.size());
-    std::transform(winners.sites.begin(), winners.sites.end(), normals.begin(), [&](std::int32_t s) { return siteNormals[s]; });
-  }
-  message.put(points);
-  message.put(normals);
+  auto winning = [&](const std::vector<Vec3>& of) {
+    std::vector<Vec3> values(winners.sites.size());
+    std::transform(winners.sites.begin(), winners.sites.end(), values.begin(), [&](std::int32_t s) { return of[s]; });
+    return values;
+  };
+  message.put(winning(sitePoints));
+  message.put(needWinding ? winning(siteNormals) : std::vector<Vec3>());
+  winners = ColumnSites();
   if (!exchangeRound(exchange, stopped, message, all))
   {
     return {};
@@ -441,11 +482,11 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
   {
     ColumnSites others;
     others.start.assign(planeSize + 1, 0);
-    std::vector<std::vector<std::int64_t>> starts(all.size());
-    std::vector<std::int32_t> firstSite(all.size());
-    for (std::size_t r = 0; r < all.size(); ++r)
+    std::vector<std::vector<std::int64_t>> starts(all.count());
+    std::vector<std::int32_t> firstSite(all.count());
+    for (std::size_t r = 0; r < all.count(); ++r)
     {
-      Reader in{ all[r] };
+      Reader in{ all.data(r) };
       starts[r] = in.getVector<std::int64_t>();
       if (static_cast<int>(r) == rank || starts[r].empty())
       {
@@ -465,7 +506,8 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
     std::partial_sum(others.start.begin(), others.start.end(), others.start.begin());
     others.sites.resize(others.start.back());
     std::vector<std::int64_t> fill(others.start.begin(), others.start.end() - 1);
-    for (std::size_t r = 0; r < all.size(); ++r)
+    all = Messages(); // read: its memory goes to the z pass
+    for (std::size_t r = 0; r < starts.size(); ++r)
     {
       for (std::int64_t c = 0; c < static_cast<std::int64_t>(starts[r].size()) - 1; ++c)
       {
@@ -488,7 +530,7 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
     stopped = !winding.completed;
   }
   Writer counts;
-  counts.put(static_cast<long long>(band.nodes.size()));
+  counts.put(bandSize);
   counts.put(winding.evaluated);
   counts.put(winding.inside);
   if (!exchangeRound(exchange, stopped, counts, all))
@@ -496,9 +538,9 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
     return {};
   }
   long long inside = 0;
-  for (const auto& m : all)
+  for (std::size_t r = 0; r < all.count(); ++r)
   {
-    Reader in{ m };
+    Reader in{ all.data(r) };
     result.bandNodes += in.get<long long>();
     result.windingEvaluations += in.get<long long>();
     inside += in.get<long long>();
@@ -546,8 +588,13 @@ Status computeSlabDistance(const TriangleSoup& soup, const std::vector<Vec3>& po
 
 bool everyProcess(const SlabExchange& exchange, bool yes)
 {
-  const auto all = exchange.allGather(std::vector<char>(1, yes ? 1 : 0));
-  return std::all_of(all.begin(), all.end(), [](const std::vector<char>& m) { return !m.empty() && m[0]; });
+  const Messages all = exchange.allGather(std::vector<char>(1, yes ? 1 : 0));
+  bool every = true;
+  for (std::size_t r = 0; r < all.count(); ++r)
+  {
+    every = every && all.length(r) > 0 && all.data(r)[0];
+  }
+  return every;
 }
 
 } // namespace shrinkwrap

@@ -16,6 +16,16 @@
 namespace shrinkwrap
 {
 
+// Every process's message, in rank order, one after the other in one buffer.
+struct Messages
+{
+  std::vector<char> bytes;
+  std::vector<std::size_t> offsets; // where each process's message starts, and the end
+  std::size_t count() const { return this->offsets.empty() ? 0 : this->offsets.size() - 1; }
+  const char* data(std::size_t r) const { return this->bytes.data() + this->offsets[r]; }
+  std::size_t length(std::size_t r) const { return this->offsets[r + 1] - this->offsets[r]; }
+};
+
 // What the processes computing one lattice's slabs say to each other.
 class SlabExchange
 {
@@ -23,9 +33,9 @@ public:
   virtual ~SlabExchange() = default;
   virtual int rank() const = 0;
   virtual int size() const = 0;
-  // Every process's bytes, in rank order, to every process. A collective call: every process makes
-  // the same calls in the same order.
-  virtual std::vector<std::vector<char>> allGather(const std::vector<char>& mine) const = 0;
+  // Every process's bytes to every process. A collective call: every process makes the same calls in
+  // the same order.
+  virtual Messages allGather(const std::vector<char>& mine) const = 0;
 };
 
 // Fills `distance` (the nodes of planes first .. last of `whole`, x fastest) with the signed

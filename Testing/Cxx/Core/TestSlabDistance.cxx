@@ -34,7 +34,7 @@ public:
   ThreadExchange(Shared& shared, int rank) : S(shared), Rank(rank) {}
   int rank() const override { return this->Rank; }
   int size() const override { return static_cast<int>(this->S.slots.size()); }
-  std::vector<std::vector<char>> allGather(const std::vector<char>& mine) const override
+  Messages allGather(const std::vector<char>& mine) const override
   {
     std::unique_lock<std::mutex> lock(this->S.mutex);
     this->S.slots[this->Rank] = mine;
@@ -50,7 +50,14 @@ public:
     {
       this->S.done.wait(lock, [&] { return this->S.round != round; });
     }
-    return this->S.published;
+    Messages all;
+    for (const auto& m : this->S.published)
+    {
+      all.offsets.push_back(all.bytes.size());
+      all.bytes.insert(all.bytes.end(), m.begin(), m.end());
+    }
+    all.offsets.push_back(all.bytes.size());
+    return all;
   }
 
 private:

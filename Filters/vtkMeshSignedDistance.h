@@ -27,6 +27,13 @@
  * Resolution 240); CellSize > 0 overrides it. Spacing is equal on all axes. Alternatively,
  * UseExplicitGrid takes OutputBounds and OutputDimensions, as Resample To Image does.
  *
+ * Under MPI (pvbatch or pvserver on N ranks, one piece per rank), the filter asks for pieces that
+ * are slabs of planes and each rank computes only its own, with the other ranks (SlabDistance.h): the
+ * field costs each rank 1/N of the memory and equals the serial field at every node. Pieces of other
+ * shapes are computed as even slabs and handed round. Every rank needs the whole input (the filter asks
+ * its input for all of it); ranks that hold different inputs or grid settings get an error, not a hang.
+ * Ghost layers are marked (vtkGhostType) when a downstream filter asks for them.
+ *
  * Work runs on all cores through vtkSMPTools (a scoped STDThread backend unless the environment
  * variable VTK_SMP_BACKEND_IN_USE chooses one); progress is reported per stage and AbortExecute stops
  * the computation soon, leaving an empty output.

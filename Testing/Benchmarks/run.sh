@@ -81,3 +81,14 @@ for count in 20000 200000; do
     fi
   done
 done
+
+echo
+echo "## Mesh Signed Distance by pieces under MPI (issue #14), $(date -u +%Y-%m-%d)"
+echo
+echo "A 300 x 300 x 300 grid of CGAL's armadillo (345,944 triangles), \`pvbatch\` on 1 rank and \`mpiexec -np 2|3"
+echo "pvbatch --symmetric\` (the filter's own slab pieces), threads per rank 1 (VTK_SMP_MAX_THREADS=1) or all"
+echo "cores; three interleaved rounds. Seconds: the update of the field, slowest rank (includes reading the mesh"
+echo "and building its tree on every rank). Memory: peak resident size per rank, and what the update added to it"
+echo "(pvbatch itself holds about 320 MiB before)."
+echo
+bash "$(dirname "$0")/mpi.sh" "$build" 300

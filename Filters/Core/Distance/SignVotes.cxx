@@ -235,25 +235,25 @@ SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int own
   long long labelled = 0;
   // One region from the given seeds (the first node of the seeds, or of the slab, stands for it).
   auto addRegion = [&](const std::vector<std::int64_t>& seeds) {
-      const auto id = static_cast<std::int32_t>(regions.seed.size());
-      long long outside = 0, inside = 0;
-      labelled += flood(
-        lattice, state, seeds, Unvisited, Outside, ownedFirst, ownedLast,
-        [&](std::int64_t m) {
-          outside += state[m] == BandOutside;
-          inside += state[m] == BandInside;
-        },
-        [&](std::int64_t row, int kr, int x0, int x1) {
-          if (slot[kr] >= 0)
-          {
-            std::int32_t* labels = regions.labels.data() + slot[kr] * plane + (row - kr * plane);
-            std::fill(labels + x0, labels + x1 + 1, id);
-          }
-        });
-      regions.seed.push_back(seeds.empty() ? ownedFirst * plane : seeds[0]);
-      regions.inside.push_back(inside);
-      regions.outside.push_back(outside);
-      return progress.report(static_cast<double>(labelled) / total);
+    const auto id = static_cast<std::int32_t>(regions.seed.size());
+    long long outside = 0, inside = 0;
+    labelled += flood(
+      lattice, state, seeds, Unvisited, Outside, ownedFirst, ownedLast,
+      [&](std::int64_t m) {
+        outside += state[m] == BandOutside;
+        inside += state[m] == BandInside;
+      },
+      [&](std::int64_t row, int kr, int x0, int x1) {
+        if (slot[kr] >= 0)
+        {
+          std::int32_t* labels = regions.labels.data() + slot[kr] * plane + (row - kr * plane);
+          std::fill(labels + x0, labels + x1 + 1, id);
+        }
+      });
+    regions.seed.push_back(seeds.empty() ? ownedFirst * plane : seeds[0]);
+    regions.inside.push_back(inside);
+    regions.outside.push_back(outside);
+    return progress.report(static_cast<double>(labelled) / total);
   };
   if (shell)
   {

@@ -8,7 +8,10 @@
 #include "VTKConversions.h"
 #include "WrapSession.h"
 
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -21,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,6 +34,19 @@ using namespace shrinkwrap;
 
 namespace
 {
+// A composite among port 0's inputs, if there is one: the target, wrapped block by block.
+vtkCompositeDataSet* compositeTarget(vtkInformationVector* port0)
+{
+  for (int c = 0; c < port0->GetNumberOfInformationObjects(); ++c)
+  {
+    if (auto* composite = vtkCompositeDataSet::GetData(port0, c))
+    {
+      return composite;
+    }
+  }
+  return nullptr;
+}
+
 // The target among port 0's inputs and the distance field, on port 1 or beside the target on port 0
 // (an image with SignedDistance there); the number of targets found.
 int targetAndField(
@@ -175,11 +192,46 @@ int vtkShrinkWrapFilter::FillInputPortInformation(int port, vtkInformation* info
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), types[std::clamp(port, 0, 2)]);
   if (port == 0)
   {
+    // A composite target is taken whole and wrapped block by block (ExecuteBlocks): left to the
+    // composite pipeline, each block would restart the others' sessions and time would not move.
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
     info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1); // the target, and maybe its field (TargetAndField)
   }
   if (port > 0)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkShrinkWrapFilter::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject"); // a surface, or a composite of them
+  return 1;
+}
+
+vtkTypeBool vtkShrinkWrapFilter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(request, inputVector, outputVector);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+// A composite target gives a composite of the same kind (a wrap per block), anything else a surface.
+int vtkShrinkWrapFilter::RequestDataObject(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkCompositeDataSet* composite = compositeTarget(inputVector[0]);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+  if (composite ? !output || std::string(output->GetClassName()) != composite->GetClassName()
+                : !vtkPolyData::SafeDownCast(output))
+  {
+    vtkSmartPointer<vtkDataObject> made = composite ? vtkSmartPointer<vtkDataObject>::Take(composite->NewInstance())
+                                                    : vtkSmartPointer<vtkDataObject>(vtkSmartPointer<vtkPolyData>::New());
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
   }
   return 1;
 }
@@ -333,10 +385,12 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
 {
   vtkDataSet* targetData = nullptr;
   vtkImageData* field = nullptr;
-  if (!this->TargetAndField(inputVector, targetData, field))
-  {
-    return false;
-  }
+  return this->TargetAndField(inputVector, targetData, field) &&
+    this->StartSession(targetData, field, vtkPolyData::GetData(inputVector[2], 0));
+}
+
+bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* field, vtkPolyData* initial)
+{
   const convert::PolygonMeshes input = convert::polygonMeshes(targetData);
   vtkPolyData* target = input.meshes.empty() ? nullptr : input.meshes[0];
   const bool hasPolygons = target && target->GetNumberOfPolys() + target->GetNumberOfStrips() > 0;
@@ -352,7 +406,6 @@ bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
     vtkOutputWindowDisplayText(("Shrink Wrap: the target (" + input.extractedFrom +
       ") is wrapped by its outer surface, as Extract Surface gives it.\n").c_str());
   }
-  vtkPolyData* initial = vtkPolyData::GetData(inputVector[2], 0);
   if (const Status valid = this->CoreSettings().validate(); !valid)
   {
     vtkErrorMacro(<< valid.message() << ".");
@@ -535,35 +588,92 @@ int vtkShrinkWrapFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkPolyData* output = vtkPolyData::GetData(outInfo);
+  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
   output->Initialize();
+  vtkCompositeDataSet* blocks = compositeTarget(inputVector[0]);
   try // memory can run out below any estimate (a process limit, a job's cap)
   {
-    this->Execute(inputVector, outInfo, output);
+    if (blocks)
+    {
+      this->ExecuteBlocks(blocks, inputVector, outInfo, vtkCompositeDataSet::SafeDownCast(output));
+    }
+    else if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+    {
+      // One surface, not split: under MPI, piece 0 holds it and the other pieces are empty.
+    }
+    else
+    {
+      this->Execute([&] { return this->StartSession(inputVector); }, outInfo, vtkPolyData::SafeDownCast(output));
+    }
   }
   catch (const std::bad_alloc&)
   {
     output->Initialize();
     this->Current.reset(); // a half-made step is not kept; the next update starts over
+    this->Blocks.clear();
     vtkErrorMacro("Out of memory: lower Subdivision Level, Resolution or Cache Memory Limit.");
   }
   catch (const std::exception& e) // e.g. threads that cannot start under the same limits
   {
     output->Initialize();
     this->Current.reset();
+    this->Blocks.clear();
     vtkErrorMacro("Shrink Wrap failed: " << e.what() << ".");
   }
   return 1;
 }
 
-void vtkShrinkWrapFilter::Execute(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output)
+// Each block of a composite target is wrapped on its own, with a session (and a cache) of its own;
+// under MPI the blocks are shared out among the pieces (block k on piece k mod pieces, the others
+// leave it empty), so the ranks wrap them in parallel.
+void vtkShrinkWrapFilter::ExecuteBlocks(
+  vtkCompositeDataSet* blocks, vtkInformationVector** inputVector, vtkInformation* outInfo, vtkCompositeDataSet* output)
 {
-  // One surface, not split: under MPI, piece 0 holds it and the other pieces are empty.
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  output->CopyStructure(blocks);
+  if (this->GetNumberOfInputConnections(1) > 0 || this->GetNumberOfInputConnections(2) > 0 ||
+    inputVector[0]->GetNumberOfInformationObjects() > 1)
   {
+    vtkErrorMacro("A composite target is wrapped block by block, each on a distance field and a start of its own: "
+                  "disconnect the Distance Field and the Initial Surface.");
     return;
   }
+  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    : 0;
+  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+    : 1;
+  const vtkMTimeType key = this->SessionKey();
+  if (key != this->BlocksKey)
+  {
+    this->Blocks.clear(); // another target or other properties: every block starts over
+    this->BlocksKey = key;
+  }
+  vtkSmartPointer<vtkCompositeDataIterator> block = vtkSmartPointer<vtkCompositeDataIterator>::Take(blocks->NewIterator());
+  int count = 0;
+  for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem(), ++count)
+  {
+    vtkNew<vtkPolyData> wrap;
+    auto* target = vtkDataSet::SafeDownCast(block->GetCurrentDataObject());
+    if (target && count % pieces == piece)
+    {
+      // The block's session in place of the single target's while it runs.
+      BlockSession& own = this->Blocks[block->GetCurrentFlatIndex()];
+      std::swap(own.session, this->Current);
+      std::swap(own.key, this->CurrentKey);
+      std::swap(own.seconds, this->ComputeSeconds);
+      this->Execute([&] { return this->StartSession(target, nullptr, nullptr); }, outInfo, wrap);
+      std::swap(own.session, this->Current);
+      std::swap(own.key, this->CurrentKey);
+      std::swap(own.seconds, this->ComputeSeconds);
+    }
+    output->SetDataSet(block, wrap);
+  }
+}
+
+void vtkShrinkWrapFilter::Execute(const std::function<bool()>& start, vtkInformation* outInfo, vtkPolyData* output)
+{
   // Any change of an input or a property starts a new session (and drops the cache).
   const vtkMTimeType key = this->SessionKey();
   if (!this->Current || this->CurrentKey != key)
@@ -571,7 +681,7 @@ void vtkShrinkWrapFilter::Execute(vtkInformationVector** inputVector, vtkInforma
     this->Current.reset();
     bool started = false;
     const auto begin = std::chrono::steady_clock::now();
-    onAllCores([&] { started = this->StartSession(inputVector); });
+    onAllCores([&] { started = start(); });
     this->ComputeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     if (!started) // a session is kept only when it started
     {

@@ -35,6 +35,12 @@
  * ComputeSeconds. Under MPI the surface is piece 0; other pieces
  * are empty.
  *
+ * A composite target (multiblock, partitioned) is wrapped block by block, each block as if alone, with
+ * a session and a step cache of its own (time moves every block; CacheMemoryLimit applies per block);
+ * the output is a composite of the same shape with a surface per block. Its blocks take no
+ * DistanceField or InitialSurface (each is computed from its block). Under MPI, block k is wrapped on
+ * piece k mod the number of pieces and left empty on the others: the ranks wrap the blocks in parallel.
+ *
  * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
  * NumberOfSteps N_t = 25 (Fig. 11: 200), SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 12 and
  * D = 0.5 (eq. (4); Fig. 11: 1 and 0), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
@@ -53,8 +59,11 @@
 #include "ShrinkWrapFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // for the session
+#include <functional> // for Execute's start
+#include <map>        // for the blocks' sessions
+#include <memory>     // for the session
 
+class vtkCompositeDataSet;
 class vtkDataSet;
 class vtkImageData;
 namespace shrinkwrap
@@ -273,12 +282,20 @@ protected:
   ~vtkShrinkWrapFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int ComputePipelineMTime(vtkInformation* request, vtkInformationVector** inInfoVec,
     vtkInformationVector* outInfoVec, int requestFromOutputPort, vtkMTimeType* mtime) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  void Execute(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
+  // The current session (started by `start` when there is none for the inputs as they are), advanced
+  // to the step asked for, into `output`.
+  void Execute(const std::function<bool()>& start, vtkInformation* outInfo, vtkPolyData* output);
+  void ExecuteBlocks(vtkCompositeDataSet* blocks, vtkInformationVector** inputVector, vtkInformation* outInfo,
+    vtkCompositeDataSet* output);
   // The properties as the core's settings.
   shrinkwrap::WrapSettings CoreSettings() const;
 
@@ -325,6 +342,7 @@ private:
   // The cell size of the field the next run will move on (FieldCellSize).
   double PlannedFieldCell(vtkInformationVector** inputVector);
   bool StartSession(vtkInformationVector** inputVector);
+  bool StartSession(vtkDataSet* target, vtkImageData* field, vtkPolyData* initial);
   bool FieldsOf(vtkPolyData* target, vtkImageData* image, bool givenStart, const shrinkwrap::WrapSettings& settings,
     shrinkwrap::WrapFields& fields);
   int StepAsked(vtkInformation* outInfo) const;
@@ -336,6 +354,15 @@ private:
   vtkMTimeType CurrentKey = 0;
   double ComputeSeconds = 0; // fields, start and steps of the current session
   double FieldCellSize = 0;  // planned in RequestInformation, the run's in RequestData
+  // The sessions of a composite target's blocks (by flat index), swapped into Current while each runs.
+  struct BlockSession
+  {
+    std::unique_ptr<shrinkwrap::WrapSession> session;
+    vtkMTimeType key = 0;
+    double seconds = 0;
+  };
+  std::map<unsigned int, BlockSession> Blocks;
+  vtkMTimeType BlocksKey = 0;
 };
 
 #endif

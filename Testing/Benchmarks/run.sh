@@ -91,4 +91,9 @@ echo "cores; three interleaved rounds. Seconds: the update of the field, slowest
 echo "and building its tree on every rank). Memory: peak resident size per rank, and what the update added to it"
 echo "(pvbatch itself holds about 320 MiB before)."
 echo
-bash "$(dirname "$0")/mpi.sh" "$build" 300
+bash "$(dirname "$0")/mpi.sh" "$build" distance 300
+echo
+echo "Shrink Wrap at its defaults on a multiblock of CGAL's camel, hand, ChineseDragon-10kv and"
+echo "mech-holes-shark, to its last step (block k wrapped on rank k mod ranks):"
+echo
+bash "$(dirname "$0")/mpi.sh" "$build" wrap

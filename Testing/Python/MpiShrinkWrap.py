@@ -1,5 +1,6 @@
 """Shrink Wrap under ParaView's MPI engine: piece 0 holds the surface, the other ranks' pieces are
-empty, so the gathered data has the surface once.
+empty, so the gathered data has the surface once. A multiblock target (issue #14): block k is wrapped
+on rank k mod ranks only, in parallel, and equals its wrap in one process.
 
 Usage: mpiexec -np 2 pvbatch --symmetric MpiShrinkWrap.py <ShrinkWrap plugin .so> <mesh>
 """
@@ -21,5 +22,25 @@ total = wrap.GetDataInformation().GetNumberOfPoints()
 expected_local = 642 if rank == 0 else 0
 ok = local == expected_local and (rank != 0 or total == 642) and ranks == 2
 print("rank %d of %d: %d points here, %d in all: %s" % (rank, ranks, local, total, "ok" if ok else "FAIL"))
+
+# Four blocks, shared out among the ranks; the reference: the same filter in this process alone.
+blocks = GroupDatasets(Input=[OpenDataFile(mesh)] + [
+    Sphere(Center=[3 * k, 0, 0], Radius=0.5 + 0.2 * k, ThetaResolution=24, PhiResolution=24) for k in range(1, 4)])
+settings = dict(NumberOfSteps=10, Resolution=40)
+wrap_blocks = ShrinkWrap(Input=blocks, **settings)
+wrap_blocks.UpdatePipeline(10 * wrap_blocks.TimeStep)
+mine = wrap_blocks.GetClientSideObject().GetOutputDataObject(0)
+reference = ShrinkWrap(Input=blocks, **settings).GetClientSideObject()
+reference.UpdatePiece(0, 1, 0)  # in this process only: every block
+whole = reference.GetOutputDataObject(0)
+for k in range(4):
+    ours, alone = mine.GetBlock(k), whole.GetBlock(k)
+    same = ours.GetNumberOfPoints() == alone.GetNumberOfPoints() and all(
+        ours.GetPoint(i) == alone.GetPoint(i) for i in range(ours.GetNumberOfPoints()))
+    here = k % ranks == rank
+    good = (same and alone.GetNumberOfPoints() > 0) if here else ours.GetNumberOfPoints() == 0
+    print("rank %d of %d: block %d %s (%d points): %s" % (rank, ranks, k, "wrapped here" if here else "left to another rank",
+                                                         ours.GetNumberOfPoints(), "ok" if good else "FAIL"))
+    ok = ok and good
 if not ok:
     sys.exit(1)  # (a normal end lets pvbatch finalize MPI)

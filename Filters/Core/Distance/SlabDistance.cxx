@@ -53,7 +53,10 @@ struct Reader
   std::vector<T> getVector()
   {
     std::vector<T> values(this->get<std::uint64_t>());
-    std::memcpy(values.data(), this->bytes + this->at, values.size() * sizeof(T));
+    if (!values.empty()) // (an empty vector's data() may be null, which memcpy may not take)
+    {
+      std::memcpy(values.data(), this->bytes + this->at, values.size() * sizeof(T));
+    }
     this->at += values.size() * sizeof(T);
     return values;
   }

@@ -106,7 +106,7 @@ void livesOn(vtkShrinkWrapFilter* wrap, const std::string& name)
   SW_CHECK(pointsOf(wrap->GetOutputDataObject(0)).size() == 3 * 162, name << ": the pipeline lives on");
 }
 
-// Composite targets: the composite pipeline runs Shrink Wrap once per block; each block's wrap equals
+// Composite targets: Shrink Wrap wraps them block by block; each block's wrap equals
 // the wrap of that mesh alone. Mesh Signed Distance takes the composite whole: one field of all meshes.
 void compositeInputs()
 {
@@ -189,6 +189,47 @@ void compositeInputs()
   whileSaying(wrap, [&] { wrap->Update(); });
   const auto leaves = vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0));
   SW_CHECK(!leaves.empty() && pointsOf(leaves[0]) == wrapA, "a block of tetrahedra beside a mesh: the mesh is wrapped");
+}
+
+// A composite target over time (issue #14): every block moves through the steps as its mesh alone
+// does, each from a session of its own (before, time did not move at all for a composite); pieces
+// share the blocks out; a distance field beside a composite target is refused with a message.
+void compositeTimeSteps()
+{
+  vtkSmartPointer<vtkPolyData> a = sphere(0), b = sphere(3, 0.5);
+  const double tau = wrapOf(a)->GetTimeStep();
+  auto alone = [&](vtkPolyData* mesh, int step) {
+    auto w = wrapOf(mesh, 10);
+    w->UpdateTimeStep(step * tau);
+    return pointsOf(w->GetOutput());
+  };
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, a);
+  blocks->SetBlock(1, b);
+  auto wrap = wrapOf(blocks, 10);
+  for (int step : { 10, 4, 10, 7 })
+  {
+    wrap->UpdateTimeStep(step * tau);
+    const auto leaves = vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0));
+    SW_CHECK(leaves.size() == 2 && stepOf(leaves[0]) == step && stepOf(leaves[1]) == step &&
+        pointsOf(leaves[0]) == alone(a, step) && pointsOf(leaves[1]) == alone(b, step),
+      "composite target at step " << step << ": each block is its mesh's wrap at that step");
+  }
+  wrap->UpdatePiece(1, 2, 0);
+  const auto piece = vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0));
+  SW_CHECK(piece.size() == 2 && piece[0]->GetNumberOfPoints() == 0 && pointsOf(piece[1]) == alone(b, 7),
+    "piece 1 of 2 wraps block 1 only (block k on piece k mod 2; " << piece.size() << " blocks)");
+
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(4, 4, 4);
+  auto withField = wrapOf(blocks);
+  withField->SetInputData(1, field);
+  const Said said = whileSaying(withField, [&] { withField->Update(); });
+  const auto none = vtkCompositeDataSet::GetDataSets<vtkPolyData>(withField->GetOutputDataObject(0));
+  SW_CHECK(said.errors == 1 && said.text.find("block by block") != std::string::npos &&
+      std::all_of(none.begin(), none.end(), [](vtkPolyData* m) { return m->GetNumberOfPoints() == 0; }),
+    "a distance field beside a composite target: refused, said why (" << said.text << ")");
+  livesOn(withField, "composite target with a field");
 }
 
 // Cache Memory Limit below three steps (0, or 1 MiB with a large surface): the thinning stops at step
@@ -450,6 +491,7 @@ void aborts()
 int TestShrinkWrapBadInput(int, char*[])
 {
   compositeInputs();
+  compositeTimeSteps();
   starvedCache();
   corruptStartingSurfaces();
   absurdStepsAndTimes();

@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,41 @@ vtkCompositeDataSet* compositeTarget(vtkInformationVector* port0)
     }
   }
   return nullptr;
+}
+
+// The piece that wraps each block: largest expected cost first, each to the least loaded piece. The
+// cost is the wrap's expected vertex count, the block's area over L^2 (its resolved Target Edge
+// Length); 1 for a block without polygons (points: no area to go by).
+std::vector<int> piecesOfBlocks(const std::vector<vtkDataSet*>& targets, int pieces, const WrapSettings& settings)
+{
+  std::vector<double> cost(targets.size(), 0);
+  for (std::size_t b = 0; b < targets.size(); ++b)
+  {
+    const convert::PolygonMeshes meshes = convert::polygonMeshes(targets[b]);
+    convert::SoupCounts counts;
+    const TriangleSoup soup = meshes.meshes.empty() ? TriangleSoup() : convert::soupOf(meshes.meshes, counts);
+    double area = 0;
+    for (const auto& t : soup.triangles)
+    {
+      const auto& p = soup.points;
+      const bool valid = std::all_of(t.begin(), t.end(), [&](int v) { return v >= 0 && v < static_cast<int>(p.size()); });
+      area += valid ? 0.5 * (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).norm() : 0.0;
+    }
+    const Box box = convert::boundsOf(targets[b]);
+    const double length = box.empty() ? 0.0 : settings.resolved(box).targetLength;
+    cost[b] = length > 0 && std::isfinite(area / (length * length)) ? std::max(1.0, area / (length * length)) : 1.0;
+  }
+  std::vector<std::size_t> order(targets.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+  std::vector<double> load(pieces, 0);
+  std::vector<int> piece(targets.size(), 0);
+  for (std::size_t b : order)
+  {
+    piece[b] = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    load[piece[b]] += cost[b];
+  }
+  return piece;
 }
 
 // The target among port 0's inputs and the distance field, on port 1 or beside the target on port 0
@@ -625,8 +661,8 @@ int vtkShrinkWrapFilter::RequestData(
 }
 
 // Each block of a composite target is wrapped on its own, with a session (and a cache) of its own;
-// under MPI the blocks are shared out among the pieces (block k on piece k mod pieces, the others
-// leave it empty), so the ranks wrap them in parallel.
+// under MPI the blocks are shared out among the pieces by their expected cost (piecesOfBlocks; the
+// other pieces leave a block empty), so the ranks wrap them in parallel.
 void vtkShrinkWrapFilter::ExecuteBlocks(
   vtkCompositeDataSet* blocks, vtkInformationVector** inputVector, vtkInformation* outInfo, vtkCompositeDataSet* output)
 {
@@ -651,12 +687,19 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
     this->BlocksKey = key;
   }
   vtkSmartPointer<vtkCompositeDataIterator> block = vtkSmartPointer<vtkCompositeDataIterator>::Take(blocks->NewIterator());
+  std::vector<vtkDataSet*> targets;
+  for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
+  {
+    targets.push_back(vtkDataSet::SafeDownCast(block->GetCurrentDataObject()));
+  }
+  const std::vector<int> wrappedOn = pieces > 1 ? piecesOfBlocks(targets, pieces, this->CoreSettings())
+                                                : std::vector<int>(targets.size(), 0);
   int count = 0;
   for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem(), ++count)
   {
     vtkNew<vtkPolyData> wrap;
-    auto* target = vtkDataSet::SafeDownCast(block->GetCurrentDataObject());
-    if (target && count % pieces == piece)
+    vtkDataSet* target = targets[count];
+    if (target && wrappedOn[count] == piece)
     {
       // The block's session in place of the single target's while it runs.
       BlockSession& own = this->Blocks[block->GetCurrentFlatIndex()];

@@ -38,8 +38,10 @@
  * A composite target (multiblock, partitioned) is wrapped block by block, each block as if alone, with
  * a session and a step cache of its own (time moves every block; CacheMemoryLimit applies per block);
  * the output is a composite of the same shape with a surface per block. Its blocks take no
- * DistanceField or InitialSurface (each is computed from its block). Under MPI, block k is wrapped on
- * piece k mod the number of pieces and left empty on the others: the ranks wrap the blocks in parallel.
+ * DistanceField or InitialSurface (each is computed from its block). Under MPI, each block is wrapped
+ * on one piece and left empty on the others, the blocks shared out by their expected cost (area over
+ * the Target Edge Length squared, largest first to the least loaded piece): the ranks wrap the blocks
+ * in parallel.
  *
  * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
  * NumberOfSteps N_t = 25 (Fig. 11: 200), SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 12 and

@@ -1,6 +1,6 @@
 """Shrink Wrap under ParaView's MPI engine: piece 0 holds the surface, the other ranks' pieces are
-empty, so the gathered data has the surface once. A multiblock target (issue #14): block k is wrapped
-on rank k mod ranks only, in parallel, and equals its wrap in one process.
+empty, so the gathered data has the surface once. A multiblock target (issue #14): every block is
+wrapped on one rank only, in parallel, and equals its wrap in one process.
 
 Usage: mpiexec -np 2 pvbatch --symmetric MpiShrinkWrap.py <ShrinkWrap plugin .so> <mesh>
 """
@@ -8,6 +8,7 @@ import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview.modules.vtkRemotingCore import vtkProcessModule
+from vtkmodules.vtkCommonCore import vtkIntArray
 
 plugin, mesh = sys.argv[1], sys.argv[2]
 LoadPlugin(plugin, ns=globals())
@@ -33,14 +34,21 @@ mine = wrap_blocks.GetClientSideObject().GetOutputDataObject(0)
 reference = ShrinkWrap(Input=blocks, **settings).GetClientSideObject()
 reference.UpdatePiece(0, 1, 0)  # in this process only: every block
 whole = reference.GetOutputDataObject(0)
+wrapped_here = vtkIntArray()
 for k in range(4):
     ours, alone = mine.GetBlock(k), whole.GetBlock(k)
+    here = ours.GetNumberOfPoints() > 0
     same = ours.GetNumberOfPoints() == alone.GetNumberOfPoints() and all(
         ours.GetPoint(i) == alone.GetPoint(i) for i in range(ours.GetNumberOfPoints()))
-    here = k % ranks == rank
-    good = (same and alone.GetNumberOfPoints() > 0) if here else ours.GetNumberOfPoints() == 0
+    good = same if here else alone.GetNumberOfPoints() > 0
     print("rank %d of %d: block %d %s (%d points): %s" % (rank, ranks, k, "wrapped here" if here else "left to another rank",
                                                          ours.GetNumberOfPoints(), "ok" if good else "FAIL"))
     ok = ok and good
+    wrapped_here.InsertNextValue(1 if here else 0)
+wrapped = vtkIntArray()
+controller.AllReduce(wrapped_here, wrapped, 2)  # vtkCommunicator::SUM_OP
+once = all(wrapped.GetValue(k) == 1 for k in range(4)) and 0 < sum(wrapped_here.GetValue(k) for k in range(4)) < 4
+print("rank %d of %d: every block wrapped on one rank, some here: %s" % (rank, ranks, "ok" if once else "FAIL"))
+ok = ok and once
 if not ok:
     sys.exit(1)  # (a normal end lets pvbatch finalize MPI)

@@ -218,7 +218,7 @@ void compositeTimeSteps()
   wrap->UpdatePiece(1, 2, 0);
   const auto piece = vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0));
   SW_CHECK(piece.size() == 2 && piece[0]->GetNumberOfPoints() == 0 && pointsOf(piece[1]) == alone(b, 7),
-    "piece 1 of 2 wraps block 1 only (block k on piece k mod 2; " << piece.size() << " blocks)");
+    "piece 1 of 2 wraps the smaller block only (the larger goes to piece 0; " << piece.size() << " blocks)");
 
   vtkNew<vtkImageData> field;
   field->SetDimensions(4, 4, 4);

@@ -125,6 +125,12 @@ Agreement agree(const ControllerExchange& exchange, bool ready, const shrinkwrap
 
 using Extent = std::array<int, 6>;
 
+// The planes rank r of n computes when the pieces asked for are not slabs: an even share.
+Extent evenSlab(const shrinkwrap::GridLattice& lattice, int r, int n)
+{
+  return { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, r * lattice.dims[2] / n, (r + 1) * lattice.dims[2] / n - 1 };
+}
+
 Extent intersection(const Extent& a, const Extent& b)
 {
   return { std::max(a[0], b[0]), std::min(a[1], b[1]), std::max(a[2], b[2]), std::min(a[3], b[3]),
@@ -155,19 +161,16 @@ void forEachRow(const Extent& within, const Extent& part, F&& f)
 }
 
 // Each rank's piece (`wanted`, its update extent, of any shape) from the ranks' slabs of planes
-// (rank r holds planes r * nz / n .. (r + 1) * nz / n - 1, whole in x and y): a gather to each rank
+// (rank r holds evenSlab(r)): a gather to each rank
 // of the parts of the others' slabs that its piece overlaps. Collective.
 void piecesFromSlabs(vtkMultiProcessController* controller, const shrinkwrap::GridLattice& lattice,
-  vtkFloatArray* slab, int first, int last, const int wanted[6], vtkFloatArray* piece)
+  vtkFloatArray* slab, const int wanted[6], vtkFloatArray* piece)
 {
   const int n = controller->GetNumberOfProcesses(), rank = controller->GetLocalProcessId();
-  const int nz = lattice.dims[2];
   std::vector<int> all(6 * n);
   controller->AllGather(wanted, all.data(), 6);
-  auto slabOf = [&](int r) {
-    return Extent{ 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, r * nz / n, (r + 1) * nz / n - 1 };
-  };
-  const Extent mine = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, first, last };
+  auto slabOf = [&](int r) { return evenSlab(lattice, r, n); };
+  const Extent mine = slabOf(rank);
   const Extent own = { wanted[0], wanted[1], wanted[2], wanted[3], wanted[4], wanted[5] };
   piece->SetName(slab->GetName());
   piece->SetNumberOfValues(nodesOf(own));
@@ -356,14 +359,13 @@ int vtkMeshSignedDistance::RequestData(
   else if (byPieces)
   {
     // Pieces of other shapes (a consumer that splits otherwise): even shares of planes, then handed round.
-    const int n = controller->GetNumberOfProcesses(), rank = controller->GetLocalProcessId();
-    const int first = rank * lattice.dims[2] / n, last = (rank + 1) * lattice.dims[2] / n - 1;
+    const Extent share = evenSlab(lattice, controller->GetLocalProcessId(), controller->GetNumberOfProcesses());
     vtkNew<vtkFloatArray> slab;
-    if (!this->Compute(soup, cloud, lattice, first, last, &exchange, slab, result))
+    if (!this->Compute(soup, cloud, lattice, share[4], share[5], &exchange, slab, result))
     {
       return 1;
     }
-    piecesFromSlabs(controller, lattice, slab, first, last, extent, values);
+    piecesFromSlabs(controller, lattice, slab, extent, values);
   }
   else if (!this->Compute(soup, cloud, lattice, 0, lattice.dims[2] - 1, nullptr, values, result))
   {

@@ -28,8 +28,9 @@
  * UseExplicitGrid takes OutputBounds and OutputDimensions, as Resample To Image does.
  *
  * Under MPI (pvbatch or pvserver on N ranks, one piece per rank), the filter asks for pieces that
- * are slabs of planes and each rank computes only its own, with the other ranks (SlabDistance.h): the
- * field costs each rank 1/N of the memory and equals the serial field at every node. Pieces of other
+ * are slabs of planes and each rank computes only its own, with the other ranks (SlabDistance.h): a
+ * rank's memory and time for the field follow its share of the grid (every rank holds the whole mesh),
+ * and the field equals the serial field at every node. Pieces of other
  * shapes are computed as even slabs and handed round. Every rank needs the whole input (the filter asks
  * its input for all of it); ranks that hold different inputs or grid settings get an error, not a hang.
  * Ghost layers are marked (vtkGhostType) when a downstream filter asks for them.

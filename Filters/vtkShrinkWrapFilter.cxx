@@ -685,6 +685,7 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
   {
     this->Blocks.clear(); // another target or other properties: every block starts over
     this->BlocksKey = key;
+    this->BlockPieces.clear();
   }
   vtkSmartPointer<vtkCompositeDataIterator> block = vtkSmartPointer<vtkCompositeDataIterator>::Take(blocks->NewIterator());
   std::vector<vtkDataSet*> targets;
@@ -692,8 +693,14 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
   {
     targets.push_back(vtkDataSet::SafeDownCast(block->GetCurrentDataObject()));
   }
-  const std::vector<int> wrappedOn = pieces > 1 ? piecesOfBlocks(targets, pieces, this->CoreSettings())
-                                                : std::vector<int>(targets.size(), 0);
+  // Shared out once per target and properties, not at every time asked for.
+  if (this->BlockPieces.size() != targets.size() + 1 || this->BlockPieces.back() != pieces)
+  {
+    this->BlockPieces = pieces > 1 ? piecesOfBlocks(targets, pieces, this->CoreSettings())
+                                   : std::vector<int>(targets.size(), 0);
+    this->BlockPieces.push_back(pieces);
+  }
+  const std::vector<int>& wrappedOn = this->BlockPieces;
   int count = 0;
   for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem(), ++count)
   {

@@ -64,6 +64,7 @@
 #include <functional> // for Execute's start
 #include <map>        // for the blocks' sessions
 #include <memory>     // for the session
+#include <vector>     // for the blocks' pieces
 
 class vtkCompositeDataSet;
 class vtkDataSet;
@@ -365,6 +366,8 @@ private:
   };
   std::map<unsigned int, BlockSession> Blocks;
   vtkMTimeType BlocksKey = 0;
+  std::vector<int> BlockPieces; // the piece that wraps each block, then the number of pieces
+
 };
 
 #endif

@@ -5,6 +5,7 @@
 
 #include <vtkSMPThreadLocal.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <iterator>
@@ -12,6 +13,21 @@
 
 namespace shrinkwrap
 {
+
+std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std::int64_t>& nodes)
+{
+  std::array<int, 6> e = { lattice.dims[0], -1, lattice.dims[1], -1, lattice.dims[2], -1 };
+  for (std::int64_t n : nodes)
+  {
+    const auto c = lattice.coordinates(n);
+    for (int a = 0; a < 3; ++a)
+    {
+      e[2 * a] = std::min(e[2 * a], c[a]);
+      e[2 * a + 1] = std::max(e[2 * a + 1], c[a]);
+    }
+  }
+  return e;
+}
 
 std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vector<std::int64_t>& cells,
   int extraLayers, const std::array<bool, 6>& gridFaces, std::uint8_t* state)

@@ -45,6 +45,25 @@ struct DistanceBand
 // state, and lists them. The nodes on the grid's faces that gridFaces names (-x, +x, -y, +y, -z, +z)
 // join too: a grid that does not contain the whole mesh needs exact distances and signs there (a
 // slab's own cut faces are not the grid's).
+// Whether the surface's box lies strictly inside the grid's (then the grid's corner is outside).
+inline bool strictlyInside(const Box& surface, const Box& grid)
+{
+  return (surface.min.array() > grid.min.array()).all() && (surface.max.array() < grid.max.array()).all();
+}
+// The distance within which the band's nodes find their closest point: a node of a touched cell is
+// within a cell diagonal of the surface; each extra layer adds a cell.
+inline double bandSearchRadius(const GridLattice& lattice, int extraLayers)
+{
+  return 1.001 * (1 + extraLayers) * lattice.spacing.norm();
+}
+// Band nodes this close to the surface have no side.
+inline double onSurfaceDistance(const GridLattice& lattice)
+{
+  return 1e-6 * lattice.minSpacing();
+}
+// imin, imax, jmin, jmax, kmin, kmax of the given nodes (imin > imax when there are none).
+std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std::int64_t>& nodes);
+
 inline std::array<bool, 6> allFaces(bool on)
 {
   return { on, on, on, on, on, on };

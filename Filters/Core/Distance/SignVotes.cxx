@@ -150,10 +150,8 @@ SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const st
 
   // Regions: the outside shell first (when the band leaves room around it), then every region
   // reachable from a node not yet labelled.
-  std::array<int, 6> inner = { bandExtent[0] - 1, bandExtent[1] + 1, bandExtent[2] - 1, bandExtent[3] + 1,
-    bandExtent[4] - 1, bandExtent[5] + 1 };
-  const bool shell = cornerIsOutside && inner[0] > 0 && inner[2] > 0 && inner[4] > 0 && inner[1] < d[0] - 1 &&
-    inner[3] < d[1] - 1 && inner[5] < d[2] - 1;
+  std::array<int, 6> inner;
+  const bool shell = outsideShell(d, cornerIsOutside, bandExtent, inner);
   std::vector<std::int64_t> seeds;
   if (shell)
   {
@@ -214,6 +212,15 @@ SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const st
     invertBandSigns(state, total);
   }
   return votes;
+}
+
+bool outsideShell(const std::array<int, 3>& dims, bool cornerIsOutside, const std::array<int, 6>& bandExtent,
+  std::array<int, 6>& inner)
+{
+  inner = { bandExtent[0] - 1, bandExtent[1] + 1, bandExtent[2] - 1, bandExtent[3] + 1, bandExtent[4] - 1,
+    bandExtent[5] + 1 };
+  return cornerIsOutside && inner[0] > 0 && inner[2] > 0 && inner[4] > 0 && inner[1] < dims[0] - 1 &&
+    inner[3] < dims[1] - 1 && inner[5] < dims[2] - 1;
 }
 
 SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast,

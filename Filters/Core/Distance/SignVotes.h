@@ -37,6 +37,12 @@ SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const st
 // Negates the distances of the inside nodes (band and off-band) of an unsigned field, if signed.
 void applySigns(const std::uint8_t* state, std::int64_t count, bool isSigned, float* distance);
 
+// The box of node indices around the band (bandExtent grown by a node on every side) when its outside
+// is one shell of off-band nodes labelled without a flood: the mesh inside the grid (cornerIsOutside)
+// and a node to spare between the box and every face of the grid. False: no shell.
+bool outsideShell(const std::array<int, 3>& dims, bool cornerIsOutside, const std::array<int, 6>& bandExtent,
+  std::array<int, 6>& inner);
+
 // Swaps BandInside and BandOutside (a mesh facing inwards).
 void invertBandSigns(std::uint8_t* state, std::int64_t count);
 

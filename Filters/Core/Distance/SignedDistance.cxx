@@ -51,21 +51,6 @@ bool eikonalFarField(const GridLattice& lattice, const DistanceBand& band, const
   return sweepEikonal(lattice, state, distance, rounds, progress);
 }
 
-// imin, imax, jmin, jmax, kmin, kmax of the given nodes.
-std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std::int64_t>& nodes)
-{
-  std::array<int, 6> e = { lattice.dims[0], -1, lattice.dims[1], -1, lattice.dims[2], -1 };
-  for (std::int64_t n : nodes)
-  {
-    const auto c = lattice.coordinates(n);
-    for (int a = 0; a < 3; ++a)
-    {
-      e[2 * a] = std::min(e[2 * a], c[a]);
-      e[2 * a + 1] = std::max(e[2 * a + 1], c[a]);
-    }
-  }
-  return e;
-}
 
 // The votes disagreed: the winding number decides where the closest point's side is in doubt. The
 // Eikonal far field keeps no sites: closest-point passes find them (their distances are not kept).
@@ -218,13 +203,10 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   DistanceBand band;
   const Box grid = lattice.bounds();
   const Box surface = source.bounds();
-  const bool meshInsideGrid =
-    (surface.min.array() > grid.min.array()).all() && (surface.max.array() < grid.max.array()).all();
+  const bool meshInsideGrid = strictlyInside(surface, grid);
   std::vector<std::int64_t> nodes =
     bandNodes(lattice, cells, settings.bandLayers, allFaces(!meshInsideGrid), state.data());
-  // A node of a touched cell is within a cell diagonal of the surface; each extra layer adds a cell.
-  const double searchRadius = 1.001 * (1 + settings.bandLayers) * lattice.spacing.norm();
-  if (!computeBand(source, lattice, std::move(nodes), searchRadius, 1e-6 * lattice.minSpacing(),
+  if (!computeBand(source, lattice, std::move(nodes), bandSearchRadius(lattice, settings.bandLayers), onSurfaceDistance(lattice),
         progress.stage(0.2, 0.45), band, state.data()))
   {
     return result;

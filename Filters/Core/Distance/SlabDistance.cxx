@@ -309,8 +309,7 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
   const std::int64_t slabStart = (mine.first - outer.first) * planeSize; // outer index of the slab's node 0
   const Box grid = whole.bounds();
   const Box surface = source.bounds();
-  const bool meshInsideGrid =
-    (surface.min.array() > grid.min.array()).all() && (surface.max.array() < grid.max.array()).all();
+  const bool meshInsideGrid = strictlyInside(surface, grid);
   bool stopped = false;
   std::vector<std::uint8_t> state;
   DistanceBand band;
@@ -328,10 +327,9 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
                        to = (std::min(outer.last, mine.last + 1) - outer.first + 1) * planeSize;
     nodes.erase(std::remove_if(nodes.begin(), nodes.end(), [&](std::int64_t n) { return n < from || n >= to; }),
       nodes.end());
-    const double searchRadius = 1.001 * (1 + settings.bandLayers) * whole.spacing.norm();
     stopped = stopped ||
-      !computeBand(source, outerLattice, std::move(nodes), searchRadius, 1e-6 * whole.minSpacing(),
-        progress.stage(0.2, 0.45), band, state.data());
+      !computeBand(source, outerLattice, std::move(nodes), bandSearchRadius(whole, settings.bandLayers),
+        onSurfaceDistance(whole), progress.stage(0.2, 0.45), band, state.data());
   }
 
   // Round 2: the sign regions, flooded per slab, joined across the borders, decided together. The
@@ -339,17 +337,9 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
   bool needWinding = false;
   if (settings.computeSign)
   {
-    std::array<int, 6> extent = { whole.dims[0], -1, whole.dims[1], -1, nz, -1 };
-    for (std::int64_t n : band.nodes)
-    {
-      auto c = outerLattice.coordinates(n);
-      c[2] += outer.first;
-      for (int a = 0; a < 3; ++a)
-      {
-        extent[2 * a] = std::min(extent[2 * a], c[a]);
-        extent[2 * a + 1] = std::max(extent[2 * a + 1], c[a]);
-      }
-    }
+    std::array<int, 6> extent = nodeExtent(outerLattice, band.nodes);
+    extent[4] = band.nodes.empty() ? nz : extent[4] + outer.first; // in whole-grid planes
+    extent[5] += band.nodes.empty() ? 0 : outer.first;
     Writer bandBox;
     bandBox.put(extent);
     if (!exchangeRound(exchange, stopped, bandBox, all))
@@ -366,10 +356,10 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
         extent[2 * a + 1] = std::max(extent[2 * a + 1], e[2 * a + 1]);
       }
     }
-    std::array<int, 6> shell = { extent[0] - 1, extent[1] + 1, extent[2] - 1, extent[3] + 1, extent[4] - 1 - outer.first,
-      extent[5] + 1 - outer.first };
-    const bool withShell = meshInsideGrid && extent[0] - 1 > 0 && extent[2] - 1 > 0 && extent[4] - 1 > 0 &&
-      extent[1] + 1 < whole.dims[0] - 1 && extent[3] + 1 < whole.dims[1] - 1 && extent[5] + 1 < nz - 1;
+    std::array<int, 6> shell;
+    const bool withShell = outsideShell(whole.dims, meshInsideGrid, extent, shell);
+    shell[4] -= outer.first; // in the outer lattice's planes
+    shell[5] -= outer.first;
     SlabRegions regions;
     std::vector<int> labelled; // whole-grid planes: the owned planes next to or inside other slabs
     for (int k = own.first; k <= own.last; ++k)

@@ -12,6 +12,8 @@
 #include "TriangleSoup.h"
 #include "TriangleSurface.h"
 
+#include <vtkCompositeDataSet.h>
+#include <vtkInformation.h>
 #include <vtkSmartPointer.h>
 
 #include <string>
@@ -114,6 +116,20 @@ WrapSummary summarize(vtkPolyData* output, double cell, int steps, double second
 // As field data: DistancePercentiles, DistancePercentilesInCells (3 each), FieldCellSize,
 // SmallAngleShare, ComputeSeconds, Summary (the text).
 void addSummary(const WrapSummary& summary, vtkPolyData* output);
+
+// A filter's output object (REQUEST_DATA_OBJECT): a composite of the same kind as `composite`, or,
+// without one, a `Leaf`; the output is kept when it is of that kind already.
+template <typename Leaf>
+void makeOutput(vtkInformation* outInfo, vtkCompositeDataSet* composite)
+{
+  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+  if (composite ? !output || std::string(output->GetClassName()) != composite->GetClassName() : !Leaf::SafeDownCast(output))
+  {
+    vtkSmartPointer<vtkDataObject> made = composite ? vtkSmartPointer<vtkDataObject>::Take(composite->NewInstance())
+                                                    : vtkSmartPointer<vtkDataObject>(vtkSmartPointer<Leaf>::New());
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
+  }
+}
 
 // Field data of the wrap's output: StepIndex, Time and Status; and the output's DATA_TIME_STEP.
 void addStepFields(int step, double time, const std::string& status, vtkPolyData* output);

@@ -4,8 +4,12 @@
 #include "SignedDistance.h"
 #include "SlabDistance.h"
 #include "VTKConversions.h"
+#include "RankInputs.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -37,35 +41,6 @@ namespace convert = shrinkwrap::convert;
 
 namespace
 {
-// The processes of ParaView's MPI engine (pvbatch, pvserver), as the slab computation talks to them.
-class ControllerExchange : public shrinkwrap::SlabExchange
-{
-public:
-  explicit ControllerExchange(vtkMultiProcessController* controller) : Controller(controller) {}
-  int rank() const override { return this->Controller->GetLocalProcessId(); }
-  int size() const override { return this->Controller->GetNumberOfProcesses(); }
-  shrinkwrap::Messages allGather(const std::vector<char>& mine) const override
-  {
-    const int n = this->size();
-    vtkIdType length = static_cast<vtkIdType>(mine.size());
-    std::vector<vtkIdType> lengths(n), offsets(n, 0);
-    this->Controller->AllGather(&length, lengths.data(), 1);
-    for (int r = 1; r < n; ++r)
-    {
-      offsets[r] = offsets[r - 1] + lengths[r - 1];
-    }
-    shrinkwrap::Messages all;
-    all.bytes.resize(static_cast<std::size_t>(offsets[n - 1] + lengths[n - 1]));
-    this->Controller->AllGatherV(mine.data(), all.bytes.data(), length, lengths.data(), offsets.data());
-    all.offsets.assign(offsets.begin(), offsets.end());
-    all.offsets.push_back(all.bytes.size());
-    return all;
-  }
-
-private:
-  vtkMultiProcessController* Controller;
-};
-
 // Whether the ranks can compute one field together, and how. Collective.
 struct Agreement
 {
@@ -74,7 +49,7 @@ struct Agreement
   bool slabs = true; // every rank asks for whole planes (or nothing): each computes just those
 };
 
-Agreement agree(const ControllerExchange& exchange, bool ready, const shrinkwrap::TriangleSoup& soup,
+Agreement agree(const convert::ControllerExchange& exchange, bool ready, const shrinkwrap::TriangleSoup& soup,
   const shrinkwrap::TriangleSoup& cloud, const shrinkwrap::GridLattice& lattice, const int update[6])
 {
   struct Fingerprint
@@ -224,7 +199,15 @@ vtkMeshSignedDistance::vtkMeshSignedDistance()
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
   this->SetProgressText("Mesh Signed Distance");
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
+
+vtkMeshSignedDistance::~vtkMeshSignedDistance()
+{
+  this->SetController(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkMeshSignedDistance, Controller, vtkMultiProcessController);
 
 int vtkMeshSignedDistance::FillInputPortInformation(int, vtkInformation* info)
 {
@@ -233,6 +216,32 @@ int vtkMeshSignedDistance::FillInputPortInformation(int, vtkInformation* info)
   info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  return 1;
+}
+
+int vtkMeshSignedDistance::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject"); // an image, or a composite of them
+  return 1;
+}
+
+vtkTypeBool vtkMeshSignedDistance::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(request, inputVector, outputVector);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+// FieldPerBlock with a composite input gives a composite of the same kind (a field per block),
+// anything else an image.
+int vtkMeshSignedDistance::RequestDataObject(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  convert::makeOutput<vtkImageData>(outputVector->GetInformationObject(0),
+    this->FieldPerBlock ? vtkCompositeDataSet::GetData(inputVector[0], 0) : nullptr);
   return 1;
 }
 
@@ -259,13 +268,18 @@ int vtkMeshSignedDistance::RequestInformation(
   // same lattice from the same bounds.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+  this->GridCellSize = 0;
+  if (vtkCompositeDataSet::SafeDownCast(outInfo->Get(vtkDataObject::DATA_OBJECT())))
+  {
+    return 1; // a field per block: a grid of its own for each
+  }
   shrinkwrap::Box bounds;
   if (!this->UseExplicitGrid && this->GetNumberOfInputConnections(0) > 0)
   {
     vtkAlgorithm* producer = this->GetInputAlgorithm(0, 0);
     const int port = this->GetInputConnection(0, 0)->GetIndex();
     producer->UpdatePiece(0, 1, 0);
-    vtkDataObject* input = producer->GetOutputDataObject(port);
+    vtkDataObject* input = convert::wholeInput(producer->GetOutputDataObject(port), this->Controller, this->Gathered);
     // The bounds of what ReadInput will measure.
     const shrinkwrap::Box polygons = convert::surfaceBounds(convert::polygonMeshes(input).meshes);
     const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, !polygons.empty());
@@ -279,7 +293,6 @@ int vtkMeshSignedDistance::RequestInformation(
     }
   }
   shrinkwrap::GridLattice lattice;
-  this->GridCellSize = 0;
   if (this->ComputeLattice(bounds, lattice))
   {
     this->GridCellSize = lattice.spacing.maxCoeff();
@@ -309,19 +322,25 @@ int vtkMeshSignedDistance::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (auto* blocks = vtkCompositeDataSet::SafeDownCast(outInfo->Get(vtkDataObject::DATA_OBJECT())))
+  {
+    this->ExecuteBlocks(vtkCompositeDataSet::GetData(inputVector[0], 0), outInfo, blocks);
+    return 1;
+  }
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
   // Under MPI with a piece per rank, this rank computes an even share of the grid's planes with
   // the others (SlabDistance.h), and the ranks then hand each other what their pieces hold; otherwise
   // the whole grid (a request for part of it is cropped).
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  vtkMultiProcessController* controller = this->Controller;
+  vtkDataObject* input = convert::wholeInput(vtkDataObject::GetData(inputVector[0], 0), this->Controller, this->Gathered);
   const bool byPieces = controller && controller->GetNumberOfProcesses() > 1 &&
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) == controller->GetNumberOfProcesses() &&
     this->SweepMethod == CLOSEST_POINT && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
   shrinkwrap::TriangleSoup soup, cloud;
   shrinkwrap::Box bounds;
   shrinkwrap::GridLattice lattice;
-  bool ready = this->ReadInput(vtkDataObject::GetData(inputVector[0], 0), soup, cloud, bounds);
+  bool ready = this->ReadInput(input, soup, cloud, bounds);
   if (const shrinkwrap::Status placed = ready ? this->ComputeLattice(bounds, lattice) : shrinkwrap::Status(); !placed)
   {
     vtkErrorMacro("Cannot place the grid: " << placed.message() << ".");
@@ -330,7 +349,7 @@ int vtkMeshSignedDistance::RequestData(
   // Every rank must measure the same surface on the same grid: a rank that cannot, or holds another
   // input, stops all of them (rather than leave the others waiting for it).
   int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
-  const ControllerExchange exchange(controller);
+  const convert::ControllerExchange exchange(controller);
   Agreement agreement;
   if (byPieces)
   {
@@ -396,6 +415,82 @@ int vtkMeshSignedDistance::RequestData(
   }
   this->AddStatus(result, output);
   return 1;
+}
+
+bool vtkMeshSignedDistance::FieldOf(vtkDataObject* input, vtkImageData* output)
+{
+  shrinkwrap::TriangleSoup soup, cloud;
+  shrinkwrap::Box bounds;
+  shrinkwrap::GridLattice lattice;
+  if (!this->ReadInput(input, soup, cloud, bounds))
+  {
+    return true;
+  }
+  if (const shrinkwrap::Status placed = this->ComputeLattice(bounds, lattice); !placed)
+  {
+    vtkErrorMacro("Cannot place the grid: " << placed.message() << ".");
+    return true;
+  }
+  vtkNew<vtkFloatArray> values;
+  shrinkwrap::SignedDistanceResult result;
+  if (!this->Compute(soup, cloud, lattice, 0, lattice.dims[2] - 1, nullptr, values, result))
+  {
+    return false;
+  }
+  output->SetDimensions(lattice.dims.data());
+  output->SetOrigin(lattice.origin.data());
+  output->SetSpacing(lattice.spacing.data());
+  output->GetPointData()->SetScalars(values);
+  this->AddStatus(result, output);
+  return true;
+}
+
+// Each block's field is computed whole in one process; under MPI the blocks are shared out among the
+// pieces by their grids' nodes, or computed where they are when the composite arrives distributed
+// (the other pieces leave a block empty).
+void vtkMeshSignedDistance::ExecuteBlocks(vtkCompositeDataSet* input, vtkInformation* outInfo, vtkCompositeDataSet* output)
+{
+  output->Initialize();
+  output->CopyStructure(input);
+  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    : 0;
+  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+    : 1;
+  vtkSmartPointer<vtkCompositeDataIterator> block = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
+  std::vector<vtkDataSet*> leaves;
+  std::vector<double> nodes;
+  for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
+  {
+    leaves.push_back(vtkDataSet::SafeDownCast(block->GetCurrentDataObject()));
+    shrinkwrap::GridLattice lattice;
+    const bool placed = leaves.back() && this->ComputeLattice(convert::boundsOf(leaves.back()), lattice);
+    nodes.push_back(placed ? static_cast<double>(lattice.dims[0]) * lattice.dims[1] * lattice.dims[2] : 1.0);
+  }
+  std::vector<int> computedOn(leaves.size(), 0);
+  if (pieces > 1 && convert::distributed(convert::digestsOfRanks(input, this->Controller)))
+  {
+    for (std::size_t b = 0; b < leaves.size(); ++b)
+    {
+      computedOn[b] = leaves[b] && leaves[b]->GetNumberOfPoints() > 0 ? piece : -1;
+    }
+  }
+  else if (pieces > 1)
+  {
+    computedOn = convert::shareOut(nodes, pieces);
+  }
+  std::size_t count = 0;
+  bool goOn = true; // until a run is aborted or runs out of memory
+  for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem(), ++count)
+  {
+    vtkNew<vtkImageData> field;
+    if (goOn && leaves[count] && computedOn[count] == piece)
+    {
+      goOn = this->FieldOf(leaves[count], field);
+    }
+    output->SetDataSet(block, field);
+  }
 }
 
 bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleSoup& soup,
@@ -602,4 +697,6 @@ void vtkMeshSignedDistance::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SweepMethod: " << (this->SweepMethod == EIKONAL ? "Eikonal" : "ClosestPoint") << "\n";
   os << indent << "BandLayers: " << this->BandLayers << "\n";
   os << indent << "ComputeSign: " << this->ComputeSign << "\n";
+  os << indent << "FieldPerBlock: " << this->FieldPerBlock << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
 }

@@ -19,7 +19,8 @@
  *
  * Output: vtkImageData with the point array "SignedDistance" (float). Field data: "Signed" (1 when the
  * field is signed, 0 when it is unsigned) and "DistanceStatus" (a sentence saying why). A mesh with
- * holes through which the outside reaches the inside gives an unsigned field and a warning.
+ * holes through which the outside reaches the inside gives an unsigned field and a warning. With
+ * FieldPerBlock and a composite input: a composite of the same kind with such an image per block.
  *
  * Grid (the paper's Section 4.1): the input bounds are scaled by BoxScale (phi) about their centre,
  * then grown on every side by OffsetFactor times the largest side of the scaled box (the offset o).
@@ -31,8 +32,10 @@
  * are slabs of planes and each rank computes only its own, with the other ranks (SlabDistance.h): a
  * rank's memory and time for the field follow its share of the grid (every rank holds the whole mesh),
  * and the field equals the serial field at every node. Pieces of other
- * shapes are computed as even slabs and handed round. Every rank needs the whole input (the filter asks
- * its input for all of it); ranks that hold different inputs or grid settings get an error, not a hang.
+ * shapes are computed as even slabs and handed round. Every rank needs the whole input: the filter asks
+ * its input for all of it, and an input that arrives distributed all the same (each rank holding a
+ * part: a partitioned reader, Redistribute DataSet) is gathered, the parts appended on every rank;
+ * ranks with different grid settings get an error, not a hang.
  * Ghost layers are marked (vtkGhostType) when a downstream filter asks for them.
  *
  * Work runs on all cores through vtkSMPTools (a scoped STDThread backend unless the environment
@@ -45,9 +48,17 @@
 #include "ShrinkWrapFiltersModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
+#include <memory> // for the gathered input
+
+class vtkCompositeDataSet;
 class vtkFloatArray;
+class vtkMultiProcessController;
 namespace shrinkwrap
 {
+namespace convert
+{
+struct GatheredInput;
+}
 struct Box;
 struct GridLattice;
 struct IndexedTriangles;
@@ -168,11 +179,38 @@ public:
   vtkBooleanMacro(ComputeSign, bool);
   ///@}
 
+  ///@{
+  /**
+   * For a composite input (multiblock, partitioned): off (default), one field of all its blocks
+   * together; on, a field per block, each on a grid placed around its block (or the explicit grid),
+   * in a composite of the input's shape. Under MPI the blocks' fields are shared out among the ranks
+   * (each computed whole on one rank, by the nodes of its grid), or computed where the blocks are
+   * when the composite arrives distributed.
+   */
+  vtkSetMacro(FieldPerBlock, bool);
+  vtkGetMacro(FieldPerBlock, bool);
+  vtkBooleanMacro(FieldPerBlock, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The MPI ranks that compute the field together (and gather a distributed input). Default: the
+   * global controller (ParaView's MPI engine). Under MPI every rank of it must update the filter at
+   * the same time; set none to compute a whole field in one process alone.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkMeshSignedDistance();
-  ~vtkMeshSignedDistance() override = default;
+  ~vtkMeshSignedDistance() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -190,8 +228,12 @@ protected:
   int BandLayers;
   bool ComputeSign;
   double GridCellSize = 0; // of the grid placed in RequestInformation
+  bool FieldPerBlock = false;
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
+  // A distributed input as gathered on this rank (convert::wholeInput).
+  std::unique_ptr<shrinkwrap::convert::GatheredInput> Gathered;
   // The output lattice: explicit, or placed around the bounds of the input's surface.
   shrinkwrap::Status ComputeLattice(const shrinkwrap::Box& surfaceBounds, shrinkwrap::GridLattice& lattice) const;
   shrinkwrap::SignedDistanceSettings DistanceSettings() const;
@@ -206,6 +248,11 @@ private:
     const shrinkwrap::GridLattice& lattice, int first, int last, const shrinkwrap::SlabExchange* exchange,
     vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
   void AddStatus(const shrinkwrap::SignedDistanceResult& result, vtkImageData* output);
+  // The whole field of `input` in this process alone, as `output` (empty when it cannot be computed);
+  // false when the run was aborted or ran out of memory.
+  bool FieldOf(vtkDataObject* input, vtkImageData* output);
+  // FieldPerBlock: a field per block of `input` into `output`.
+  void ExecuteBlocks(vtkCompositeDataSet* input, vtkInformation* outInfo, vtkCompositeDataSet* output);
 
   vtkMeshSignedDistance(const vtkMeshSignedDistance&) = delete;
   void operator=(const vtkMeshSignedDistance&) = delete;

@@ -6,6 +6,7 @@
 #include "SignedDistance.h"
 #include "UnionSource.h"
 #include "VTKConversions.h"
+#include "RankInputs.h"
 #include "WrapSession.h"
 
 #include "vtkCompositeDataIterator.h"
@@ -15,6 +16,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPointData.h"
@@ -48,9 +50,9 @@ vtkCompositeDataSet* compositeTarget(vtkInformationVector* port0)
   return nullptr;
 }
 
-// The piece that wraps each block: largest expected cost first, each to the least loaded piece. The
-// cost is the wrap's expected vertex count, the block's area over L^2 (its resolved Target Edge
-// Length); 1 for a block without polygons (points: no area to go by).
+// The piece that wraps each block (convert::shareOut). The cost is the wrap's expected vertex count,
+// the block's area over L^2 (its resolved Target Edge Length); 1 for a block without polygons
+// (points: no area to go by).
 std::vector<int> piecesOfBlocks(const std::vector<vtkDataSet*>& targets, int pieces, const WrapSettings& settings)
 {
   std::vector<double> cost(targets.size(), 0);
@@ -70,17 +72,7 @@ std::vector<int> piecesOfBlocks(const std::vector<vtkDataSet*>& targets, int pie
     const double length = box.empty() ? 0.0 : settings.resolved(box).targetLength;
     cost[b] = length > 0 && std::isfinite(area / (length * length)) ? std::max(1.0, area / (length * length)) : 1.0;
   }
-  std::vector<std::size_t> order(targets.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
-  std::vector<double> load(pieces, 0);
-  std::vector<int> piece(targets.size(), 0);
-  for (std::size_t b : order)
-  {
-    piece[b] = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-    load[piece[b]] += cost[b];
-  }
-  return piece;
+  return convert::shareOut(cost, pieces);
 }
 
 // The target among port 0's inputs and the distance field, on port 1 or beside the target on port 0
@@ -180,9 +172,15 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   this->Resolution = defaults.resolution;
   this->CacheMemoryLimit = defaults.cacheMiB;
   this->SetProgressText("Shrink Wrap");
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
-vtkShrinkWrapFilter::~vtkShrinkWrapFilter() = default;
+vtkShrinkWrapFilter::~vtkShrinkWrapFilter()
+{
+  this->SetController(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkShrinkWrapFilter, Controller, vtkMultiProcessController);
 
 WrapSettings vtkShrinkWrapFilter::CoreSettings() const
 {
@@ -219,7 +217,12 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
 
 int vtkShrinkWrapFilter::GetNumberOfComputedSteps() const
 {
-  return this->Current ? this->Current->computedSteps() : 0;
+  int steps = this->Current ? this->Current->computedSteps() : 0;
+  for (const auto& block : this->Blocks)
+  {
+    steps += block.second.session ? block.second.session->computedSteps() : 0;
+  }
+  return steps;
 }
 
 int vtkShrinkWrapFilter::FillInputPortInformation(int port, vtkInformation* info)
@@ -259,16 +262,8 @@ vtkTypeBool vtkShrinkWrapFilter::ProcessRequest(
 // A composite target gives a composite of the same kind (a wrap per block), anything else a surface.
 int vtkShrinkWrapFilter::RequestDataObject(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkCompositeDataSet* composite = compositeTarget(inputVector[0]);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
-  if (composite ? !output || std::string(output->GetClassName()) != composite->GetClassName()
-                : !vtkPolyData::SafeDownCast(output))
-  {
-    vtkSmartPointer<vtkDataObject> made = composite ? vtkSmartPointer<vtkDataObject>::Take(composite->NewInstance())
-                                                    : vtkSmartPointer<vtkDataObject>(vtkSmartPointer<vtkPolyData>::New());
-    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
-  }
+  vtkCompositeDataSet* composite = this->WrapBlocksTogether ? nullptr : compositeTarget(inputVector[0]);
+  convert::makeOutput<vtkPolyData>(outputVector->GetInformationObject(0), composite);
   return 1;
 }
 
@@ -338,9 +333,13 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
     }
     return field->GetSpacing()[0];
   }
+  if (vtkCompositeDataSet::SafeDownCast(target) && !this->WrapBlocksTogether)
+  {
+    return 0; // each block has a field of its own
+  }
   const bool givenStart = this->GetNumberOfInputConnections(2) > 0;
   const convert::PolygonMeshes meshes = convert::polygonMeshes(target);
-  Box box = meshes.meshes.empty() ? Box() : convert::surfaceBounds({ meshes.meshes[0] });
+  Box box = convert::surfaceBounds(meshes.meshes);
   WrapSettings chosen = this->CoreSettings();
   const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, !box.empty());
   if (target && use.points) // as StartSession
@@ -398,16 +397,14 @@ vtkMTimeType vtkShrinkWrapFilter::SessionKey()
 // Port 0 may hold the target and its distance field together: ParaView connects both there when both
 // are selected as Shrink Wrap is created. An image with a SignedDistance point array is then the field
 // (unless port 1 has one); the rest is the target, one dataset.
-bool vtkShrinkWrapFilter::TargetAndField(vtkInformationVector** inputVector, vtkDataSet*& target, vtkImageData*& field)
+bool vtkShrinkWrapFilter::TargetAndField(vtkInformationVector** inputVector, vtkDataObject*& target, vtkImageData*& field)
 {
   std::vector<vtkDataObject*> port0;
   for (int c = 0; c < inputVector[0]->GetNumberOfInformationObjects(); ++c)
   {
-    port0.push_back(vtkDataSet::GetData(inputVector[0], c));
+    port0.push_back(vtkDataObject::GetData(inputVector[0], c));
   }
-  vtkDataObject* found = nullptr;
-  const int targets = targetAndField(port0, vtkImageData::GetData(inputVector[1], 0), found, field);
-  target = vtkDataSet::SafeDownCast(found);
+  const int targets = targetAndField(port0, vtkImageData::GetData(inputVector[1], 0), target, field);
   if (targets > 1)
   {
     vtkErrorMacro("Shrink Wrap wraps one target at a time, and its Input holds " << targets
@@ -417,12 +414,27 @@ bool vtkShrinkWrapFilter::TargetAndField(vtkInformationVector** inputVector, vtk
   return true;
 }
 
-bool vtkShrinkWrapFilter::StartSession(vtkInformationVector** inputVector)
+// Every rank takes part (the target is made whole on each); piece 0 wraps it, under MPI the other
+// pieces are empty.
+void vtkShrinkWrapFilter::ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output)
 {
-  vtkDataSet* targetData = nullptr;
+  vtkDataObject* found = nullptr;
   vtkImageData* field = nullptr;
-  return this->TargetAndField(inputVector, targetData, field) &&
-    this->StartSession(targetData, field, vtkPolyData::GetData(inputVector[2], 0));
+  const bool ok = this->TargetAndField(inputVector, found, field);
+  vtkSmartPointer<vtkDataSet> together; // a composite's blocks as one target
+  if (vtkCompositeDataSet::SafeDownCast(found))
+  {
+    together = convert::appendedLeaves(found);
+    found = together;
+  }
+  auto* target = vtkDataSet::SafeDownCast(convert::wholeInput(ok ? found : nullptr, this->Controller, this->Gathered));
+  const bool piece0 = !outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) ||
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) == 0;
+  if (ok && piece0)
+  {
+    this->Execute([&] { return this->StartSession(target, field, vtkPolyData::GetData(inputVector[2], 0)); }, outInfo,
+      output);
+  }
 }
 
 bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* field, vtkPolyData* initial)
@@ -626,21 +638,16 @@ int vtkShrinkWrapFilter::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
   output->Initialize();
-  vtkCompositeDataSet* blocks = compositeTarget(inputVector[0]);
+  vtkCompositeDataSet* blocks = this->WrapBlocksTogether ? nullptr : compositeTarget(inputVector[0]);
   try // memory can run out below any estimate (a process limit, a job's cap)
   {
     if (blocks)
     {
       this->ExecuteBlocks(blocks, inputVector, outInfo, vtkCompositeDataSet::SafeDownCast(output));
     }
-    else if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
-      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
-    {
-      // One surface, not split: under MPI, piece 0 holds it and the other pieces are empty.
-    }
     else
     {
-      this->Execute([&] { return this->StartSession(inputVector); }, outInfo, vtkPolyData::SafeDownCast(output));
+      this->ExecuteWhole(inputVector, outInfo, vtkPolyData::SafeDownCast(output));
     }
   }
   catch (const std::bad_alloc&)
@@ -693,8 +700,19 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
   {
     targets.push_back(vtkDataSet::SafeDownCast(block->GetCurrentDataObject()));
   }
-  // Shared out once per target and properties, not at every time asked for.
-  if (this->BlockPieces.size() != targets.size() + 1 || this->BlockPieces.back() != pieces)
+  // A composite every rank holds alike is shared out (once per target and properties, not at every
+  // time asked for); one that arrives distributed is wrapped where its blocks are.
+  const bool distributed = pieces > 1 && convert::distributed(convert::digestsOfRanks(blocks, this->Controller));
+  if (distributed)
+  {
+    this->BlockPieces.clear();
+    for (vtkDataSet* target : targets)
+    {
+      this->BlockPieces.push_back(target && target->GetNumberOfPoints() > 0 ? piece : -1);
+    }
+    this->BlockPieces.push_back(-pieces); // not a share-out to keep
+  }
+  else if (this->BlockPieces.size() != targets.size() + 1 || this->BlockPieces.back() != pieces)
   {
     this->BlockPieces = pieces > 1 ? piecesOfBlocks(targets, pieces, this->CoreSettings())
                                    : std::vector<int>(targets.size(), 0);
@@ -720,6 +738,7 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
     }
     output->SetDataSet(block, wrap);
   }
+  this->FieldCellSize = 0; // each block had a field of its own
 }
 
 void vtkShrinkWrapFilter::Execute(const std::function<bool()>& start, vtkInformation* outInfo, vtkPolyData* output)
@@ -869,5 +888,7 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "CacheMemoryLimit: " << this->CacheMemoryLimit << " MiB\n";
+  os << indent << "WrapBlocksTogether: " << this->WrapBlocksTogether << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "FieldCellSize: " << this->FieldCellSize << "\n";
 }

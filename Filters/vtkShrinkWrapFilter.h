@@ -41,7 +41,11 @@
  * DistanceField or InitialSurface (each is computed from its block). Under MPI, each block is wrapped
  * on one piece and left empty on the others, the blocks shared out by their expected cost (area over
  * the Target Edge Length squared, largest first to the least loaded piece): the ranks wrap the blocks
- * in parallel.
+ * in parallel. A composite that arrives distributed (each rank holding some blocks) is wrapped where
+ * its blocks are. WrapBlocksTogether wraps all blocks as one target instead (output: one surface).
+ *
+ * Under MPI a target that arrives distributed (each rank holding a part: a partitioned reader,
+ * Redistribute DataSet) is gathered first, the parts appended on every rank.
  *
  * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
  * NumberOfSteps N_t = 25 (Fig. 11: 200), SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 12 and
@@ -69,8 +73,13 @@
 class vtkCompositeDataSet;
 class vtkDataSet;
 class vtkImageData;
+class vtkMultiProcessController;
 namespace shrinkwrap
 {
+namespace convert
+{
+struct GatheredInput;
+}
 class WrapSession;
 struct WrapFields;
 struct WrapSettings;
@@ -263,11 +272,29 @@ public:
 
   /// The cell size of the distance field the wrap moves on (its own, as placed for the target and the
   /// settings, or the connected one), in the target's units: planned when the pipeline's information
-  /// is updated (0 while the target has not been computed), and the run's once it ran. Shown in the
-  /// panel (Field Cell Size).
+  /// is updated (0 while the target has not been computed, and for a composite target wrapped block
+  /// by block: each block has a field of its own), and the run's once it ran. Shown in the panel
+  /// (Field Cell Size).
   vtkGetMacro(FieldCellSize, double);
 
-  /// Evolution steps computed since the cache was last dropped (for tests and diagnostics).
+  ///@{
+  /// Wrap a composite target's blocks together, as one target (one surface of all of them, as after
+  /// Merge Blocks), instead of each on its own. Default off.
+  vtkSetMacro(WrapBlocksTogether, bool);
+  vtkGetMacro(WrapBlocksTogether, bool);
+  vtkBooleanMacro(WrapBlocksTogether, bool);
+  ///@}
+
+  ///@{
+  /// The MPI ranks that share a composite target's blocks and gather a target that arrives
+  /// distributed. Default: the global controller (ParaView's MPI engine). Under MPI every rank of it
+  /// must update the filter at the same time; set none to wrap in one process alone.
+  void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+  /// Evolution steps computed since the cache was last dropped (for tests and diagnostics); for a
+  /// composite target wrapped block by block, the sum over the blocks wrapped in this process.
   int GetNumberOfComputedSteps() const;
   /// 1 when a distance field is connected (port 1, or beside the target on port 0): the panel then
   /// hides Resolution.
@@ -330,6 +357,8 @@ protected:
   double SolverTolerance;
   int Resolution;
   double CacheMemoryLimit;
+  bool WrapBlocksTogether = false;
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkShrinkWrapFilter(const vtkShrinkWrapFilter&) = delete;
@@ -341,10 +370,13 @@ private:
   vtkTimeStamp RunAgainTime;
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
-  bool TargetAndField(vtkInformationVector** inputVector, vtkDataSet*& target, vtkImageData*& field);
+  bool TargetAndField(vtkInformationVector** inputVector, vtkDataObject*& target, vtkImageData*& field);
+  // One surface: of the target, or of all a composite target's blocks together.
+  void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
+  // A distributed target as gathered on this rank (convert::wholeInput).
+  std::unique_ptr<shrinkwrap::convert::GatheredInput> Gathered;
   // The cell size of the field the next run will move on (FieldCellSize).
   double PlannedFieldCell(vtkInformationVector** inputVector);
-  bool StartSession(vtkInformationVector** inputVector);
   bool StartSession(vtkDataSet* target, vtkImageData* field, vtkPolyData* initial);
   bool FieldsOf(vtkPolyData* target, vtkImageData* image, bool givenStart, const shrinkwrap::WrapSettings& settings,
     shrinkwrap::WrapFields& fields);

@@ -9,33 +9,14 @@ import sys
 
 import numpy as np
 from paraview.simple import *  # noqa: F401,F403
-from paraview.modules.vtkRemotingCore import vtkProcessModule
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCleanPolyData, vtkContourFilter
 
+from mpi_checks import check, controller, finish, rank, ranks, sums
+
 plugin, resolution, meshes = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
 LoadPlugin(plugin, ns=globals())
-controller = vtkProcessModule.GetProcessModule().GetGlobalController()
-rank, ranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
-failed = False
-
-
-def check(ok, what):
-    global failed
-    print("rank %d of %d: %s: %s" % (rank, ranks, what, "ok" if ok else "FAIL"))
-    failed = failed or not ok
-
-
-def total(value):
-    """The sum over the ranks (every rank gets it)."""
-    from vtkmodules.vtkCommonCore import vtkDoubleArray
-    mine, out = vtkDoubleArray(), vtkDoubleArray()
-    mine.InsertNextValue(value)
-    controller.AllReduce(mine, out, 2)  # vtkCommunicator::SUM_OP
-    return out.GetValue(0)
-
-
 def contour_points(pieces):
     """Points of the contours of all pieces, merged where pieces meet (rank 0; -1 elsewhere)."""
     if rank != 0:
@@ -93,7 +74,7 @@ for mesh in meshes:
     ghosts = piece.GetPointData().GetArray("vtkGhostType")
     check(ghosts is not None and vtk_to_numpy(ghosts).any(), name + " piece marks its ghost layer")
     # The pieces cover the grid (pieces share their border planes, ghost layers overlap more).
-    check(total(nodes) >= wx * wy * wz, name + " pieces cover the grid")
+    check(sums([nodes])[0] >= wx * wy * wz, name + " pieces cover the grid")
 
     serial_contour = vtkContourFilter()
     serial_contour.SetInputData(whole)
@@ -117,5 +98,4 @@ for mesh in meshes:
     Delete(contour)
     Delete(distance)
 
-if failed:
-    sys.exit(1)  # (a normal end lets pvbatch finalize MPI)
+finish()

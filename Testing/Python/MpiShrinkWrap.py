@@ -7,13 +7,11 @@ Usage: mpiexec -np 2 pvbatch --symmetric MpiShrinkWrap.py <ShrinkWrap plugin .so
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
-from paraview.modules.vtkRemotingCore import vtkProcessModule
-from vtkmodules.vtkCommonCore import vtkIntArray
+
+from mpi_checks import check, finish, rank, ranks, sums
 
 plugin, mesh = sys.argv[1], sys.argv[2]
 LoadPlugin(plugin, ns=globals())
-controller = vtkProcessModule.GetProcessModule().GetGlobalController()
-rank, ranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 
 wrap = ShrinkWrap(Input=OpenDataFile(mesh), NumberOfSteps=20, Resolution=48, SubdivisionLevel=3,
                   StartingShape="Icosphere", Remeshing=0)
@@ -21,8 +19,8 @@ wrap.UpdatePipeline(20 * wrap.TimeStep)
 local = wrap.GetClientSideObject().GetOutputDataObject(0).GetNumberOfPoints()
 total = wrap.GetDataInformation().GetNumberOfPoints()
 expected_local = 642 if rank == 0 else 0
-ok = local == expected_local and (rank != 0 or total == 642) and ranks == 2
-print("rank %d of %d: %d points here, %d in all: %s" % (rank, ranks, local, total, "ok" if ok else "FAIL"))
+check(local == expected_local and (rank != 0 or total == 642) and ranks == 2,
+      "%d points here, %d in all" % (local, total))
 
 # Four blocks, shared out among the ranks; the reference: the same filter in this process alone.
 blocks = GroupDatasets(Input=[OpenDataFile(mesh)] + [
@@ -34,21 +32,14 @@ mine = wrap_blocks.GetClientSideObject().GetOutputDataObject(0)
 reference = ShrinkWrap(Input=blocks, **settings).GetClientSideObject()
 reference.UpdatePiece(0, 1, 0)  # in this process only: every block
 whole = reference.GetOutputDataObject(0)
-wrapped_here = vtkIntArray()
+wrapped_here = []
 for k in range(4):
     ours, alone = mine.GetBlock(k), whole.GetBlock(k)
     here = ours.GetNumberOfPoints() > 0
     same = ours.GetNumberOfPoints() == alone.GetNumberOfPoints() and all(
         ours.GetPoint(i) == alone.GetPoint(i) for i in range(ours.GetNumberOfPoints()))
-    good = same if here else alone.GetNumberOfPoints() > 0
-    print("rank %d of %d: block %d %s (%d points): %s" % (rank, ranks, k, "wrapped here" if here else "left to another rank",
-                                                         ours.GetNumberOfPoints(), "ok" if good else "FAIL"))
-    ok = ok and good
-    wrapped_here.InsertNextValue(1 if here else 0)
-wrapped = vtkIntArray()
-controller.AllReduce(wrapped_here, wrapped, 2)  # vtkCommunicator::SUM_OP
-once = all(wrapped.GetValue(k) == 1 for k in range(4)) and 0 < sum(wrapped_here.GetValue(k) for k in range(4)) < 4
-print("rank %d of %d: every block wrapped on one rank, some here: %s" % (rank, ranks, "ok" if once else "FAIL"))
-ok = ok and once
-if not ok:
-    sys.exit(1)  # (a normal end lets pvbatch finalize MPI)
+    check(same if here else alone.GetNumberOfPoints() > 0,
+          "block %d %s (%d points)" % (k, "wrapped here" if here else "left to another rank", ours.GetNumberOfPoints()))
+    wrapped_here.append(1 if here else 0)
+check(sums(wrapped_here) == [1, 1, 1, 1] and 0 < sum(wrapped_here) < 4, "every block wrapped on one rank, some here")
+finish()

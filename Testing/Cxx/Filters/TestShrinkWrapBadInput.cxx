@@ -7,6 +7,7 @@
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
 
+#include <vtkAppendPolyData.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkDataObjectTypes.h>
@@ -149,6 +150,46 @@ void compositeInputs()
     };
     SW_CHECK(field->GetNumberOfPoints() > 0 && valueAt(0) < 0 && valueAt(3) < 0,
       name << " into Mesh Signed Distance: one field, inside both meshes (" << valueAt(0) << ", " << valueAt(3) << ")");
+
+    // The other choices (issue #14): all blocks wrapped together, one surface, equal to the wrap of
+    // the meshes appended into one; a field per block, each equal to its mesh's field alone.
+    vtkNew<vtkAppendPolyData> append;
+    append->AddInputData(a);
+    append->AddInputData(b);
+    append->Update();
+    auto both = wrapOf(append->GetOutput());
+    both->Update();
+    auto together = wrapOf(input);
+    together->SetWrapBlocksTogether(true);
+    const Said saidTogether = whileSaying(together, [&] { together->Update(); });
+    const std::vector<double> wrapBoth = pointsOf(both->GetOutputDataObject(0));
+    SW_CHECK(saidTogether.errors == 0 && !wrapBoth.empty() && pointsOf(together->GetOutputDataObject(0)) == wrapBoth,
+      name << " target, blocks wrapped together: one surface, that of both meshes as one ("
+           << together->GetOutputDataObject(0)->GetClassName() << ")");
+    vtkNew<vtkMeshSignedDistance> alone;
+    alone->SetInputData(b);
+    alone->SetResolution(24);
+    alone->Update();
+    vtkNew<vtkMeshSignedDistance> perBlock;
+    perBlock->SetInputData(input);
+    perBlock->SetResolution(24);
+    perBlock->FieldPerBlockOn();
+    perBlock->Update();
+    vtkDataObject* fields = perBlock->GetOutputDataObject(0);
+    const auto images = vtkCompositeDataSet::GetDataSets<vtkImageData>(fields);
+    auto valuesOf = [](vtkImageData* image) {
+      vtkDataArray* v = image ? image->GetPointData()->GetArray("SignedDistance") : nullptr;
+      std::vector<double> out;
+      for (vtkIdType i = 0; v && i < v->GetNumberOfTuples(); ++i)
+      {
+        out.push_back(v->GetTuple1(i));
+      }
+      return out;
+    };
+    SW_CHECK(std::string(fields->GetClassName()) == name && images.size() == 2 && !valuesOf(alone->GetOutput()).empty() &&
+        valuesOf(images[1]) == valuesOf(alone->GetOutput()) && images[1]->GetBounds()[0] == alone->GetOutput()->GetBounds()[0],
+      name << " into Mesh Signed Distance, a field per block: " << fields->GetClassName() << " of " << images.size()
+           << " images, the second equal to its mesh's field alone");
 
     // A composite where an image or a starting surface belongs: the executive refuses the type (its
     // own error names it), never a crash.

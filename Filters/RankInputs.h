@@ -1,0 +1,73 @@
+// What each MPI rank works on (issue #14). Both filters need a whole target on a rank (distances need
+// every triangle), but a pipeline under ParaView's MPI engine may hand each rank only its part (a
+// partitioned reader, Redistribute DataSet): then the ranks gather the parts. A composite's blocks,
+// each computed on its own, are shared out among the ranks.
+#ifndef ShrinkWrap_RankInputs_h
+#define ShrinkWrap_RankInputs_h
+
+#include "SlabDistance.h"
+
+#include <vtkSmartPointer.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+class vtkDataObject;
+class vtkDataSet;
+class vtkMultiProcessController;
+
+namespace shrinkwrap
+{
+namespace convert
+{
+
+// The processes of ParaView's MPI engine (pvbatch, pvserver) as the core's computations talk to them.
+class ControllerExchange : public SlabExchange
+{
+public:
+  explicit ControllerExchange(vtkMultiProcessController* controller) : Controller(controller) {}
+  int rank() const override;
+  int size() const override;
+  Messages allGather(const std::vector<char>& mine) const override;
+
+private:
+  vtkMultiProcessController* Controller;
+};
+
+// A digest of a dataset's or composite's geometry (points, cells, grid): equal data, equal digest.
+std::uint64_t contentDigest(vtkDataObject* data);
+
+// The digest of each rank's input, the same list on every rank. Collective over `controller`; one
+// entry (this process's) without a controller or with one process.
+std::vector<std::uint64_t> digestsOfRanks(vtkDataObject* input, vtkMultiProcessController* controller);
+
+// Whether the ranks hold different inputs (the parts of a distributed one) by their digests.
+bool distributed(const std::vector<std::uint64_t>& digests);
+
+// The leaves of an input appended into one dataset: polygonal data when every leaf is (its cells kept
+// as they are), else an unstructured grid with coincident points merged (so that faces between the
+// parts of a distributed volume are interior again and Extract Surface drops them). Null for none.
+vtkSmartPointer<vtkDataSet> appendedLeaves(vtkDataObject* input);
+
+// The ranks' inputs gathered, kept between updates while the ranks hold the same parts.
+struct GatheredInput
+{
+  std::vector<std::uint64_t> digests; // of the parts it was gathered from
+  vtkSmartPointer<vtkDataSet> whole;  // the parts appended, in rank order, each distinct part once
+};
+
+// The whole input on this rank: `input` itself when every rank holds the same, else the parts of all
+// ranks appended (ranks holding a part equal to a lower rank's send nothing), kept in `gathered`
+// (made when first needed). Collective over `controller`: every rank calls it at the same update.
+vtkDataObject* wholeInput(
+  vtkDataObject* input, vtkMultiProcessController* controller, std::unique_ptr<GatheredInput>& gathered);
+
+// The piece that computes each block, by the blocks' expected costs: largest first, each to the
+// least loaded piece (the same answer on every rank).
+std::vector<int> shareOut(const std::vector<double>& cost, int pieces);
+
+} // namespace convert
+} // namespace shrinkwrap
+
+#endif

@@ -480,17 +480,21 @@ void vtkMeshSignedDistance::ExecuteBlocks(vtkCompositeDataSet* input, vtkInforma
   {
     computedOn = convert::shareOut(nodes, pieces);
   }
+  const auto here = static_cast<double>(std::count(computedOn.begin(), computedOn.end(), piece));
   std::size_t count = 0;
+  int done = 0;
   bool goOn = true; // until a run is aborted or runs out of memory
   for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem(), ++count)
   {
     vtkNew<vtkImageData> field;
     if (goOn && leaves[count] && computedOn[count] == piece)
     {
+      this->SetProgressShiftScale(done++ / here, 1 / here); // one progress bar over the blocks
       goOn = this->FieldOf(leaves[count], field);
     }
     output->SetDataSet(block, field);
   }
+  this->SetProgressShiftScale(0, 1);
 }
 
 bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleSoup& soup,

@@ -639,6 +639,7 @@ int vtkShrinkWrapFilter::RequestData(
   vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
   output->Initialize();
   vtkCompositeDataSet* blocks = this->WrapBlocksTogether ? nullptr : compositeTarget(inputVector[0]);
+  this->SetProgressShiftScale(0, 1); // (a run that threw may have left a block's share)
   try // memory can run out below any estimate (a process limit, a job's cap)
   {
     if (blocks)
@@ -719,13 +720,15 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
     this->BlockPieces.push_back(pieces);
   }
   const std::vector<int>& wrappedOn = this->BlockPieces;
-  int count = 0;
+  const auto here = static_cast<double>(std::count(wrappedOn.begin(), wrappedOn.end() - 1, piece));
+  int count = 0, done = 0;
   for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem(), ++count)
   {
     vtkNew<vtkPolyData> wrap;
     vtkDataSet* target = targets[count];
     if (target && wrappedOn[count] == piece)
     {
+      this->SetProgressShiftScale(done++ / here, 1 / here); // one progress bar over the blocks
       // The block's session in place of the single target's while it runs.
       BlockSession& own = this->Blocks[block->GetCurrentFlatIndex()];
       std::swap(own.session, this->Current);
@@ -738,6 +741,7 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
     }
     output->SetDataSet(block, wrap);
   }
+  this->SetProgressShiftScale(0, 1);
   this->FieldCellSize = 0; // each block had a field of its own
 }
 

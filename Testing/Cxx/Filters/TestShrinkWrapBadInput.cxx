@@ -22,6 +22,7 @@
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 
@@ -174,7 +175,18 @@ void compositeInputs()
     perBlock->SetInputData(input);
     perBlock->SetResolution(24);
     perBlock->FieldPerBlockOn();
+    std::vector<double> progress;
+    vtkNew<vtkCallbackCommand> onProgress;
+    onProgress->SetClientData(&progress);
+    onProgress->SetCallback([](vtkObject*, unsigned long, void* seen, void* amount) {
+      static_cast<std::vector<double>*>(seen)->push_back(*static_cast<double*>(amount));
+    });
+    perBlock->AddObserver(vtkCommand::ProgressEvent, onProgress);
     perBlock->Update();
+    SW_CHECK(!progress.empty() && std::is_sorted(progress.begin(), progress.end()) && progress.back() <= 1.0 &&
+        std::count_if(progress.begin(), progress.end(), [](double p) { return p > 0.5; }) > 0,
+      name << " into Mesh Signed Distance, a field per block: one progress bar over both blocks ("
+           << progress.size() << " reports)");
     vtkDataObject* fields = perBlock->GetOutputDataObject(0);
     const auto images = vtkCompositeDataSet::GetDataSets<vtkImageData>(fields);
     auto valuesOf = [](vtkImageData* image) {

@@ -1,7 +1,7 @@
 // What each MPI rank works on (issue #14). Both filters need a whole target on a rank (distances need
-// every triangle), but a pipeline under ParaView's MPI engine may hand each rank only its part (a
-// partitioned reader, Redistribute DataSet): then the ranks gather the parts. A composite's blocks,
-// each computed on its own, are shared out among the ranks.
+// every triangle), and the filters ask their input for all of it; but a source under ParaView's MPI
+// engine may hand each rank only its part whatever is asked (an in-situ adaptor, a script's source):
+// then the ranks gather the parts. A composite's blocks, each computed on its own, are shared out.
 #ifndef ShrinkWrap_RankInputs_h
 #define ShrinkWrap_RankInputs_h
 

@@ -34,8 +34,9 @@
  * and the field equals the serial field at every node. Pieces of other
  * shapes are computed as even slabs and handed round. Every rank needs the whole input: the filter asks
  * its input for all of it, and an input that arrives distributed all the same (each rank holding a
- * part: a partitioned reader, Redistribute DataSet) is gathered, the parts appended on every rank;
- * ranks with different grid settings get an error, not a hang.
+ * part whatever piece is asked for, as an in-situ adaptor's or a script's source gives it) is
+ * gathered, the parts appended on every rank; ranks with different grid settings get an error, not a
+ * hang. Every rank of the Controller must update the filter at the same time.
  * Ghost layers are marked (vtkGhostType) when a downstream filter asks for them.
  *
  * Work runs on all cores through vtkSMPTools (a scoped STDThread backend unless the environment

@@ -44,8 +44,9 @@
  * in parallel. A composite that arrives distributed (each rank holding some blocks) is wrapped where
  * its blocks are. WrapBlocksTogether wraps all blocks as one target instead (output: one surface).
  *
- * Under MPI a target that arrives distributed (each rank holding a part: a partitioned reader,
- * Redistribute DataSet) is gathered first, the parts appended on every rank.
+ * Under MPI a target that arrives distributed (each rank holding a part whatever piece is asked for,
+ * as an in-situ adaptor's or a script's source gives it) is gathered first, the parts appended on
+ * every rank. Every rank of the Controller must update the filter at the same time.
  *
  * Parameters (paper symbols; defaults of Fig. 11 where it gives them): TimeStep tau = 0.015,
  * NumberOfSteps N_t = 25 (Fig. 11: 200), SubdivisionLevel s = 3, C1 = 1 and C2 = 1 (eq. (3)), C = 12 and

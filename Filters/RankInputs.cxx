@@ -4,6 +4,8 @@
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
 #include <vtkIdList.h>
+#include <vtkInformation.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkMultiBlockDataSet.h>
@@ -330,6 +332,36 @@ std::vector<int> shareOut(const std::vector<double>& cost, int pieces)
     load[piece[b]] += cost[b];
   }
   return piece;
+}
+
+PieceRequest pieceRequest(vtkInformation* outInfo)
+{
+  PieceRequest request;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
+  {
+    request.piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+  }
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+  {
+    request.pieces = std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+  }
+  return request;
+}
+
+std::vector<int> piecesOfLeaves(vtkCompositeDataSet* composite, const std::vector<vtkDataSet*>& leaves,
+  const PieceRequest& request, vtkMultiProcessController* controller,
+  const std::function<std::vector<int>()>& sharedOut)
+{
+  if (request.pieces > 1 && distributed(digestsOfRanks(composite, controller)))
+  {
+    std::vector<int> here;
+    for (vtkDataSet* leaf : leaves)
+    {
+      here.push_back(leaf && leaf->GetNumberOfPoints() > 0 ? request.piece : -1);
+    }
+    return here;
+  }
+  return sharedOut();
 }
 
 } // namespace convert

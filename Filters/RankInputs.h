@@ -10,11 +10,14 @@
 #include <vtkSmartPointer.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
+class vtkCompositeDataSet;
 class vtkDataObject;
 class vtkDataSet;
+class vtkInformation;
 class vtkMultiProcessController;
 
 namespace shrinkwrap
@@ -66,6 +69,20 @@ vtkDataObject* wholeInput(
 // The piece that computes each block, by the blocks' expected costs: largest first, each to the
 // least loaded piece (the same answer on every rank).
 std::vector<int> shareOut(const std::vector<double>& cost, int pieces);
+
+// The piece of the pipeline's request this process computes, and of how many.
+struct PieceRequest
+{
+  int piece = 0, pieces = 1;
+};
+PieceRequest pieceRequest(vtkInformation* outInfo);
+
+// The piece that computes each of a composite's `leaves` (as its iterator gives them): when the
+// composite arrives distributed, each rank its own non-empty leaves (-1 for the others'); else
+// `sharedOut()`. Collective over `controller` when the request has more than one piece.
+std::vector<int> piecesOfLeaves(vtkCompositeDataSet* composite, const std::vector<vtkDataSet*>& leaves,
+  const PieceRequest& request, vtkMultiProcessController* controller,
+  const std::function<std::vector<int>()>& sharedOut);
 
 } // namespace convert
 } // namespace shrinkwrap

@@ -452,34 +452,24 @@ void vtkMeshSignedDistance::ExecuteBlocks(vtkCompositeDataSet* input, vtkInforma
 {
   output->Initialize();
   output->CopyStructure(input);
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
-  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-    : 1;
+  const convert::PieceRequest request = convert::pieceRequest(outInfo);
   vtkSmartPointer<vtkCompositeDataIterator> block = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
   std::vector<vtkDataSet*> leaves;
-  std::vector<double> nodes;
   for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
   {
     leaves.push_back(vtkDataSet::SafeDownCast(block->GetCurrentDataObject()));
-    shrinkwrap::GridLattice lattice;
-    const bool placed = leaves.back() && this->ComputeLattice(convert::boundsOf(leaves.back()), lattice);
-    nodes.push_back(placed ? static_cast<double>(lattice.dims[0]) * lattice.dims[1] * lattice.dims[2] : 1.0);
   }
-  std::vector<int> computedOn(leaves.size(), 0);
-  if (pieces > 1 && convert::distributed(convert::digestsOfRanks(input, this->Controller)))
-  {
-    for (std::size_t b = 0; b < leaves.size(); ++b)
+  const std::vector<int> computedOn = convert::piecesOfLeaves(input, leaves, request, this->Controller, [&] {
+    std::vector<double> nodes; // the cost of a block's field
+    for (vtkDataSet* leaf : leaves)
     {
-      computedOn[b] = leaves[b] && leaves[b]->GetNumberOfPoints() > 0 ? piece : -1;
+      shrinkwrap::GridLattice lattice;
+      const bool placed = leaf && this->ComputeLattice(convert::boundsOf(leaf), lattice);
+      nodes.push_back(placed ? static_cast<double>(lattice.dims[0]) * lattice.dims[1] * lattice.dims[2] : 1.0);
     }
-  }
-  else if (pieces > 1)
-  {
-    computedOn = convert::shareOut(nodes, pieces);
-  }
+    return convert::shareOut(nodes, request.pieces);
+  });
+  const int piece = request.piece;
   const auto here = static_cast<double>(std::count(computedOn.begin(), computedOn.end(), piece));
   std::size_t count = 0;
   int done = 0;

@@ -421,19 +421,19 @@ void vtkShrinkWrapFilter::ExecuteWhole(vtkInformationVector** inputVector, vtkIn
   vtkDataObject* found = nullptr;
   vtkImageData* field = nullptr;
   const bool ok = this->TargetAndField(inputVector, found, field);
-  vtkSmartPointer<vtkDataSet> together; // a composite's blocks as one target
-  if (vtkCompositeDataSet::SafeDownCast(found))
+  vtkDataObject* whole = convert::wholeInput(ok ? found : nullptr, this->Controller, this->Gathered);
+  if (ok && convert::pieceRequest(outInfo).piece == 0)
   {
-    together = convert::appendedLeaves(found);
-    found = together;
-  }
-  auto* target = vtkDataSet::SafeDownCast(convert::wholeInput(ok ? found : nullptr, this->Controller, this->Gathered));
-  const bool piece0 = !outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) ||
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) == 0;
-  if (ok && piece0)
-  {
-    this->Execute([&] { return this->StartSession(target, field, vtkPolyData::GetData(inputVector[2], 0)); }, outInfo,
-      output);
+    this->Execute(
+      [&] {
+        // A composite's blocks together as one target, appended only when a session starts (not at
+        // every time asked for).
+        const vtkSmartPointer<vtkDataSet> together =
+          vtkCompositeDataSet::SafeDownCast(whole) ? convert::appendedLeaves(whole) : nullptr;
+        return this->StartSession(
+          together ? together.Get() : vtkDataSet::SafeDownCast(whole), field, vtkPolyData::GetData(inputVector[2], 0));
+      },
+      outInfo, output);
   }
 }
 
@@ -682,12 +682,8 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
                   "disconnect the Distance Field and the Initial Surface.");
     return;
   }
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
-  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-    : 1;
+  const convert::PieceRequest request = convert::pieceRequest(outInfo);
+  const int piece = request.piece;
   const vtkMTimeType key = this->SessionKey();
   if (key != this->BlocksKey)
   {
@@ -701,26 +697,17 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
   {
     targets.push_back(vtkDataSet::SafeDownCast(block->GetCurrentDataObject()));
   }
-  // A composite every rank holds alike is shared out (once per target and properties, not at every
-  // time asked for); one that arrives distributed is wrapped where its blocks are.
-  const bool distributed = pieces > 1 && convert::distributed(convert::digestsOfRanks(blocks, this->Controller));
-  if (distributed)
-  {
-    this->BlockPieces.clear();
-    for (vtkDataSet* target : targets)
+  // Shared out once per target and properties, not at every time asked for.
+  const std::vector<int> wrappedOn = convert::piecesOfLeaves(blocks, targets, request, this->Controller, [&] {
+    if (this->BlockPieces.size() != targets.size() || this->BlockPiecesOf != request.pieces)
     {
-      this->BlockPieces.push_back(target && target->GetNumberOfPoints() > 0 ? piece : -1);
+      this->BlockPieces = request.pieces > 1 ? piecesOfBlocks(targets, request.pieces, this->CoreSettings())
+                                             : std::vector<int>(targets.size(), 0);
+      this->BlockPiecesOf = request.pieces;
     }
-    this->BlockPieces.push_back(-pieces); // not a share-out to keep
-  }
-  else if (this->BlockPieces.size() != targets.size() + 1 || this->BlockPieces.back() != pieces)
-  {
-    this->BlockPieces = pieces > 1 ? piecesOfBlocks(targets, pieces, this->CoreSettings())
-                                   : std::vector<int>(targets.size(), 0);
-    this->BlockPieces.push_back(pieces);
-  }
-  const std::vector<int>& wrappedOn = this->BlockPieces;
-  const auto here = static_cast<double>(std::count(wrappedOn.begin(), wrappedOn.end() - 1, piece));
+    return this->BlockPieces;
+  });
+  const auto here = static_cast<double>(std::count(wrappedOn.begin(), wrappedOn.end(), piece));
   int count = 0, done = 0;
   for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem(), ++count)
   {

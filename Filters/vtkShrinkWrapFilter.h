@@ -399,7 +399,8 @@ private:
   };
   std::map<unsigned int, BlockSession> Blocks;
   vtkMTimeType BlocksKey = 0;
-  std::vector<int> BlockPieces; // the piece that wraps each block, then the number of pieces
+  std::vector<int> BlockPieces; // the piece that wraps each block of a composite every rank holds
+  int BlockPiecesOf = 0;        // among so many pieces
 
 };
 

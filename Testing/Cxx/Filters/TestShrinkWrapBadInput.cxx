@@ -167,6 +167,13 @@ void compositeInputs()
     SW_CHECK(saidTogether.errors == 0 && !wrapBoth.empty() && pointsOf(together->GetOutputDataObject(0)) == wrapBoth,
       name << " target, blocks wrapped together: one surface, that of both meshes as one ("
            << together->GetOutputDataObject(0)->GetClassName() << ")");
+    // Back in time: the session's cached step, not a new session (the blocks are appended only to start one).
+    const int computed = together->GetNumberOfComputedSteps();
+    together->UpdateTimeStep(2 * together->GetTimeStep());
+    both->UpdateTimeStep(2 * both->GetTimeStep());
+    SW_CHECK(together->GetNumberOfComputedSteps() == computed && stepOf(together->GetOutputDataObject(0)) == 2 &&
+        pointsOf(together->GetOutputDataObject(0)) == pointsOf(both->GetOutputDataObject(0)),
+      name << " target, blocks wrapped together: step 2 from the cache equals the appended meshes' step 2");
     vtkNew<vtkMeshSignedDistance> alone;
     alone->SetInputData(b);
     alone->SetResolution(24);

@@ -159,6 +159,7 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   this->DistanceWeighting = e.distanceWeight;
   this->EdgeFlips = e.edgeFlips;
   this->EdgeCollapses = e.edgeCollapses;
+  this->CoverRims = e.rims.cover;
   this->FlipDihedralLimit = e.flips.maxDihedral;
   this->StartingShape = static_cast<int>(defaults.start.shape); // ICOSPHERE, OFFSET_SURFACE in order
   this->StartOffset = defaults.start.offset;
@@ -200,6 +201,7 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
   e.distanceWeight = this->DistanceWeighting;
   e.edgeFlips = this->EdgeFlips;
   e.edgeCollapses = this->EdgeCollapses;
+  e.rims.cover = this->CoverRims;
   e.flips.maxDihedral = this->FlipDihedralLimit;
   s.start.shape = static_cast<StartShape>(this->StartingShape);
   s.start.offset = this->StartOffset;
@@ -867,6 +869,7 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DistanceWeighting: " << this->DistanceWeighting << "\n";
   os << indent << "EdgeFlips: " << this->EdgeFlips << "\n";
   os << indent << "EdgeCollapses: " << this->EdgeCollapses << "\n";
+  os << indent << "CoverRims: " << this->CoverRims << "\n";
   os << indent << "FlipDihedralLimit: " << this->FlipDihedralLimit << "\n";
   os << indent << "StartingShape: " << (this->StartingShape == ICOSPHERE ? "Icosphere" : "Offset Surface") << "\n";
   os << indent << "StartOffset: " << this->StartOffset << "\n";

@@ -53,7 +53,7 @@
  * D = 0.5 (eq. (4); Fig. 11: 1 and 0), TangentialRedistribution (None, Angle = default, Volume), OmegaAngle = 0.5, OmegaVolume = 1,
  * DistanceWeighting off (rho(d) of eq. (10)) with RhoA = 1 (its A), EdgeFlips on with FlipDihedralLimit
  * 60 degrees (flips change the triangles from step to step, never the vertices), EdgeCollapses on
- * (a collapse removes a vertex), StartingShape
+ * (a collapse removes a vertex), CoverRims on, StartingShape
  * OFFSET_SURFACE with StartOffset 3 cells (or ICOSPHERE), GapSize automatic (diagonal / 50), CloseHoles off, Remeshing
  * on with TargetEdgeLength automatic (diagonal / 50), InitialRelaxation 10,
  * AutomaticScaling on (phi of Section 2.4: the evolution runs in coordinates scaled so that the mean
@@ -192,6 +192,16 @@ public:
   vtkSetMacro(EdgeCollapses, bool);
   vtkGetMacro(EdgeCollapses, bool);
   vtkBooleanMacro(EdgeCollapses, bool);
+  ///@}
+  ///@{
+  /// Keep the rims of an open target (a hole's edge, an open sheet's edge, a fin) inside the wrap: after
+  /// each step, rim points outside the surface pull the nearest triangle onto them. The wrap folds
+  /// around such a rim, and without this the fold creeps back along the sheet (nothing in eq. (4) pulls
+  /// it out), so the rim pokes out. Needs Remeshing and the exact near field; a closed target has no
+  /// rims. Default on.
+  vtkSetMacro(CoverRims, bool);
+  vtkGetMacro(CoverRims, bool);
+  vtkBooleanMacro(CoverRims, bool);
   ///@}
   ///@{
   /// The largest angle (degrees) between the normals of two triangles whose edge may flip, so that
@@ -346,6 +356,7 @@ protected:
   bool DistanceWeighting;
   bool EdgeFlips;
   bool EdgeCollapses;
+  bool CoverRims;
   double FlipDihedralLimit;
   int StartingShape;
   double StartOffset;

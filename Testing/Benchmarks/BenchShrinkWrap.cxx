@@ -237,6 +237,7 @@ const std::map<std::string, Setter>& setters()
     { "Remeshing", [](vtkShrinkWrapFilter* w, double v) { w->SetRemeshing(v != 0); } },
     { "StartingShape", [](vtkShrinkWrapFilter* w, double v) { w->SetStartingShape(static_cast<int>(v)); } },
     { "CloseHoles", [](vtkShrinkWrapFilter* w, double v) { w->SetCloseHoles(v != 0); } },
+    { "CoverRims", [](vtkShrinkWrapFilter* w, double v) { w->SetCoverRims(v != 0); } },
     { "InitialRelaxation", [](vtkShrinkWrapFilter* w, double v) { w->SetInitialRelaxation(static_cast<int>(v)); } },
     { "SubdivisionLevel", [](vtkShrinkWrapFilter* w, double v) { w->SetSubdivisionLevel(static_cast<int>(v)); } },
   };

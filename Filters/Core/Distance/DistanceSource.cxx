@@ -77,4 +77,19 @@ const std::vector<char>& TriangleSource::sidesConfirmed() const
   return this->Sides;
 }
 
+std::vector<std::array<Vec3, 2>> TriangleSource::rims() const
+{
+  std::vector<std::array<Vec3, 2>> rims;
+  const std::vector<EdgeUse> uses = edgeUses(this->Soup);
+  forEachEdge(uses, [&](std::size_t first, std::size_t last) {
+    const auto& t = this->Soup.triangles[uses[first].triangle];
+    const int a = t[uses[first].slot], b = t[(uses[first].slot + 1) % 3];
+    if (last == first + 1 && a != b)
+    {
+      rims.push_back({ this->Soup.points[a], this->Soup.points[b] });
+    }
+  });
+  return rims;
+}
+
 } // namespace shrinkwrap

@@ -64,6 +64,9 @@ public:
     static const std::vector<char> none;
     return none;
   }
+  // The edges where the surface ends (a hole's rim, an open sheet's edge), each as its two ends: what
+  // a wrap must cover there (RimCoverage.h). None for points.
+  virtual std::vector<std::array<Vec3, 2>> rims() const { return {}; }
 };
 
 class TriangleSource : public DistanceSource
@@ -81,6 +84,7 @@ public:
   long long reorientedTriangles() const { return this->Reoriented; }
   double windingNumber(const Vec3& x) const override;
   const std::vector<char>& sidesConfirmed() const override;
+  std::vector<std::array<Vec3, 2>> rims() const override; // edges of one triangle (welded)
 
 private:
   const WindingNumber& winding() const;

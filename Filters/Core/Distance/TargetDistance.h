@@ -26,6 +26,8 @@ public:
   const DistanceGrid& grid() const { return this->Grid; }
   bool empty() const { return this->Grid.empty(); }
   DistanceSample sample(const Vec3& x) const;
+  // The target itself, where the near field is exact (else null).
+  const DistanceSource* exact() const { return this->Exact.get(); }
 
 private:
   DistanceGrid Grid;

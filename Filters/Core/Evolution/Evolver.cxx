@@ -92,6 +92,11 @@ Evolver::Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const
   }
   this->velocity().assign(mesh.vertexCount(), Vec3::Zero());
   this->Linear = std::make_unique<Solver>(this->Mesh);
+  const double length = settings.remeshing.targetLength;
+  if (settings.rims.cover && length > 0 && this->Field && this->Field->exact())
+  {
+    this->RimSamples = rimSamples(this->Field->exact()->rims(), settings.rims.spacing * length);
+  }
 }
 
 Evolver::~Evolver() = default;
@@ -293,8 +298,36 @@ StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool 
     report.splits = adjusted.splits;
     report.held = adjusted.held;
   }
+  report.rimMoves = this->coverRims();
   ++this->Steps;
   return report;
+}
+
+int Evolver::coverRims()
+{
+  if (this->RimSamples.empty())
+  {
+    return 0;
+  }
+  const RimSettings& r = this->Settings.rims;
+  const double length = this->Settings.remeshing.targetLength * this->Scale;
+  std::vector<Vec3> samples;
+  samples.reserve(this->RimSamples.size());
+  for (const Vec3& x : this->RimSamples)
+  {
+    samples.push_back(this->Scale * (x - this->Center));
+  }
+  std::vector<Vec3> next = this->Mesh.points();
+  const int moved = shrinkwrap::coverRims(this->Mesh, samples, r.tolerance * length, r.reach * length, next);
+  if (moved > 0)
+  {
+    if (this->Settings.holdBack)
+    {
+      this->holdBack(next);
+    }
+    this->Mesh.points().swap(next);
+  }
+  return moved;
 }
 
 // Vertices stop where their step would break the surface: where it would cross itself

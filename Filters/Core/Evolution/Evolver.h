@@ -18,6 +18,7 @@
 #include "EdgeFlips.h"
 #include "Progress.h"
 #include "Remesher.h"
+#include "RimCoverage.h"
 #include "Status.h"
 #include "SurfaceGeometry.h"
 #include "TargetDistance.h"
@@ -75,6 +76,9 @@ struct EvolverSettings
   // (SelfIntersections.h: holdNewCrossings), so the surface never passes through itself where two of
   // its parts come together, and a vertex whose step would degenerate a triangle stays where it was.
   bool holdBack = true;
+  // After every step with remeshing, the target's rims outside the surface pull it onto them
+  // (RimCoverage.h; needs the field's exact near target).
+  RimSettings rims;
   bool volumePerArea = true;    // v_T = (integral of grad psi over V_i) / |V_i|; false: the paper's code
   LinearSolver solver = LinearSolver::ConjugateGradient;
   double solverTolerance = 1e-6; // relative residual: positions to about 1e-6 of the scaled size
@@ -93,6 +97,7 @@ struct EvolverSettings
     s.D = 0.0;
     s.remeshing.targetLength = 0;
     s.holdBack = false;
+    s.rims.cover = false;
     s.solverTolerance = 1e-10;
     return s;
   }
@@ -126,6 +131,7 @@ struct StepReport
   int collapses = 0; // edges collapsed after the step (vertices removed)
   int splits = 0;    // edges split after the step (vertices added)
   int held = 0;      // vertices held back where fronts met
+  int rimMoves = 0;  // vertices moved onto the target's rims after the step
   double smallestAngle = M_PI; // radians, over the triangles at the end of the step (before any repair)
   bool ok() const { return this->failure == Failure::None; }
   bool connectivityChanged() const { return this->flips > 0 || this->collapses > 0 || this->splits > 0; }
@@ -186,6 +192,7 @@ private:
   StepReport accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool converged);
   StepReport check(const std::vector<Vec3>& y) const;
   int holdBack(std::vector<Vec3>& next) const;
+  int coverRims(); // RimCoverage.h: the vertices moved
   void adjustConnectivity(StepReport& report); // remeshing, flips, then collapses, as the settings ask
   // A new solver for the new triangles; the volume redistribution's warm start only for the same vertices.
   void connectivityChanged(bool sameVertices);
@@ -198,6 +205,7 @@ private:
   double Scale;
   Vec3 Center;
   Status Valid;
+  std::vector<Vec3> RimSamples; // the target's rims, in the caller's units (RimCoverage.h)
   int Steps = 0;
   std::vector<double> Potential; // the volume redistribution's warm start
   std::unique_ptr<Solver> Linear;

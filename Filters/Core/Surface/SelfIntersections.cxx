@@ -322,12 +322,19 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
 {
   const int nt = static_cast<int>(triangles.size());
   std::vector<Box> swept(nt);
+  std::vector<int> moving; // two triangles that stay cannot begin to cross
   for (int t = 0; t < nt; ++t)
   {
+    bool moves = false;
     for (int v : triangles[t])
     {
       swept[t].extend(previous[v]);
       swept[t].extend(next[v]);
+      moves = moves || next[v] != previous[v];
+    }
+    if (moves)
+    {
+      moving.push_back(t);
     }
   }
   const TriangleGrid grid(std::move(swept), TriangleGrid::cellSizeFor(next, triangles));
@@ -339,7 +346,26 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   auto isNew = [&](int s, int t) {
     return !crosses(facetOf(previous, triangles[s]), facetOf(previous, triangles[t]), margin);
   };
-  std::vector<std::pair<int, int>> found = crossingPairs(grid, next, triangles);
+  // The crossings of the triangles in `changed` (sorted) with any other.
+  auto crossingsOf = [&](const std::vector<int>& changed) {
+    std::vector<std::pair<int, int>> pairs;
+    for (int s : changed)
+    {
+      const Facet fs = facetOf(next, triangles[s]);
+      grid.forEachNear(boxOf(fs.p), [&](int t) {
+        // A pair of two changed triangles is met twice; it is kept once.
+        const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
+        if (t != s && !counted && crosses(fs, facetOf(next, triangles[t]), margin))
+        {
+          pairs.emplace_back(s, t);
+        }
+      });
+    }
+    return pairs;
+  };
+  // Few moving triangles (a step's touch-ups) are tested alone; all of them, pair by pair in parallel.
+  std::vector<std::pair<int, int>> found =
+    8 * moving.size() < triangles.size() ? crossingsOf(moving) : crossingPairs(grid, next, triangles);
   std::vector<std::vector<int>> trianglesAt; // per vertex, built when a first vertex is held
   int held = 0;
   while (!found.empty())
@@ -387,19 +413,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
     }
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-    found.clear();
-    for (int s : changed)
-    {
-      const Facet fs = facetOf(next, triangles[s]);
-      grid.forEachNear(boxOf(fs.p), [&](int t) {
-        // A pair of two changed triangles is met twice; it is kept once.
-        const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
-        if (t != s && !counted && crosses(fs, facetOf(next, triangles[t]), margin))
-        {
-          found.emplace_back(s, t);
-        }
-      });
-    }
+    found = crossingsOf(changed);
   }
   return held;
 }

@@ -177,6 +177,7 @@ void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
   f->SetDistanceWeighting(dice.chance(0.3));
   f->SetEdgeFlips(dice.chance(0.7));
   f->SetEdgeCollapses(dice.chance(0.7));
+  f->SetCoverRims(dice.chance(0.7));
   f->SetFlipDihedralLimit(dice.value(60));
   f->SetStartingShape(dice.between(0, 1));
   f->SetStartOffset(dice.value(3));

@@ -125,6 +125,7 @@ int TestPropertyDefaults(int argc, char* argv[])
       { "SetRhoA", [&] { return one(w->GetRhoA()); } },
       { "SetEdgeFlips", [&] { return one(w->GetEdgeFlips()); } },
       { "SetEdgeCollapses", [&] { return one(w->GetEdgeCollapses()); } },
+      { "SetCoverRims", [&] { return one(w->GetCoverRims()); } },
       { "SetFlipDihedralLimit", [&] { return one(w->GetFlipDihedralLimit()); } },
       { "SetInitialRelaxation", [&] { return one(w->GetInitialRelaxation()); } },
       { "SetAutomaticScaling", [&] { return one(w->GetAutomaticScaling()); } },

@@ -317,15 +317,39 @@ int Evolver::coverRims()
   {
     samples.push_back(this->Scale * (x - this->Center));
   }
-  std::vector<Vec3> next = this->Mesh.points();
-  const int moved = shrinkwrap::coverRims(this->Mesh, samples, r.tolerance * length, r.reach * length, next);
-  if (moved > 0)
+  const std::vector<Vec3> moves = rimMoves(this->Mesh, samples, r.tolerance * length, r.reach * length);
+  // A move the hold-back refuses (it would cross the surface: near a rim both layers lie on the sheet)
+  // is tried again at half its length, twice.
+  std::vector<char> pending(moves.size());
+  for (std::size_t v = 0; v < moves.size(); ++v)
   {
+    pending[v] = moves[v] != Vec3::Zero();
+  }
+  int moved = 0;
+  for (double share : { 1.0, 0.5, 0.25 })
+  {
+    std::vector<Vec3> next = this->Mesh.points();
+    for (std::size_t v = 0; v < moves.size(); ++v)
+    {
+      next[v] += pending[v] ? Vec3(share * moves[v]) : Vec3::Zero();
+    }
     if (this->Settings.holdBack)
     {
       this->holdBack(next);
     }
+    int left = 0;
+    for (std::size_t v = 0; v < moves.size(); ++v)
+    {
+      const bool done = pending[v] && next[v] != this->Mesh.points()[v];
+      moved += done;
+      pending[v] = pending[v] && !done;
+      left += pending[v];
+    }
     this->Mesh.points().swap(next);
+    if (left == 0)
+    {
+      break;
+    }
   }
   return moved;
 }

@@ -101,13 +101,13 @@ std::array<double, 3> barycentric(const Vec3& x, const Vec3& a, const Vec3& b, c
 }
 } // namespace
 
-int coverRims(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach,
-  std::vector<Vec3>& next)
+std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach)
 {
-  const std::vector<Vec3>& y = next;
+  const std::vector<Vec3>& y = mesh.points();
+  std::vector<Vec3> moves(y.size(), Vec3::Zero());
   if (samples.empty() || mesh.triangleCount() == 0)
   {
-    return 0;
+    return moves;
   }
   // A grid of the triangles (rebuilt every step, by counting sort) rather than a tree: the searches
   // reach only a few edge lengths, and building a tree every step cost more than they do.
@@ -143,7 +143,6 @@ int coverRims(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double 
     }
   });
   // Serial from here, in sample order: the same moves on every run (cached steps equal fresh ones).
-  std::vector<Vec3> moves(y.size(), Vec3::Zero());
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
     const Nearest& hit = hits[i];
@@ -165,16 +164,7 @@ int coverRims(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double 
       }
     }
   }
-  int moved = 0;
-  for (std::size_t v = 0; v < y.size(); ++v)
-  {
-    if (moves[v] != Vec3::Zero())
-    {
-      next[v] += moves[v];
-      ++moved;
-    }
-  }
-  return moved;
+  return moves;
 }
 
 } // namespace shrinkwrap

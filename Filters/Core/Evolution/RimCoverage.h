@@ -18,7 +18,7 @@ namespace shrinkwrap
 struct RimSettings
 {
   bool cover = true;
-  double spacing = 0.5;    // between samples along a rim, in target edge lengths L
+  double spacing = 1;      // between samples along a rim, in target edge lengths L (L / 2: as close, slower)
   double tolerance = 0.02; // a sample this close to the surface (in L) counts as covered
   double reach = 1.5;      // samples farther from the surface than this (in L) are left alone
 };
@@ -26,13 +26,11 @@ struct RimSettings
 // Points along the rims, at most `spacing` apart, both ends of every rim edge among them.
 std::vector<Vec3> rimSamples(const std::vector<std::array<Vec3, 2>>& rims, double spacing);
 
-// Moves of the vertices in `next` (positions of `mesh`'s vertices, updated in place) that bring the
-// nearest surface point of every sample outside the surface, farther than `tolerance` and nearer than
-// `reach`, onto the sample: the nearest triangle's corners move by their barycentric share (the largest
-// move wins at a vertex). Outside: in front of the pseudonormal of the nearest feature. Returns how many
-// vertices move.
-int coverRims(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach,
-  std::vector<Vec3>& next);
+// Per vertex of `mesh`, the move that brings the nearest surface point of every sample outside the
+// surface, farther than `tolerance` and nearer than `reach`, onto the sample: the nearest triangle's
+// corners move by their barycentric share (the largest move wins at a vertex); zero elsewhere. Outside:
+// in front of the pseudonormal of the nearest feature.
+std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach);
 
 } // namespace shrinkwrap
 

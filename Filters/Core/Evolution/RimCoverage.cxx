@@ -47,8 +47,10 @@ Vec3 faceNormal(const std::vector<Vec3>& y, const std::array<int, 3>& t)
   return (y[t[1]] - y[t[0]]).cross(y[t[2]] - y[t[0]]);
 }
 
-// The normal that tells the sides of a point whose nearest surface point lies on this feature: the
-// face's, or the sum over the triangles at the edge or the vertex.
+// The pseudonormal that tells the sides of a point whose nearest surface point lies on this feature
+// (Baerentzen & Aanaes, as PseudoNormals.h, which serves a fixed soup; this surface changes every step
+// and only a few features are asked): the face's, the sum of the two at an edge, or the angle-weighted
+// sum at a vertex.
 Vec3 featureNormal(const SurfaceMesh& mesh, const std::vector<Vec3>& y, int triangle, Feature feature)
 {
   const auto& t = mesh.triangles()[triangle];
@@ -59,10 +61,11 @@ Vec3 featureNormal(const SurfaceMesh& mesh, const std::vector<Vec3>& y, int tria
     case Feature::Vertex2:
     {
       const int v = t[static_cast<int>(feature) - static_cast<int>(Feature::Vertex0)];
-      Vec3 n = Vec3::Zero();
+      Vec3 n = Vec3::Zero(); // angle-weighted, as PseudoNormals.h: then the side of a point is right
       for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
       {
-        n += faceNormal(y, mesh.triangles()[mesh.ringTriangle(p)]).normalized();
+        const Vec3 u = y[mesh.ring(p)] - y[v], w = y[mesh.ring(mesh.next(v, p))] - y[v];
+        n += angleBetween(u, w) * faceNormal(y, mesh.triangles()[mesh.ringTriangle(p)]).normalized();
       }
       return n;
     }

@@ -213,7 +213,8 @@ public:
   /// The starting surface when no InitialSurface is connected: OFFSET_SURFACE (default), a contour at
   /// StartOffset cells (default 3, at most GapSize / 2 and at least one cell) of the field outside the
   /// target closed over gaps narrower than GapSize (the paper's Section 5), which starts close, wraps concave parts and keeps wider holes
-  /// open; or ICOSPHERE, a geodesic icosphere of SubdivisionLevel around the target (the paper's
+  /// open (with Remeshing on, coarsened to TargetEdgeLength by collapses that do not make it cross
+  /// itself, so the first steps do not carry the contour's fine vertices); or ICOSPHERE, a geodesic icosphere of SubdivisionLevel around the target (the paper's
   /// Algorithm 3 and Fig. 11), which spans concave parts and holes like a membrane.
   vtkSetClampMacro(StartingShape, int, ICOSPHERE, OFFSET_SURFACE);
   vtkGetMacro(StartingShape, int);

@@ -1,5 +1,6 @@
 #include "Evolver.h"
 
+#include "CheckedEdits.h"
 #include "ControlFunctions.h"
 #include "CotanLaplacian.h"
 #include "EdgeFlips.h"
@@ -437,31 +438,28 @@ void editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scale,
 }
 } // namespace
 
-// Edits rarely make the surface cross itself, and guarding each one costs more than checking the
-// whole surface once: the edits are tried unguarded on a copy first, and made again with every edit
-// guarded (CrossingGuard) only when that copy crosses itself.
+// The step's edits are checked once (CheckedEdits.h), as far as the settings guard them at all.
 void Evolver::adjustConnectivity(StepReport& report)
 {
   const EvolverSettings& s = this->Settings;
-  const bool guarded = s.flips.avoidCrossings || s.collapses.avoidCrossings;
-  bool done = false;
-  if (guarded)
+  const StepReport before = report;
+  auto edit = [&](SurfaceMesh& mesh, bool guarded, const std::vector<Box>& only) {
+    EvolverSettings e = s;
+    e.flips.avoidCrossings = guarded && s.flips.avoidCrossings;
+    e.collapses.avoidCrossings = guarded && s.collapses.avoidCrossings;
+    e.flips.guardOnlyIn = e.collapses.guardOnlyIn = only;
+    report = before;
+    editConnectivity(mesh, e, this->Scale, report);
+    return report.connectivityChanged();
+  };
+  if (s.flips.avoidCrossings || s.collapses.avoidCrossings)
   {
-    EvolverSettings unguarded = s;
-    unguarded.flips.avoidCrossings = unguarded.collapses.avoidCrossings = false;
-    SurfaceMesh trial = this->Mesh;
-    StepReport tried = report;
-    editConnectivity(trial, unguarded, this->Scale, tried);
-    if (!tried.connectivityChanged() || findSelfIntersections(trial.points(), trial.triangles()).pairs == 0)
-    {
-      this->Mesh = std::move(trial);
-      report = tried;
-      done = true;
-    }
+    // The edits behind a crossing lie within about two edges of it.
+    editCheckedOnce(this->Mesh, TriangleGrid::cellSizeFor(this->Mesh.points(), this->Mesh.triangles()), edit);
   }
-  if (!done)
+  else
   {
-    editConnectivity(this->Mesh, s, this->Scale, report);
+    edit(this->Mesh, false, {});
   }
   if (report.connectivityChanged())
   {

@@ -1,8 +1,10 @@
 #include "StartingSurface.h"
 
+#include "CheckedEdits.h"
 #include "Components.h"
 #include "Icosphere.h"
 #include "Relaxation.h"
+#include "Remesher.h"
 #include "SelfIntersections.h"
 #include "SurfaceGeometry.h"
 
@@ -75,6 +77,19 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   if (!status)
   {
     return Status::failure("the starting surface cannot evolve: " + status.message());
+  }
+  if (!given && settings.shape == StartShape::OffsetSurface && settings.coarsenTo > 0)
+  {
+    // The evolution's thresholds. Collapses chain over a dozen passes here, so the ones behind a
+    // crossing lie farther from it than a step's do.
+    const RemeshSettings remeshing;
+    editCheckedOnce(mesh, 4 * settings.coarsenTo, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
+      CollapseSettings collapses;
+      collapses.avoidCrossings = guarded;
+      collapses.guardOnlyIn = only;
+      return collapseShortEdges(m, remeshing.collapseBelow * settings.coarsenTo,
+               remeshing.splitAbove * settings.coarsenTo, collapses) > 0;
+    });
   }
   // A contour's slivers would fail the first step (the icosphere needs no relaxation). Where two parts
   // of a contour nearly touch, relaxing can make them cross: then fewer iterations, down to none (a

@@ -31,6 +31,10 @@ struct StartSettings
   double maxOffset = std::numeric_limits<double>::infinity(); // at most this (in the field's units) and
                                                               // at least one cell
   int relaxation = 10;   // tangential relaxation iterations of a contour or a given surface
+  double coarsenTo = 0;  // > 0: a contour start is first coarsened by collapses towards this edge
+                         // length (the remeshing's L; checked for crossings, CheckedEdits.h), so that
+                         // its relaxation and the first step handle the vertices the wrap will have,
+                         // not the grid's contour's
 };
 
 // The paper's Section 5 start, a contour of d at `offset` (in the field's units) from the target. Give

@@ -83,6 +83,7 @@ WrapSettings WrapSettings::resolved(const Box& targetBox) const
     s.gapSize = diagonal / kGapDivisor;
   }
   s.evolution.remeshing.targetLength = s.remeshing ? s.targetLength : 0;
+  s.start.coarsenTo = s.evolution.remeshing.targetLength;
   // A start farther out than half the gap would merge parts the closing keeps apart (and give the
   // wrap handles the target does not have, as between knot1's strands).
   s.start.maxOffset = 0.5 * s.gapSize;

@@ -91,7 +91,7 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
   const std::vector<std::array<int, 3>> triangles = mesh.triangles();
   const int nv = mesh.vertexCount();
   std::vector<char> touched(nv, 0);
-  CrossingGuard guard(x, triangles);
+  CrossingGuard guard(x, triangles, settings.guardOnlyIn);
   int collapses = 0;
   auto collapse = [&](int keep, int gone, const Vec3& m) {
     collapses += collapseInPass(mesh, x, keep, gone, m, settings, touched, guard);

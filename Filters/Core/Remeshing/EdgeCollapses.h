@@ -21,6 +21,7 @@ struct CollapseSettings
   double minNormalDot = 0.5; // every triangle around the merged vertex keeps its normal within 60 degrees
   int maxPasses = 10;        // passes per step (the evolver's)
   bool avoidCrossings = true; // no collapse whose new triangles would cross the surface (CrossingGuard)
+  std::vector<Box> guardOnlyIn; // not empty: avoidCrossings checks only the collapses within these boxes
 };
 
 // Calls f(v, u, w) for every triangle (v, u, w) around a or b (v in {a, b}) other than the two on the

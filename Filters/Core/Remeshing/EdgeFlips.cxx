@@ -34,7 +34,7 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
   const std::vector<Vec3>& x = mesh.points();
   const double cosMax = std::cos(settings.maxDihedral * M_PI / 180.0);
   const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // flips change the mesh's own
-  CrossingGuard guard(x, triangles);
+  CrossingGuard guard(x, triangles, settings.guardOnlyIn);
   std::vector<char> touched(mesh.vertexCount(), 0);
   int flips = 0;
   for (int i = 0; i < mesh.vertexCount(); ++i)

@@ -6,6 +6,7 @@
 #ifndef ShrinkWrap_EdgeFlips_h
 #define ShrinkWrap_EdgeFlips_h
 
+#include "Box.h"
 #include "SurfaceMesh.h"
 
 #include <array>
@@ -20,6 +21,7 @@ struct FlipSettings
   double maxDihedral = 60;       // degrees between the normals of the two triangles, before and after
   double minGain = 0.01;         // radians the smallest angle of the pair must gain
   bool avoidCrossings = true;    // no flip whose new triangles would cross the surface (CrossingGuard)
+  std::vector<Box> guardOnlyIn;  // not empty: avoidCrossings checks only the flips within these boxes
 };
 
 // Whether flipping edge (i, j) of triangles (i, j, c) and (i, d, j) to (c, d) keeps the shape: both

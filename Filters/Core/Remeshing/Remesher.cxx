@@ -55,7 +55,7 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
 {
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
   const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // edits change the mesh's own
-  CrossingGuard guard(x, triangles);
+  CrossingGuard guard(x, triangles, settings.guardOnlyIn);
   std::vector<char> touched(mesh.vertexCount(), 0);
   int collapses = 0;
   for (const auto& e : edgesOf(mesh))
@@ -92,7 +92,7 @@ int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings)
   const std::vector<Vec3>& x = mesh.points();
   const double cosMax = std::cos(settings.maxDihedral * M_PI / 180.0);
   const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // flips change the mesh's own
-  CrossingGuard guard(x, triangles);
+  CrossingGuard guard(x, triangles, settings.guardOnlyIn);
   std::vector<char> touched(mesh.vertexCount(), 0);
   auto deviation = [](int a, int b, int c, int d) {
     return std::abs(a - 6) + std::abs(b - 6) + std::abs(c - 6) + std::abs(d - 6);

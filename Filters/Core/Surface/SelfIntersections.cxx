@@ -172,9 +172,28 @@ SelfIntersections findSelfIntersections(
   return found;
 }
 
-CrossingGuard::CrossingGuard(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles)
+std::vector<Box> boxesAround(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+  const SelfIntersections& found, double reach)
+{
+  std::vector<Box> boxes;
+  for (std::size_t t = 0; t < found.intersecting.size(); ++t)
+  {
+    if (found.intersecting[t])
+    {
+      Box box = boxOf(std::array<Vec3, 3>{ points[triangles[t][0]], points[triangles[t][1]], points[triangles[t][2]] });
+      box.min.array() -= reach;
+      box.max.array() += reach;
+      boxes.push_back(box);
+    }
+  }
+  return boxes;
+}
+
+CrossingGuard::CrossingGuard(
+  const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles, std::vector<Box> only)
   : Points(points)
   , Triangles(triangles)
+  , Only(std::move(only))
 {
 }
 
@@ -245,13 +264,21 @@ void CrossingGuard::addFlip(int i, int j, int c, int d)
 // overlaps.
 bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
 {
-  const TriangleGrid& grid = this->grid();
-  std::vector<Facet> facets;
   Box all;
   for (const Made& m : made)
   {
-    facets.push_back(facetAt(m.p, m.id));
     all.extend(m.box);
+  }
+  if (!this->Only.empty() &&
+    std::none_of(this->Only.begin(), this->Only.end(), [&all](const Box& box) { return box.overlaps(all); }))
+  {
+    return false;
+  }
+  const TriangleGrid& grid = this->grid();
+  std::vector<Facet> facets;
+  for (const Made& m : made)
+  {
+    facets.push_back(facetAt(m.p, m.id));
   }
   const double margin = roundingMargin(grid);
   bool crossing = false;

@@ -6,6 +6,7 @@
 #ifndef ShrinkWrap_SelfIntersections_h
 #define ShrinkWrap_SelfIntersections_h
 
+#include "Box.h"
 #include "TriangleGrid.h"
 #include "Vec3.h"
 
@@ -35,6 +36,10 @@ SelfIntersections findSelfIntersections(
 int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   const std::vector<std::array<int, 3>>& triangles);
 
+// Boxes `reach` around the triangles that `found` marks: where the edits that made them must be guarded.
+std::vector<Box> boxesAround(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+  const SelfIntersections& found, double reach);
+
 // For the local edits of a pass (collapses, flips): whether the triangles an edit would make cross the
 // surface: the surface as it was when the pass began (points and triangles the guard only refers to:
 // copies, not the mesh's own, which its edits change), and what the pass already made (two edits of one pass can meet across a thin part).
@@ -42,7 +47,10 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
 class CrossingGuard
 {
 public:
-  CrossingGuard(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
+  // only: the boxes within which edits are checked (their triangles are recorded everywhere); empty:
+  // every edit is.
+  CrossingGuard(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+    std::vector<Box> only = {});
   // Merging gone into keep at m, which turns the triangles around them into (m, u, w), one for each
   // (u, w) of the rim. Once made, the fan replaces every triangle around keep and gone.
   bool collapseCrosses(int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim);
@@ -69,6 +77,7 @@ private:
 
   const std::vector<Vec3>& Points;
   const std::vector<std::array<int, 3>>& Triangles;
+  std::vector<Box> Only;
   std::unique_ptr<TriangleGrid> Grid;
   std::vector<Made> Edits;
   std::vector<char> Merged;                  // per vertex: merged by the pass (its old triangles are gone)

@@ -3,8 +3,10 @@
 // opposite side makes its fan cross; shared vertices and edges are never counted.
 // The grid behind them reports every overlapping box once (against brute force); fronts that meet are
 // held back pair by pair; the guard of a pass's edits refuses a flip whose new triangles would cross
-// the surface, and remembers the pass's own edits.
+// the surface, and remembers the pass's own edits, and a guard limited to boxes checks only what reaches
+// into them; a round of edits is checked once and made again guarded near its crossings, then everywhere.
 // And TargetDistance: near the target, d and grad d are the exact distance and direction to it.
+#include "CheckedEdits.h"
 #include "Icosphere.h"
 #include "SelfIntersections.h"
 #include "SignedDistance.h"
@@ -149,6 +151,47 @@ void guardedEdits()
   SW_CHECK(!open.collapseCrosses(6, 6, x[6], { { 4, 5 } }), "the post misses the roof as it was");
   open.addFlip(0, 1, 2, 3);
   SW_CHECK(open.collapseCrosses(6, 6, x[6], { { 4, 5 } }), "but meets the valley the pass flipped");
+
+  // A guard limited to boxes checks only the edits that reach into them.
+  const Box there{ Vec3(0.4, 0.3, -0.1), Vec3(0.5, 0.4, 0.3) }, elsewhere{ Vec3(5, 5, 5), Vec3(6, 6, 6) };
+  CrossingGuard near(x, withPost, { elsewhere, there }), away(x, withPost, { elsewhere });
+  SW_CHECK(near.flipCrosses(0, 1, 2, 3), "a guard whose boxes hold the flip refuses it");
+  SW_CHECK(!away.flipCrosses(0, 1, 2, 3), "a guard whose boxes miss the flip lets it be");
+}
+
+// A round of edits checked once: unguarded first, then guarded near where it crossed, then everywhere.
+void checkedEdits()
+{
+  const TriangleSurface sphere = icosphere(3, Vec3::Zero(), 1.0);
+  SurfaceMesh start;
+  SW_CHECK(SurfaceMesh::build(sphere.points, sphere.triangles, start), "the sphere is a closed surface");
+  // The "edit": pushes vertex 0 through the sphere unless guarded where it lies (or everywhere).
+  std::vector<std::pair<bool, std::size_t>> calls;
+  auto pushUnlessGuarded = [&](bool guardsVertex0) {
+    return [&calls, guardsVertex0](SurfaceMesh& mesh, bool guarded, const std::vector<Box>& only) {
+      calls.emplace_back(guarded, only.size());
+      const bool covered = guarded &&
+        (only.empty() ||
+          (guardsVertex0 && std::any_of(only.begin(), only.end(), [&](const Box& b) { return b.squaredDistance(mesh.points()[0]) == 0; })));
+      if (!covered)
+      {
+        mesh.points()[0] = -1.3 * mesh.points()[0];
+      }
+      return true;
+    };
+  };
+  SurfaceMesh mesh = start;
+  editCheckedOnce(mesh, 0.1, pushUnlessGuarded(true));
+  SW_CHECK(calls.size() == 2 && !calls[0].first && calls[1].first && calls[1].second > 0,
+    "a crossing trial is made again with the edits near the crossing guarded");
+  SW_CHECK(findSelfIntersections(mesh.points(), mesh.triangles()).pairs == 0 && mesh.points()[0] == start.points()[0],
+    "and that surface is kept");
+  calls.clear();
+  mesh = start;
+  editCheckedOnce(mesh, 0.1, pushUnlessGuarded(false));
+  SW_CHECK(calls.size() == 4 && calls[3].first && calls[3].second == 0 && calls[2].second >= calls[1].second,
+    "where guarding near the crossings does not help (twice, the boxes growing), every edit is guarded");
+  SW_CHECK(findSelfIntersections(mesh.points(), mesh.triangles()).pairs == 0, "and no crossing is left");
 }
 
 void exactNearTarget()
@@ -189,6 +232,7 @@ int TestSelfIntersections(int, char*[])
   triangleGrid();
   heldFronts();
   guardedEdits();
+  checkedEdits();
   exactNearTarget();
   return testing::finish("TestSelfIntersections");
 }

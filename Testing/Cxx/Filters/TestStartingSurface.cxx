@@ -6,9 +6,10 @@
 // - the filter wraps a torus from a contour, keeping the hole (Euler characteristic 0) where the
 //   icosphere closes it over (2), and starts from the relaxed contour;
 // - the Offset Surface start (the default) does the same by itself, and closes the hole over when it is
-//   narrower than the Gap Size.
+//   narrower than the Gap Size; with remeshing on, it begins coarsened to the Target Edge Length.
 #include "Icosphere.h"
 #include "Relaxation.h"
+#include "SelfIntersections.h"
 #include "StartingSurface.h"
 #include "SurfaceGeometry.h"
 #include "TestUtilities.h"
@@ -247,6 +248,43 @@ void wrapsATorusFromItsOffset()
   }
 }
 
+// The offset start is a contour with a vertex every fraction of a cell; with remeshing on, the evolution
+// begins from it coarsened to the Target Edge Length (checked against crossings), not at the grid's
+// resolution.
+void coarsensTheOffsetStart()
+{
+  vtkSmartPointer<vtkPolyData> target = torus();
+  int previous = 0;
+  for (const double L : { 0.06, 0.12 })
+  {
+    vtkNew<vtkShrinkWrapFilter> wrap;
+    wrap->SetInputData(target);
+    wrap->SetTargetEdgeLength(L);
+    wrap->SetNumberOfSteps(0);
+    wrap->Update();
+    vtkPolyData* start = wrap->GetOutput();
+    const shrinkwrap::TriangleSurface s = surfaceOf(start);
+    double edges = 0;
+    for (const auto& t : s.triangles)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        edges += (s.points[t[k]] - s.points[t[(k + 1) % 3]]).norm();
+      }
+    }
+    const double mean = edges / (3.0 * s.triangles.size());
+    const long long crossing = shrinkwrap::findSelfIntersections(s.points, s.triangles).pairs;
+    std::cout << "offset start of the torus at L = " << L << ": " << statusOf(start) << ", " << s.points.size()
+              << " vertices, mean edge " << mean << ", Euler characteristic " << eulerCharacteristic(start) << ", "
+              << crossing << " crossing pairs" << std::endl;
+    SW_CHECK(statusOf(start) == "ok" && eulerCharacteristic(start) == 0 && crossing == 0,
+      "the coarsened start is a closed torus that does not cross itself");
+    SW_CHECK(mean > 0.7 * L && mean < 1.2 * L, "its edges are about L long");
+    SW_CHECK(previous == 0 || 2.5 * s.points.size() < previous, "twice L: about a quarter of the vertices");
+    previous = static_cast<int>(s.points.size());
+  }
+}
+
 } // namespace
 
 int TestStartingSurface(int, char*[])
@@ -254,5 +292,6 @@ int TestStartingSurface(int, char*[])
   relaxesAContour();
   wrapsATorusFromAContour();
   wrapsATorusFromItsOffset();
+  coarsensTheOffsetStart();
   return testing::finish("TestStartingSurface");
 }

@@ -167,6 +167,8 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   this->CloseHoles = defaults.closeHoles;
   this->Remeshing = defaults.remeshing;
   this->TargetEdgeLength = defaults.targetLength;
+  this->EdgeLengthRange[0] = defaults.edgeRange[0];
+  this->EdgeLengthRange[1] = defaults.edgeRange[1];
   this->InitialRelaxation = defaults.start.relaxation;
   this->AutomaticScaling = defaults.automaticScaling;
   this->SolverTolerance = e.solverTolerance;
@@ -209,6 +211,7 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
   s.closeHoles = this->CloseHoles;
   s.remeshing = this->Remeshing;
   s.targetLength = this->TargetEdgeLength;
+  s.edgeRange = { this->EdgeLengthRange[0], this->EdgeLengthRange[1] };
   s.start.relaxation = this->InitialRelaxation;
   s.automaticScaling = this->AutomaticScaling;
   e.solverTolerance = this->SolverTolerance;
@@ -877,6 +880,8 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CloseHoles: " << this->CloseHoles << "\n";
   os << indent << "Remeshing: " << this->Remeshing << "\n";
   os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << (this->TargetEdgeLength > 0 ? "\n" : " (automatic)\n");
+  os << indent << "EdgeLengthRange: " << this->EdgeLengthRange[0] << " " << this->EdgeLengthRange[1]
+     << (this->EdgeLengthRange[0] < 1 || this->EdgeLengthRange[1] > 1 ? " (adaptive)\n" : " (uniform)\n");
   os << indent << "InitialRelaxation: " << this->InitialRelaxation << "\n";
   os << indent << "AutomaticScaling: " << this->AutomaticScaling << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";

@@ -252,6 +252,14 @@ public:
   /// points, 10 median nearest-neighbour distances, between diagonal / 200 and diagonal / 50.
   vtkSetClampMacro(TargetEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(TargetEdgeLength, double);
+  /// Adaptive edge length, in units of TargetEdgeLength L: the edges may shorten to
+  /// EdgeLengthRange[0] * L where the surface curves (so that a chord stays within 0.12 L of the
+  /// surface: sharp edges, corners, tips) and lengthen to EdgeLengthRange[1] * L where it is flat,
+  /// with neighbouring lengths graded. Default 1 1: L everywhere. 0.6 1.6 follows sharp features
+  /// closer with about as many vertices (RESULTS.md, "Adaptive edge length"). From 0.1 to 1, and from 1
+  /// to 4; other values are refused.
+  vtkSetVector2Macro(EdgeLengthRange, double);
+  vtkGetVector2Macro(EdgeLengthRange, double);
   ///@}
   ///@{
   /// Iterations of tangential relaxation (with edge flips) applied to an InitialSurface or the offset
@@ -365,6 +373,7 @@ protected:
   bool CloseHoles;
   bool Remeshing;
   double TargetEdgeLength;
+  double EdgeLengthRange[2];
   int InitialRelaxation;
   bool AutomaticScaling;
   double SolverTolerance;

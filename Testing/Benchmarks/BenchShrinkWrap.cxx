@@ -9,7 +9,8 @@
 // distances to the other surface (mean and largest, percent of the target's diagonal), crossing
 // triangle pairs (ours, and CGAL's does_self_intersect), closed and manifold, genus, the share of
 // triangles with a minimum angle below 20 degrees. --set applies a property to our wraps (D, C, C1,
-// C2, TimeStep, NumberOfSteps, Resolution, StartOffset, GapSize, TargetEdgeLength, Remeshing,
+// C2, TimeStep, NumberOfSteps, Resolution, StartOffset, GapSize, TargetEdgeLength, ShortestEdge and
+// LongestEdge (EdgeLengthRange), Remeshing,
 // StartingShape, SubdivisionLevel, InitialRelaxation, CloseHoles), for tuning. --time-only runs our defaults alone and prints their
 // time and vertex count, without evaluation or peers (for profiling); with --points, our wrap of the
 // points evaluated, without peers. --no-reconstruction leaves out vtkSurfaceReconstructionFilter (the
@@ -234,6 +235,8 @@ const std::map<std::string, Setter>& setters()
     { "StartOffset", [](vtkShrinkWrapFilter* w, double v) { w->SetStartOffset(v); } },
     { "GapSize", [](vtkShrinkWrapFilter* w, double v) { w->SetGapSize(v); } },
     { "TargetEdgeLength", [](vtkShrinkWrapFilter* w, double v) { w->SetTargetEdgeLength(v); } },
+    { "ShortestEdge", [](vtkShrinkWrapFilter* w, double v) { w->SetEdgeLengthRange(v, w->GetEdgeLengthRange()[1]); } },
+    { "LongestEdge", [](vtkShrinkWrapFilter* w, double v) { w->SetEdgeLengthRange(w->GetEdgeLengthRange()[0], v); } },
     { "Remeshing", [](vtkShrinkWrapFilter* w, double v) { w->SetRemeshing(v != 0); } },
     { "StartingShape", [](vtkShrinkWrapFilter* w, double v) { w->SetStartingShape(static_cast<int>(v)); } },
     { "CloseHoles", [](vtkShrinkWrapFilter* w, double v) { w->SetCloseHoles(v != 0); } },

@@ -48,6 +48,9 @@ Status WrapSettings::validate() const
     return Status::failure("TargetEdgeLength must not be negative (0: automatic)");
   if (!(this->gapSize >= 0) || !std::isfinite(this->gapSize))
     return Status::failure("GapSize must not be negative (0: automatic)");
+  if (!(this->edgeRange[0] >= kShortestEdge && this->edgeRange[0] <= 1 && this->edgeRange[1] >= 1 &&
+        this->edgeRange[1] <= kLongestEdge))
+    return Status::failure("EdgeLengthRange must hold 1: from 0.1 to 1, then from 1 to 4 (times the Target Edge Length)");
   return {};
 }
 
@@ -59,7 +62,9 @@ Status WrapSettings::fits(const Box& targetBox) const
   }
   // Equilateral triangles of edge L over the target box's surface (more than the wrap's): vertices
   // about 2 A / (sqrt(3) L^2).
-  const double vertices = 2 * 2 * targetBox.halfArea() / (std::sqrt(3.0) * this->targetLength * this->targetLength);
+  // The shortest adaptive edges bound it.
+  const double shortest = this->edgeRange[0] * this->targetLength;
+  const double vertices = 2 * 2 * targetBox.halfArea() / (std::sqrt(3.0) * shortest * shortest);
   if (!(vertices <= kMaxVertices))
   {
     std::ostringstream message;
@@ -84,6 +89,9 @@ WrapSettings WrapSettings::resolved(const Box& targetBox) const
   }
   s.evolution.remeshing.targetLength = s.remeshing ? s.targetLength : 0;
   s.start.coarsenTo = s.evolution.remeshing.targetLength;
+  s.evolution.remeshing.shortest = s.edgeRange[0];
+  s.evolution.remeshing.longest = s.edgeRange[1];
+  s.evolution.remeshing.chordError = kChordError;
   // A start farther out than half the gap would merge parts the closing keeps apart (and give the
   // wrap handles the target does not have, as between knot1's strands).
   s.start.maxOffset = 0.5 * s.gapSize;

@@ -9,6 +9,7 @@
 #include "StartingSurface.h"
 #include "StepCache.h"
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -32,6 +33,9 @@ struct WrapSettings
   // vertex count follows the surface; phi then follows L (StabilityScaling.h).
   bool remeshing = true;
   double targetLength = 0;      // L, in the target's units; 0: automatic (kAutomaticDivisor)
+  // Adaptive edge length: edges between edgeRange[0] L and edgeRange[1] L, shorter where the surface
+  // curves (RemeshSettings::shortest, longest); {1, 1}: L everywhere.
+  std::array<double, 2> edgeRange{ 1, 1 };
   double gapSize = 0;           // gaps narrower than this are bridged (GapClosing.h); 0: automatic
   // An open or self-crossing target's field (computed here): false, unsigned, so that holes wider than
   // the gap size stay open and the wrap enters them, wrapping open sheets from both sides (measured
@@ -46,6 +50,10 @@ struct WrapSettings
   static constexpr double kLengthDivisor = 50;
   static constexpr double kGapDivisor = 50;
   static constexpr double kMaxVertices = 4e6; // a Target Edge Length that would make more is refused
+  // The adaptive chord error, in L: with edges between 0.6 L and 1.6 L the wraps of the benchmark's
+  // meshes keep about as many vertices as with L alone (RESULTS.md).
+  static constexpr double kChordError = 0.12;
+  static constexpr double kShortestEdge = 0.1, kLongestEdge = 4; // the bounds of edgeRange
 
   Status validate() const;
   // These settings with the automatic sizes resolved for a target of this box, and L passed on to

@@ -24,7 +24,19 @@ struct RemeshSettings
   double relaxWeight = 0.5;        // share of the way to the tangential centroid; 0: no relaxation
   FlipSettings flips;              // the dihedral guard of every flip
   CollapseSettings collapses;      // the normal and crossing guards of every collapse
+  // Adaptive sizing: each vertex gets the edge length whose chord stays within chordError * L of a
+  // circle of the surface's largest curvature there (pmp-library's sqrt(6 e r - 3 e^2)), between
+  // shortest * L and longest * L; an edge's length is the mean of its ends'. shortest = longest = 1:
+  // uniform L.
+  double shortest = 1, longest = 1, chordError = 0.05, grading = 0.3;
+  bool adaptive() const { return this->shortest < 1 || this->longest > 1; }
 };
+
+// The vertex data that holds each vertex's edge length in units of L while the remeshing runs (x).
+constexpr const char* kEdgeSizeData = "edgeSize";
+// Sets kEdgeSizeData from the surface's curvature: the largest normal curvature towards a neighbour,
+// 2 |n . (x_j - x_i)| / |x_j - x_i|^2.
+void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings);
 
 struct RemeshReport
 {
@@ -32,6 +44,7 @@ struct RemeshReport
   Status status;
 };
 
+// With kEdgeSizeData on the mesh, the lengths below are those of an edge of size 1, scaled per edge.
 // Splits every edge longer than maxLength at its midpoint, in passes until none is left (at most 16).
 int splitLongEdges(SurfaceMesh& mesh, double maxLength);
 // Collapses edges shorter than minLength into their midpoints where no edge then exceeds maxLength

@@ -49,6 +49,7 @@ public:
   std::vector<Vec3>& vertexData(const std::string& name);
   const std::vector<Vec3>& vertexData(const std::string& name) const; // empty if there is none
   bool hasVertexData(const std::string& name) const { return this->Data.count(name) > 0; }
+  void removeVertexData(const std::string& name) { this->Data.erase(name); }
 
   // One-ring of vertex i: neighbours ring(p) for p in [ringBegin(i), ringEnd(i)), counter-clockwise.
   // The triangle (i, ring(p), ring(next(p))) is ringTriangle(p).

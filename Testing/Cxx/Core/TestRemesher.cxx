@@ -1,12 +1,15 @@
 // Isotropic remeshing (groundwork of issue #10): a coarse sphere refined and a fine one coarsened to
 // the target edge length, closed, same genus, the shape kept, valences near 6, good angles; vertex data
-// follows the edits; refused settings.
+// follows the edits; adaptive sizes from the curvature; refused settings.
 #include "Icosphere.h"
 #include "Remesher.h"
 #include "SurfaceGeometry.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>
+
+#include <cmath>
+#include <utility>
 
 namespace
 {
@@ -98,6 +101,74 @@ void dataFollows()
   SW_CHECK(collapses > 0 && own && fine.vertexCount() == 642 - collapses, "collapses keep the survivors' data, in order");
 }
 
+// Adaptive sizing: on a sphere of radius R every vertex gets the chord-error length sqrt(6 e R - 3 e^2);
+// an ellipsoid remeshed adaptively gets shorter edges at its sharp ends than at its flat waist, and
+// more of them than with L alone there.
+void adaptive()
+{
+  SurfaceMesh sphere = testing::meshOf(icosphere(4, Vec3::Zero(), 2.0));
+  RemeshSettings settings;
+  settings.targetLength = 0.2;
+  settings.shortest = 0.25;
+  settings.longest = 4;
+  settings.chordError = 0.05;
+  assignEdgeSizes(sphere, settings);
+  const double e = 0.05 * 0.2, expected = std::sqrt(6 * e * 2.0 - 3 * e * e) / 0.2;
+  double low = 1e9, high = 0;
+  for (const Vec3& s : std::as_const(sphere).vertexData(kEdgeSizeData))
+  {
+    low = std::min(low, s.x());
+    high = std::max(high, s.x());
+  }
+  std::printf("sizes on a sphere of radius 2: %.3f to %.3f L (chord error: %.3f L)\n", low, high, expected);
+  SW_CHECK(low > 0.95 * expected && high < 1.01 * expected, "the sphere's sizes are the chord-error length (within 5%)");
+
+  // x^2 / 9 + y^2 + z^2 = 1: curvature 3 at the ends (x = +-3), 1/3 to 1 at the waist.
+  auto ellipsoid = [] {
+    SurfaceMesh mesh = testing::meshOf(icosphere(4));
+    for (Vec3& p : mesh.points())
+    {
+      p.x() *= 3;
+    }
+    return mesh;
+  };
+  auto meanEdge = [](const SurfaceMesh& mesh, bool ends) {
+    double sum = 0;
+    int count = 0;
+    for (int i = 0; i < mesh.vertexCount(); ++i)
+    {
+      const bool atEnd = std::abs(mesh.points()[i].x()) > 2.7, atWaist = std::abs(mesh.points()[i].x()) < 1;
+      for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
+      {
+        if ((ends && atEnd) || (!ends && atWaist))
+        {
+          sum += (mesh.points()[mesh.ring(p)] - mesh.points()[i]).norm();
+          ++count;
+        }
+      }
+    }
+    return sum / count;
+  };
+  SurfaceMesh uniform = ellipsoid(), adapted = ellipsoid();
+  RemeshSettings r;
+  r.targetLength = 0.25;
+  remesh(uniform, r);
+  r.shortest = 0.4;
+  r.longest = 1.6;
+  r.chordError = 0.05;
+  const RemeshReport report = remesh(adapted, r);
+  const Spread s = spreadOf(adapted, 0.25);
+  std::printf("ellipsoid at L = 0.25: uniform %d vertices, ends %.3f, waist %.3f; adaptive %d vertices, ends "
+              "%.3f, waist %.3f; angles < 20 deg %.1f%%\n",
+    uniform.vertexCount(), meanEdge(uniform, true), meanEdge(uniform, false), adapted.vertexCount(),
+    meanEdge(adapted, true), meanEdge(adapted, false), 100 * s.thin);
+  SW_CHECK(report.status && meanEdge(adapted, true) < 0.75 * meanEdge(adapted, false),
+    "adaptive: the sharp ends get shorter edges than the flat waist");
+  SW_CHECK(meanEdge(adapted, true) < 0.8 * meanEdge(uniform, true) && s.thin < 0.05,
+    "shorter than L alone there, with few thin triangles");
+  SW_CHECK(!std::as_const(adapted).hasVertexData(kEdgeSizeData), "the sizes are gone after the remeshing");
+}
+
 void refused()
 {
   SurfaceMesh mesh = testing::meshOf(icosphere(1));
@@ -112,6 +183,7 @@ int TestRemesher(int, char*[])
     towards(2, 0.08, "refine");
     towards(5, 0.12, "coarsen");
     dataFollows();
+    adaptive();
     refused();
   });
   return testing::finish("TestRemesher");

@@ -185,6 +185,7 @@ void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
   f->SetRemeshing(dice.chance(0.7));
   // Coarse (a few hundred vertices on the unit sphere): the fuzz runs up to 10,000 steps under ASan.
   f->SetTargetEdgeLength(dice.value(0.4));
+  f->SetEdgeLengthRange(dice.chance(0.5) ? 1 : dice.value(0.6), dice.chance(0.5) ? 1 : dice.value(1.6));
   f->SetInitialRelaxation(dice.between(-1, 12));
   f->SetAutomaticScaling(dice.chance(0.8));
   f->SetSolverTolerance(dice.value(1e-6));

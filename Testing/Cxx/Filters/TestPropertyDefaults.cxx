@@ -114,6 +114,11 @@ int TestPropertyDefaults(int argc, char* argv[])
       { "SetWrapBlocksTogether", [&] { return one(w->GetWrapBlocksTogether()); } },
       { "SetRemeshing", [&] { return one(w->GetRemeshing()); } },
       { "SetTargetEdgeLength", [&] { return one(w->GetTargetEdgeLength()); } },
+      { "SetEdgeLengthRange",
+        [&] {
+          const double* r = w->GetEdgeLengthRange();
+          return std::vector<double>(r, r + 2);
+        } },
       { "SetTangentialRedistribution", [&] { return one(w->GetTangentialRedistribution()); } },
       { "SetC1", [&] { return one(w->GetC1()); } },
       { "SetC2", [&] { return one(w->GetC2()); } },

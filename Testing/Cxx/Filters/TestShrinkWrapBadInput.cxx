@@ -386,6 +386,9 @@ void absurdSizes()
   const std::pair<std::string, std::function<void()>> cases[] = {
     { "Target Edge Length 1e-9", [&] { wrap->SetTargetEdgeLength(1e-9); } },
     { "Gap Size 1e6", [&] { wrap->SetTargetEdgeLength(0); wrap->SetGapSize(1e6); } },
+    { "Edge Length Range 0 1", [&] { wrap->SetGapSize(0); wrap->SetEdgeLengthRange(0, 1); } },
+    { "Edge Length Range 1 NaN", [&] { wrap->SetEdgeLengthRange(1, kNaN); } },
+    { "Edge Length Range 2 1", [&] { wrap->SetEdgeLengthRange(2, 1); } },
   };
   for (const auto& c : cases)
   {
@@ -395,6 +398,7 @@ void absurdSizes()
     SW_CHECK(said.errors > 0 && wrap->GetOutput()->GetNumberOfPoints() == 0, c.first << ": an error, empty output");
   }
   wrap->SetGapSize(0);
+  wrap->SetEdgeLengthRange(1, 1);
   wrap->Update();
   SW_CHECK(wrap->GetOutput()->GetNumberOfPoints() > 0 && stepOf(wrap->GetOutput()) == 5, "then the defaults wrap");
 }

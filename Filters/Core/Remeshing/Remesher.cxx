@@ -5,6 +5,7 @@
 #include "SelfIntersections.h"
 #include "SurfaceGeometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -86,9 +87,9 @@ namespace
 {
 // No edge from the merged vertex at m (which keeps a's size) to a neighbour of a or b longer than
 // maxLength.
-bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, int b, const Vec3& m, double maxLength)
+bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const std::vector<Vec3>& sizes, int a, int b,
+  const Vec3& m, double maxLength)
 {
-  const std::vector<Vec3>& sizes = mesh.vertexData(kEdgeSizeData);
   for (int v : { a, b })
   {
     for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
@@ -115,7 +116,7 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
     const int a = e[0], b = e[1];
     const Vec3 m = 0.5 * (x[a] + x[b]);
     if (mesh.vertexCount() - collapses > 4 && (x[a] - x[b]).norm() < minLength * edgeSize(sizes, a, b) &&
-      staysShort(mesh, x, a, b, m, maxLength))
+      staysShort(mesh, x, sizes, a, b, m, maxLength))
     {
       collapses += collapseInPass(mesh, x, a, b, m, settings, touched, guard);
     }

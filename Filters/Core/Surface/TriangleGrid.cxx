@@ -51,15 +51,21 @@ TriangleGrid::TriangleGrid(std::vector<Box> boxes, double cell)
   , Cell(cell)
 {
   Box all;
+  double largest = 0;
   for (const Box& b : this->Boxes)
   {
     all.extend(b);
+    largest = std::max(largest, b.size().maxCoeff());
   }
   if (this->Boxes.empty() || !(cell > 0) || !std::isfinite(cell) || !all.min.allFinite() || !all.max.allFinite())
   {
     return;
   }
+  // No box in more than 9 x 9 x 9 cells, whatever the cell asked for: a swept box of a vertex that
+  // jumped far (a fuzzed step) would otherwise cover billions.
+  this->Cell = std::max(cell, largest / 8);
   this->Origin = all.min;
+  this->Extent = this->rangeOf(all);
   this->build();
 }
 

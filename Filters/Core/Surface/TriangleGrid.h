@@ -60,6 +60,7 @@ private:
 
   std::vector<Box> Boxes;
   std::vector<Range> Ranges;
+  Range Extent{}; // the cells the triangles cover
   std::vector<std::uint32_t> Start; // bucket b holds Items[Start[b], Start[b + 1])
   std::vector<int> Items;
   std::uint64_t Mask = 0;
@@ -74,7 +75,31 @@ void TriangleGrid::forEachNear(const Box& box, F&& f) const
   {
     return;
   }
-  const Range r = this->rangeOf(box);
+  // Only the cells the triangles cover hold any; a box wider than the triangles have cells (a search
+  // radius far beyond the surface's edge length) is answered by testing every triangle instead.
+  Range r = this->rangeOf(box);
+  double cells = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    r[a] = std::max(r[a], this->Extent[a]);
+    r[a + 3] = std::min(r[a + 3], this->Extent[a + 3]);
+    if (r[a] > r[a + 3])
+    {
+      return;
+    }
+    cells *= r[a + 3] - r[a] + 1.0;
+  }
+  if (cells > static_cast<double>(this->Boxes.size()))
+  {
+    for (int t = 0; t < static_cast<int>(this->Boxes.size()); ++t)
+    {
+      if (this->Boxes[t].overlaps(box))
+      {
+        f(t);
+      }
+    }
+    return;
+  }
   for (std::uint32_t k = r[2]; k <= r[5]; ++k)
     for (std::uint32_t j = r[1]; j <= r[4]; ++j)
       for (std::uint32_t i = r[0]; i <= r[3]; ++i)

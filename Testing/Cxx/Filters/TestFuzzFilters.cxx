@@ -375,6 +375,7 @@ int TestFuzzFilters(int argc, char* argv[])
       wrap->SetRemeshing(false); // 162 vertices throughout
       wrap->SetGapSize(0);
       wrap->SetTargetEdgeLength(0);
+      wrap->SetEdgeLengthRange(1, 1);
       wrap->SetInitialRelaxation(10);
       wrap->SetAutomaticScaling(true);
       wrap->SetSolverTolerance(1e-6);

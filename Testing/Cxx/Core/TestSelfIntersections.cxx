@@ -109,6 +109,18 @@ void triangleGrid()
   }
   std::sort(near.begin(), near.end());
   SW_CHECK(!brute.empty() && near == brute, "a box query finds every overlapping triangle once");
+
+  // Three small triangles far apart: the grid spans far more cells than it has triangles, and a query
+  // over many of them tests triangle by triangle.
+  const std::vector<Vec3> sparse{ { 0, 0, 0 }, { 0.1, 0, 0 }, { 0, 0.1, 0 }, { 10, 10, 10 }, { 10.1, 10, 10 },
+    { 10, 10.1, 10 }, { 20, 0, 0 }, { 20.1, 0, 0 }, { 20, 0.1, 0 } };
+  const TriangleGrid apart(sparse, { { 0, 1, 2 }, { 3, 4, 5 }, { 6, 7, 8 } });
+  Box most;
+  most.extend(Vec3(-1, -1, -1));
+  most.extend(Vec3(15, 15, 15));
+  std::vector<int> found;
+  apart.forEachNear(most, [&](int t) { found.push_back(t); });
+  SW_CHECK((found == std::vector<int>{ 0, 1 }), "a query wider than the grid's cells finds the triangles in it once");
 }
 
 void heldFronts()

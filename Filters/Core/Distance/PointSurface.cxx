@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <utility>
 
 namespace shrinkwrap
@@ -16,10 +17,17 @@ namespace
 constexpr int kScales = 3;             // widths h, 2 h, 4 h
 constexpr double kCutoff = 2.5;        // neighbours within this many widths (weights below 0.002 beyond)
 constexpr double kMinWeight = 1;       // a fit needs the weight of at least one point at the centre
-// In widths, the points' centroid beside the foot (along the plane): up to half of this the fit is
-// trusted fully, beyond this not at all (a one-sided fit). Sampling holes of a random sample (up to
+// In widths, the points' centroid beside the foot (along the plane, closestPoint): up to half of this
+// the fit is trusted fully, beyond this not at all (a one-sided fit). Sampling holes of a random sample (up to
 // about 3.5 neighbour distances, more than h) need the full trust; a fit beyond a gap's rim does not.
 constexpr double kMaxOffCentre = 1.0;
+// In widths, a point's lean (its neighbours' centroid off it, along the plane): up to kEvenLean the
+// noise of an even random sample, from kRimLean on the lean of a point on a straight rim (1 / sqrt(pi)).
+constexpr double kEvenLean = 0.3;
+constexpr double kRimLean = 0.5;
+// In widths: a patch speaks for feet within this of its centre (a random sample leaves most feet
+// within a spacing, a third of h, of their nearest point); further, one centred on the foot does.
+constexpr double kNearAnchor = 0.5;
 constexpr double kMaxFlatness = 0.25;  // smallest over middle eigenvalue: above it, no plane
 constexpr double kMinPivot = 1e-6;     // of the quadric's normal equations, relative to the largest
 constexpr double kMaxLift = 0.2;       // in widths: the most a quadric may move the plane's surface point
@@ -50,6 +58,15 @@ PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double wid
       }
     }
     this->Scales.push_back(std::make_unique<const Scale>(std::move(sample), width * (1 << s)));
+  }
+  this->Blocks = std::vector<std::atomic<Block*>>(all.size() / Block::kSize + 1);
+}
+
+PointSurface::~PointSurface()
+{
+  for (auto& block : this->Blocks)
+  {
+    delete block.load();
   }
 }
 
@@ -98,16 +115,15 @@ bool PointSurface::fit(const Neighbourhood& around, Plane& plane)
   return true;
 }
 
-double PointSurface::height(const Neighbourhood& around, const Vec3& foot, const Plane& plane, double width)
+void PointSurface::fitQuadric(const Neighbourhood& around, Patch& patch)
 {
   // Heights over the plane, in widths, fitted by w = a0 + a1 u + a2 v + a3 u^2 + a4 u v + a5 v^2 about
-  // the foot (u = v = 0): a0 is the surface's height there.
-  const Vec3 t1 = plane.normal.unitOrthogonal();
-  const Vec3 t2 = plane.normal.cross(t1);
+  // the centroid (u = v = 0).
   Eigen::Matrix<double, 6, 6> normalMatrix = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-  const double scale = 1 / width;
-  const Vec3 shift = around.centre - foot;
+  const double scale = 1 / patch.width;
+  const Vec3 shift = around.centre - patch.plane.centroid;
+  const Vec3 t1 = patch.plane.normal.unitOrthogonal(), t2 = patch.plane.normal.cross(t1);
   for (std::size_t i = 0; i < around.offsets.size(); ++i)
   {
     const Vec3 d = (around.offsets[i] + shift) * scale;
@@ -115,69 +131,144 @@ double PointSurface::height(const Neighbourhood& around, const Vec3& foot, const
     Eigen::Matrix<double, 6, 1> basis;
     basis << 1, u, v, u * u, u * v, v * v;
     const double w = around.weights[i];
-    normalMatrix.selfadjointView<Eigen::Lower>().rankUpdate(basis, w);
-    rhs += w * d.dot(plane.normal) * basis;
+    for (int r = 0; r < 6; ++r) // the lower triangle (Eigen's rankUpdate is slow at this size)
+    {
+      for (int k = 0; k <= r; ++k)
+      {
+        normalMatrix(r, k) += w * basis[r] * basis[k];
+      }
+    }
+    rhs += w * d.dot(patch.plane.normal) * basis;
   }
   const Eigen::LDLT<Eigen::Matrix<double, 6, 6>, Eigen::Lower> solver(normalMatrix);
   const auto pivots = solver.vectorD();
-  const double planeHeight = (plane.centroid - foot).dot(plane.normal);
-  // Too few or too clustered points for a quadric: the plane's own height.
-  if (solver.info() != Eigen::Success || !(pivots.minCoeff() > kMinPivot * pivots.maxCoeff()))
+  // Too few or too clustered points for a quadric: the plane alone.
+  if (solver.info() == Eigen::Success && pivots.minCoeff() > kMinPivot * pivots.maxCoeff())
   {
-    return planeHeight;
+    patch.quadric = solver.solve(rhs);
   }
-  // A quadric lifts a curved surface off its plane by about h^2 times the curvature; more is an
-  // extrapolation into a gap between the points, where the plane is the safer guess.
-  const double lifted = solver.solve(rhs)[0] * width;
-  return std::abs(lifted - planeHeight) <= kMaxLift * width ? lifted : planeHeight;
+}
+
+bool PointSurface::fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const
+{
+  thread_local Neighbourhood around;
+  this->gather(centre, scale, around);
+  if (!fit(around, patch.plane))
+  {
+    return false;
+  }
+  patch.centre = centre;
+  patch.width = scale.width;
+  fitQuadric(around, patch);
+  return true;
+}
+
+PointSurface::Patch PointSurface::fitPatch(int id) const
+{
+  // The finest scale at which the points around this one look flat: noise thicker than a fraction of
+  // the width hides the plane until the width outgrows it.
+  Patch patch;
+  for (const auto& s : this->Scales)
+  {
+    if (this->fitAround(this->Points->points()[id], *s, patch))
+    {
+      return patch;
+    }
+  }
+  return Patch();
+}
+
+PointSurface::Patch PointSurface::patchAt(int id) const
+{
+  std::atomic<Block*>& slot = this->Blocks[id / Block::kSize];
+  Block* block = slot.load(std::memory_order_acquire);
+  if (!block)
+  {
+    auto made = std::make_unique<Block>();
+    if (slot.compare_exchange_strong(block, made.get(), std::memory_order_acq_rel))
+    {
+      block = made.release();
+    } // else another thread made it first: `block` is that one
+  }
+  enum : std::uint8_t { Empty, Busy, Ready };
+  std::atomic<std::uint8_t>& state = block->states[id % Block::kSize];
+  if (state.load(std::memory_order_acquire) == Ready)
+  {
+    return block->patches[id % Block::kSize];
+  }
+  const Patch patch = this->fitPatch(id);
+  // The first thread to finish stores it; one that meets another storing keeps its own equal copy.
+  std::uint8_t expected = Empty;
+  if (state.compare_exchange_strong(expected, Busy, std::memory_order_acq_rel))
+  {
+    block->patches[id % Block::kSize] = patch;
+    state.store(Ready, std::memory_order_release);
+  }
+  return patch;
+}
+
+double PointSurface::trustAt(const Vec3& x, const Patch& patch)
+{
+  // Full while x's foot lies among the points, none once their centroid is kMaxOffCentre widths to
+  // one side of it (beyond a gap's rim), fading in between. A patch's centre leans away from a rim
+  // (its points' centroid lies about h / sqrt(pi) inwards); from a centre that leans so, a foot
+  // further out adds its distance, while beside a centre among evenly spread points it does not.
+  const double width = patch.width;
+  const Plane& plane = patch.plane;
+  const Vec3 fromCentroid = (x - plane.centroid) - (x - plane.centroid).dot(plane.normal) * plane.normal;
+  const Vec3 lean = plane.centroid - patch.centre;
+  const Vec3 leanInPlane = lean - lean.dot(plane.normal) * plane.normal;
+  const double leanLength = leanInPlane.norm();
+  const double oneSided = std::clamp((leanLength - kEvenLean * width) / ((kRimLean - kEvenLean) * width), 0.0, 1.0);
+  const double outwards = oneSided > 0 ? std::max(0.0, -fromCentroid.dot(leanInPlane) / leanLength - leanLength) : 0.0;
+  const double offCentre = leanLength + oneSided * outwards;
+  const Vec3 fromCentre = fromCentroid + leanInPlane;
+  return fromCentre.squaredNorm() > kNearAnchor * kNearAnchor * width * width
+    ? 0.0
+    : std::clamp(2 - offCentre / (0.5 * kMaxOffCentre * width), 0.0, 1.0);
 }
 
 SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance) const
 {
-  thread_local Neighbourhood around;
   const SourcePoint nearest = this->Points->closestPoint(x, maxSquaredDistance);
-  const SourcePoint none;
-  Plane plane;
   if (!nearest.found)
   {
-    return none;
+    return nearest;
   }
-  // The finest scale at which the points around the nearest one look flat: noise thicker than a
-  // fraction of the width hides the plane until the width outgrows it.
-  const Scale* scale = nullptr;
-  for (const auto& s : this->Scales)
+  Patch patch = this->patchAt(nearest.element);
+  if (!(patch.width > 0))
   {
-    this->gather(nearest.point, *s, around);
-    if (fit(around, plane))
-    {
-      scale = s.get();
-      break;
-    }
+    return SourcePoint();
   }
-  if (!scale)
+  // The patch's point stands for the points around x while x's foot lies near it and its neighbours
+  // spread evenly around (full trust). A foot further out (over a sampling hole) or a point that leans
+  // (near a rim) gets a patch of its own, centred on the foot, at the same scale.
+  double trust = this->trustAt(x, patch);
+  if (trust < 1)
   {
-    return none;
+    const Vec3 foot = x - (x - patch.plane.centroid).dot(patch.plane.normal) * patch.plane.normal;
+    const Scale& scale = **std::find_if(this->Scales.begin(), this->Scales.end(),
+      [&](const auto& s) { return s->width == patch.width; });
+    trust = this->fitAround(foot, scale, patch) ? this->trustAt(x, patch) : 0.0;
   }
-  const double width = scale->width;
-  // Refitted about the foot: the weights then centre where the surface point is.
-  this->gather(x - (x - plane.centroid).dot(plane.normal) * plane.normal, *scale, around);
-  if (!fit(around, plane))
-  {
-    return none;
-  }
-  Vec3 foot = x - (x - plane.centroid).dot(plane.normal) * plane.normal;
-  const Vec3 along = (plane.centroid - foot) - (plane.centroid - foot).dot(plane.normal) * plane.normal;
-  // Trusted fully while the points lie around the foot, not at all once their centroid is
-  // kMaxOffCentre widths to one side (a gap's rim), fading in between.
-  const double trust = std::clamp(2 - along.norm() / (0.5 * kMaxOffCentre * width), 0.0, 1.0);
   if (trust <= 0)
   {
-    return none;
+    return SourcePoint();
   }
-  foot += height(around, foot, plane, width) * plane.normal;
+  const double width = patch.width;
+  const Plane& plane = patch.plane;
+  const Vec3 foot = x - (x - plane.centroid).dot(plane.normal) * plane.normal;
+  const Vec3 fromCentroid = foot - plane.centroid; // in the plane
+  const Vec3 t1 = plane.normal.unitOrthogonal(), t2 = plane.normal.cross(t1); // as fitQuadric's
+  const double u = fromCentroid.dot(t1) / width, v = fromCentroid.dot(t2) / width;
+  Eigen::Matrix<double, 6, 1> basis;
+  basis << 1, u, v, u * u, u * v, v * v;
+  // A quadric lifts a curved surface off its plane by about h^2 times the curvature; more is an
+  // extrapolation into a gap between the points, where the plane is the safer guess.
+  const double lift = patch.quadric.dot(basis) * width;
   SourcePoint p = nearest;
-  p.point = foot;
-  p.squaredDistance = (x - foot).squaredNorm();
+  p.point = foot + (std::abs(lift) <= kMaxLift * width ? lift : 0.0) * plane.normal;
+  p.squaredDistance = (x - p.point).squaredNorm();
   p.normal = plane.normal;
   p.side = 0;
   p.trust = trust;

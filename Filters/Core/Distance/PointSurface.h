@@ -1,18 +1,23 @@
 // The surface a point set samples, for the near field of a wrap onto points (issue #13; TargetDistance.h).
-// Near x: the plane fitted to the points around x's nearest point (centroid and covariance, Gaussian
-// weights of width h), fitted again about x's foot on it, and over that plane a quadratic height field
-// (moving least squares). Driven by the distance to the nearest point, a wrap dimples towards every
-// point; driven by this it lands between them on the sampled surface, and averages noise over a
-// neighbourhood instead of following it; where noise hides the plane at h, at 2 h or 4 h (over a quarter
-// or a sixteenth of the points: a wider fit averages as many points, not more). Where no plane fits, nothing is found and the caller's grid
-// decides: no points or no flat neighbourhood around the foot (a part thinner than h), or points on
-// one side of it only (a gap's rim), which fades the answer's trust out.
+// Near x: the patch of x's nearest point, the plane fitted to the points around it (centroid and
+// covariance, Gaussian weights of width h) and over that plane a quadratic height field (moving least
+// squares); x's surface point lies on it. A patch depends on its point alone: fitted the first time a
+// query lands there and kept (a wrap asks about the same points step after step), so answers do not
+// depend on the order or the thread of the queries. Driven by the distance to the nearest point, a
+// wrap dimples towards every point; driven by this it lands between them on the sampled surface, and
+// averages noise over a neighbourhood instead of following it; where noise hides the plane at h, at
+// 2 h or 4 h (over a quarter or a sixteenth of the points: a wider fit averages as many points, not
+// more). Where no plane fits, nothing is found and the caller's grid decides: no points or no flat
+// neighbourhood (a part thinner than h), or x's foot beyond the points on one side of it (a gap's
+// rim), which fades the answer's trust out.
 #ifndef ShrinkWrap_PointSurface_h
 #define ShrinkWrap_PointSurface_h
 
 #include "PointGrid.h"
 #include "PointSource.h"
 
+#include <atomic>
+#include <cstdint>
 #include <memory>
 
 namespace shrinkwrap
@@ -38,6 +43,13 @@ private:
     Vec3 centroid;
     Vec3 normal;
   };
+  struct Patch // the surface fitted around a centre (an input point or a foot)
+  {
+    Vec3 centre = Vec3::Zero();
+    Plane plane;
+    Eigen::Matrix<double, 6, 1> quadric = Eigen::Matrix<double, 6, 1>::Zero(); // height(u, v), in widths
+    double width = 0; // 0: no plane fits at any scale
+  };
   struct Neighbourhood // the points within the cutoff of a centre: offsets from it, weights
   {
     Vec3 centre;
@@ -54,12 +66,33 @@ private:
   void gather(const Vec3& centre, const Scale& scale, Neighbourhood& around) const;
   // The plane fitted to a neighbourhood; false where none fits.
   static bool fit(const Neighbourhood& around, Plane& plane);
-  // The height over `plane` at `foot` (on it) of the quadric fitted to the neighbourhood (the plane
-  // alone cuts through a curved surface: a bias of about h^2 times the curvature).
-  static double height(const Neighbourhood& around, const Vec3& foot, const Plane& plane, double width);
+  // The quadric over the patch's plane fitted to the neighbourhood (the plane alone cuts through a
+  // curved surface: a bias of about h^2 times the curvature); zero where the points do not pin one.
+  static void fitQuadric(const Neighbourhood& around, Patch& patch);
+  // The patch around `centre` at one scale; false where no plane fits.
+  bool fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const;
+  Patch fitPatch(int id) const; // around point id, at the finest scale that fits
+  // How far x's surface point on the patch may be trusted, 0 to 1; 0 also where x's foot lies too far
+  // from the patch's centre for the patch to speak for it.
+  static double trustAt(const Vec3& x, const Patch& patch);
+  Patch patchAt(int id) const; // fitted once, then kept
 
   std::shared_ptr<const PointSource> Points;
   std::vector<std::unique_ptr<const Scale>> Scales; // finest first
+  // Per input point, in blocks made when a query first lands in them (a wrap touches a fraction of a
+  // large cloud): its patch, and whether that is empty, being stored or ready.
+  struct Block
+  {
+    static constexpr int kSize = 1024;
+    Patch patches[kSize];
+    std::atomic<std::uint8_t> states[kSize] = {};
+  };
+  mutable std::vector<std::atomic<Block*>> Blocks;
+
+public:
+  ~PointSurface() override;
+  PointSurface(const PointSurface&) = delete;
+  PointSurface& operator=(const PointSurface&) = delete;
 };
 
 } // namespace shrinkwrap

@@ -28,6 +28,9 @@ class PointSurface : public DistanceSource
 public:
   // `width`: h, the weights' width (a small multiple of the points' spacing).
   PointSurface(std::shared_ptr<const PointSource> points, double width);
+  ~PointSurface() override;
+  PointSurface(const PointSurface&) = delete;
+  PointSurface& operator=(const PointSurface&) = delete;
   Box bounds() const override { return this->Points->bounds(); }
   bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const override
   {
@@ -88,11 +91,6 @@ private:
     std::atomic<std::uint8_t> states[kSize] = {};
   };
   mutable std::vector<std::atomic<Block*>> Blocks;
-
-public:
-  ~PointSurface() override;
-  PointSurface(const PointSurface&) = delete;
-  PointSurface& operator=(const PointSurface&) = delete;
 };
 
 } // namespace shrinkwrap

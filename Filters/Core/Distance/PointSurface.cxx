@@ -28,6 +28,9 @@ constexpr double kRimLean = 0.5;
 // In widths: a patch speaks for feet within this of its centre (a random sample leaves most feet
 // within a spacing, a third of h, of their nearest point); further, one centred on the foot does.
 constexpr double kNearAnchor = 0.5;
+// A rim leaves half the directions around a centre empty; a random sample's sampling hole leaves
+// far less (its points lie all around, only nearer on one side).
+constexpr double kMaxAngularGap = 2 * M_PI / 3;
 constexpr double kMaxFlatness = 0.25;  // smallest over middle eigenvalue: above it, no plane
 constexpr double kMinPivot = 1e-6;     // of the quadric's normal equations, relative to the largest
 constexpr double kMaxLift = 0.2;       // in widths: the most a quadric may move the plane's surface point
@@ -149,6 +152,33 @@ void PointSurface::fitQuadric(const Neighbourhood& around, Patch& patch)
   }
 }
 
+bool PointSurface::surrounds(const Neighbourhood& around, const Patch& patch)
+{
+  const Vec3 t1 = patch.plane.normal.unitOrthogonal(), t2 = patch.plane.normal.cross(t1);
+  const double nearby = 2 * patch.width;
+  thread_local std::vector<double> angles;
+  angles.clear();
+  for (const Vec3& d : around.offsets)
+  {
+    const double u = d.dot(t1), v = d.dot(t2);
+    if (u * u + v * v < nearby * nearby && u * u + v * v > 0)
+    {
+      angles.push_back(std::atan2(v, u));
+    }
+  }
+  if (angles.size() < 3)
+  {
+    return false;
+  }
+  std::sort(angles.begin(), angles.end());
+  double gap = angles.front() + 2 * M_PI - angles.back();
+  for (std::size_t i = 1; i < angles.size(); ++i)
+  {
+    gap = std::max(gap, angles[i] - angles[i - 1]);
+  }
+  return gap < kMaxAngularGap;
+}
+
 bool PointSurface::fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const
 {
   thread_local Neighbourhood around;
@@ -160,6 +190,7 @@ bool PointSurface::fitAround(const Vec3& centre, const Scale& scale, Patch& patc
   patch.centre = centre;
   patch.width = scale.width;
   fitQuadric(around, patch);
+  patch.surrounded = surrounds(around, patch);
   return true;
 }
 
@@ -221,7 +252,7 @@ double PointSurface::trustAt(const Vec3& x, const Patch& patch)
   const double leanLength = leanInPlane.norm();
   const double oneSided = std::clamp((leanLength - kEvenLean * width) / ((kRimLean - kEvenLean) * width), 0.0, 1.0);
   const double outwards = oneSided > 0 ? std::max(0.0, -fromCentroid.dot(leanInPlane) / leanLength - leanLength) : 0.0;
-  const double offCentre = leanLength + oneSided * outwards;
+  const double offCentre = patch.surrounded ? 0.0 : leanLength + oneSided * outwards;
   const Vec3 fromCentre = fromCentroid + leanInPlane;
   return fromCentre.squaredNorm() > kNearAnchor * kNearAnchor * width * width
     ? 0.0

@@ -52,6 +52,7 @@ private:
     Plane plane;
     Eigen::Matrix<double, 6, 1> quadric = Eigen::Matrix<double, 6, 1>::Zero(); // height(u, v), in widths
     double width = 0; // 0: no plane fits at any scale
+    bool surrounded = false; // its points lie all around its centre (no rim beside it)
   };
   struct Neighbourhood // the points within the cutoff of a centre: offsets from it, weights
   {
@@ -72,6 +73,9 @@ private:
   // The quadric over the patch's plane fitted to the neighbourhood (the plane alone cuts through a
   // curved surface: a bias of about h^2 times the curvature); zero where the points do not pin one.
   static void fitQuadric(const Neighbourhood& around, Patch& patch);
+  // Whether the neighbourhood's points, seen from its centre along the patch's plane, leave no angular
+  // gap wider than a rim would: a sampling hole, however lopsided, is surrounded; a rim is not.
+  static bool surrounds(const Neighbourhood& around, const Patch& patch);
   // The patch around `centre` at one scale; false where no plane fits.
   bool fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const;
   Patch fitPatch(int id) const; // around point id, at the finest scale that fits

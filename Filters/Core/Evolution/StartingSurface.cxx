@@ -86,6 +86,7 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
     editCheckedOnce(mesh, 4 * settings.coarsenTo, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
       CollapseSettings collapses;
       collapses.avoidCrossings = guarded;
+      collapses.orientDegenerate = true;
       collapses.guardOnlyIn = only;
       return collapseShortEdges(m, remeshing.collapseBelow * settings.coarsenTo,
                remeshing.splitAbove * settings.coarsenTo, collapses) > 0;

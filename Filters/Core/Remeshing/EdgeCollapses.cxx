@@ -20,18 +20,29 @@ bool linkCondition(const SurfaceMesh& mesh, int a, int b)
 }
 
 // The triangles around a and b other than the two on the edge keep their orientation when a and b
-// move to m; degenerating ones have no reliable normal to keep and are left out.
+// move to m; degenerating ones have no reliable normal to keep: they are left out, or (orientDegenerate)
+// must only face the way the fan does.
 bool keepsNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, int b, const Vec3& m,
   const CollapseSettings& settings)
 {
   bool keeps = true;
+  Vec3 fan = Vec3::Zero(); // area-weighted normal of the fan before
+  if (settings.orientDegenerate)
+  {
+    forEachFanTriangle(mesh, a, b, [&](int v, int u, int w) { fan += (x[u] - x[v]).cross(x[w] - x[v]); });
+  }
   forEachFanTriangle(mesh, a, b, [&](int v, int u, int w) {
-    if (!keeps || smallestAngle(x[v], x[u], x[w]) < settings.maxAngle)
+    if (!keeps)
     {
       return;
     }
     const Vec3 before = (x[u] - x[v]).cross(x[w] - x[v]);
     const Vec3 after = (x[u] - m).cross(x[w] - m);
+    if (smallestAngle(x[v], x[u], x[w]) < settings.maxAngle)
+    {
+      keeps = !settings.orientDegenerate || after.dot(fan) > 0;
+      return;
+    }
     const double lengths = before.norm() * after.norm();
     keeps = lengths > 0 && before.dot(after) >= settings.minNormalDot * lengths;
   });

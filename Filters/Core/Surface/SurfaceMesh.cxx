@@ -1,6 +1,9 @@
 #include "SurfaceMesh.h"
 
+#include "Parallel.h"
+
 #include <algorithm>
+#include <atomic>
 #include <sstream>
 #include <unordered_map>
 
@@ -16,8 +19,8 @@ struct Corner
 };
 
 // Corners grouped by vertex: at vertex a, triangle (a, b, c) leads from neighbour b to neighbour c.
-// Bucketed by a (counting sort), then each small bucket sorted by b: linear time, as this runs again
-// after every round of edits. `bucket` gets the bucket offsets.
+// Bucketed by a (counting sort; each bucket is sorted by b where its fan is walked): linear time, as
+// this runs again after every round of edits. `bucket` gets the bucket offsets.
 Status sortCorners(int nv, const std::vector<std::array<int, 3>>& triangles, std::vector<Corner>& corners,
   std::vector<int>& bucket)
 {
@@ -56,18 +59,14 @@ Status sortCorners(int nv, const std::vector<std::array<int, 3>>& triangles, std
       corners[fill[tri[k]]++] = { tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3], t };
     }
   }
-  for (int v = 0; v < nv; ++v)
-  {
-    std::sort(corners.begin() + bucket[v], corners.begin() + bucket[v + 1],
-      [](const Corner& x, const Corner& y) { return x.b < y.b; });
-  }
   return {};
 }
 
-// Walks the fan of vertex v, whose corners are [first, last): from neighbour b, the corner starting at b
-// leads to c, which must start the next. Writes v's ring entries.
-Status walkFan(int v, const Corner* first, const Corner* last, int* ring, int* ringTriangle)
+// Walks the fan of vertex v, whose corners are [first, last) (sorted here by b): from neighbour b, the
+// corner starting at b leads to c, which must start the next. Writes v's ring entries.
+Status walkFan(int v, Corner* first, Corner* last, int* ring, int* ringTriangle)
 {
+  std::sort(first, last, [](const Corner& x, const Corner& y) { return x.b < y.b; });
   // Messages are made only on failure: this runs for every vertex after every round of edits.
   auto failure = [v](const char* what, int other = -1) {
     std::ostringstream why;
@@ -196,18 +195,33 @@ Status SurfaceMesh::connect()
   {
     return status;
   }
-  // Every vertex's corners are as many as its ring entries; the walk checks they form one fan.
+  // Every vertex's corners are as many as its ring entries; the walk checks they form one fan. The
+  // vertices are walked in parallel; a failure is reported for the first vertex that fails, as a
+  // sequential walk would.
   this->RingStart = bucket;
   this->Ring.resize(corners.size());
   this->RingTriangle.resize(corners.size());
-  for (int v = 0; v < nv; ++v)
-  {
-    const Status fan = walkFan(v, corners.data() + bucket[v], corners.data() + bucket[v + 1],
-      this->Ring.data() + bucket[v], this->RingTriangle.data() + bucket[v]);
-    if (!fan)
+  auto walk = [&](int v) {
+    return walkFan(v, corners.data() + bucket[v], corners.data() + bucket[v + 1], this->Ring.data() + bucket[v],
+      this->RingTriangle.data() + bucket[v]);
+  };
+  std::atomic<int> firstFailing{ nv };
+  parallelFor(0, nv, 1024, [&](vtkIdType b, vtkIdType e) {
+    for (int v = static_cast<int>(b); v < static_cast<int>(e); ++v)
     {
-      return fan;
+      if (!walk(v))
+      {
+        int seen = firstFailing.load();
+        while (v < seen && !firstFailing.compare_exchange_weak(seen, v))
+        {
+        }
+        return;
+      }
     }
+  });
+  if (firstFailing < nv)
+  {
+    return walk(firstFailing);
   }
   for (auto& entry : this->Data)
   {

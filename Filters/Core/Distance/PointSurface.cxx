@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -34,6 +35,20 @@ constexpr double kMaxAngularGap = 2 * M_PI / 3;
 constexpr double kMaxFlatness = 0.25;  // smallest over middle eigenvalue: above it, no plane
 constexpr double kMinPivot = 1e-6;     // of the quadric's normal equations, relative to the largest
 constexpr double kMaxLift = 0.2;       // in widths: the most a quadric may move the plane's surface point
+
+// The axes of a plane's (u, v) coordinates, the same for every use of one patch.
+std::array<Vec3, 2> tangents(const Vec3& normal)
+{
+  const Vec3 t1 = normal.unitOrthogonal();
+  return { t1, normal.cross(t1) };
+}
+
+// A patch's centroid off its centre, along its plane: how far its points lean to one side.
+Vec3 leanInPlane(const Vec3& centroid, const Vec3& centre, const Vec3& normal)
+{
+  const Vec3 lean = centroid - centre;
+  return lean - lean.dot(normal) * normal;
+}
 } // namespace
 
 PointSurface::Scale::Scale(std::vector<Vec3> sample, double w)
@@ -126,7 +141,7 @@ void PointSurface::fitQuadric(const Neighbourhood& around, Patch& patch)
   Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
   const double scale = 1 / patch.width;
   const Vec3 shift = around.centre - patch.plane.centroid;
-  const Vec3 t1 = patch.plane.normal.unitOrthogonal(), t2 = patch.plane.normal.cross(t1);
+  const auto [t1, t2] = tangents(patch.plane.normal);
   for (std::size_t i = 0; i < around.offsets.size(); ++i)
   {
     const Vec3 d = (around.offsets[i] + shift) * scale;
@@ -154,7 +169,7 @@ void PointSurface::fitQuadric(const Neighbourhood& around, Patch& patch)
 
 bool PointSurface::surrounds(const Neighbourhood& around, const Patch& patch)
 {
-  const Vec3 t1 = patch.plane.normal.unitOrthogonal(), t2 = patch.plane.normal.cross(t1);
+  const auto [t1, t2] = tangents(patch.plane.normal);
   const double nearby = 2 * patch.width;
   thread_local std::vector<double> angles;
   angles.clear();
@@ -190,7 +205,10 @@ bool PointSurface::fitAround(const Vec3& centre, const Scale& scale, Patch& patc
   patch.centre = centre;
   patch.width = scale.width;
   fitQuadric(around, patch);
-  patch.surrounded = surrounds(around, patch);
+  // Only a lean beyond an even sample's fades the trust (trustAt); only then is it asked whether the
+  // points lie all around.
+  patch.surrounded = leanInPlane(patch.plane.centroid, centre, patch.plane.normal).norm() > kEvenLean * scale.width &&
+    surrounds(around, patch);
   return true;
 }
 
@@ -247,13 +265,12 @@ double PointSurface::trustAt(const Vec3& x, const Patch& patch)
   const double width = patch.width;
   const Plane& plane = patch.plane;
   const Vec3 fromCentroid = (x - plane.centroid) - (x - plane.centroid).dot(plane.normal) * plane.normal;
-  const Vec3 lean = plane.centroid - patch.centre;
-  const Vec3 leanInPlane = lean - lean.dot(plane.normal) * plane.normal;
-  const double leanLength = leanInPlane.norm();
+  const Vec3 lean = leanInPlane(plane.centroid, patch.centre, plane.normal);
+  const double leanLength = lean.norm();
   const double oneSided = std::clamp((leanLength - kEvenLean * width) / ((kRimLean - kEvenLean) * width), 0.0, 1.0);
-  const double outwards = oneSided > 0 ? std::max(0.0, -fromCentroid.dot(leanInPlane) / leanLength - leanLength) : 0.0;
+  const double outwards = oneSided > 0 ? std::max(0.0, -fromCentroid.dot(lean) / leanLength - leanLength) : 0.0;
   const double offCentre = patch.surrounded ? 0.0 : leanLength + oneSided * outwards;
-  const Vec3 fromCentre = fromCentroid + leanInPlane;
+  const Vec3 fromCentre = fromCentroid + lean;
   return fromCentre.squaredNorm() > kNearAnchor * kNearAnchor * width * width
     ? 0.0
     : std::clamp(2 - offCentre / (0.5 * kMaxOffCentre * width), 0.0, 1.0);
@@ -290,7 +307,7 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
   const Plane& plane = patch.plane;
   const Vec3 foot = x - (x - plane.centroid).dot(plane.normal) * plane.normal;
   const Vec3 fromCentroid = foot - plane.centroid; // in the plane
-  const Vec3 t1 = plane.normal.unitOrthogonal(), t2 = plane.normal.cross(t1); // as fitQuadric's
+  const auto [t1, t2] = tangents(plane.normal);
   const double u = fromCentroid.dot(t1) / width, v = fromCentroid.dot(t2) / width;
   Eigen::Matrix<double, 6, 1> basis;
   basis << 1, u, v, u * u, u * v, v * v;

@@ -52,7 +52,7 @@ private:
     Plane plane;
     Eigen::Matrix<double, 6, 1> quadric = Eigen::Matrix<double, 6, 1>::Zero(); // height(u, v), in widths
     double width = 0; // 0: no plane fits at any scale
-    bool surrounded = false; // its points lie all around its centre (no rim beside it)
+    bool surrounded = false; // it leans, but its points lie all around its centre (no rim beside it)
   };
   struct Neighbourhood // the points within the cutoff of a centre: offsets from it, weights
   {

@@ -128,8 +128,7 @@ Status pointFields(const std::shared_ptr<const PointSource>& points, const std::
   {
     computePointDistance(*points, lattice, SignedDistanceSettings(), values.data());
   }
-  return pointWrapFields(DistanceGrid(lattice, std::move(values)), points, spacing, settings, convert::contour,
-    fields, polygons);
+  return pointWrapFields(DistanceGrid(lattice, std::move(values)), points, spacing, settings, fields, polygons);
 }
 
 // The points a wrap takes of its target: beside its polygons, the points none of them uses; else all.
@@ -629,7 +628,7 @@ bool vtkShrinkWrapFilter::FieldsOf(
         << (result.isSigned ? "." : ": the wrap stops at the distance it reaches from outside and inside alike."));
     }
   }
-  const Status status = wrapFields(std::move(grid), isSigned, exact, settings, convert::contour, fields);
+  const Status status = wrapFields(std::move(grid), isSigned, exact, settings, fields);
   if (!status)
   {
     vtkErrorMacro("Cannot wrap: " << status.message() << ".");

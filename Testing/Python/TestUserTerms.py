@@ -42,8 +42,13 @@ check(values[0] is not None and values[1] is not None and values[0].shape == val
       % len(values[0]))
 wraps = [fetched(ShrinkWrap(Input=source, Resolution=48)) for source in (tets, surface)]
 points = [vtk_to_numpy(w.GetPoints().GetData()) for w in wraps]
-check(points[0].shape == points[1].shape and points[0].shape[0] > 100 and np.array_equal(points[0], points[1]),
-      "Shrink Wrap: the tetrahedra's wrap equals their extracted surface's (%d vertices)" % points[0].shape[0])
+# Equal up to rounding: the two surfaces list their triangles in another order, so closest points on
+# the target (the gap closing's sites come from them) can differ in the last bits.
+size = np.ptp(points[1], axis=0).max() if points[1].size else 0
+check(points[0].shape == points[1].shape and points[0].shape[0] > 100 and
+      np.allclose(points[0], points[1], rtol=0, atol=1e-9 * size),
+      "Shrink Wrap: the tetrahedra's wrap equals their extracted surface's to 1e-9 of its size (%d vertices)"
+      % points[0].shape[0])
 
 # The menu offers both filters for a dataset with cells.
 for name, creator in (("Mesh Signed Distance", MeshSignedDistance), ("Shrink Wrap", ShrinkWrap)):

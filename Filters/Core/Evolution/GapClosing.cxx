@@ -1,37 +1,265 @@
 #include "GapClosing.h"
 
-#include "SignedDistance.h"
-#include "SurfaceMesh.h"
+#include "ClosestPointSweep.h"
+#include "DistanceSource.h"
+#include "Parallel.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace shrinkwrap
 {
 
-Status closingField(const DistanceGrid& field, double radius, const Contour& contour, DistanceGrid& closed)
+namespace
 {
-  if (!(radius >= 0.25 * field.lattice().spacing.minCoeff()))
+std::array<int, 6> wholeGrid(const GridLattice& lattice)
+{
+  return { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+}
+
+// Calls f(m) for each face neighbour m of node n.
+template <typename F>
+void forEachNeighbour(const GridLattice& lattice, std::int64_t n, F&& f)
+{
+  const std::array<int, 3> c = lattice.coordinates(n);
+  const std::int64_t step[3] = { 1, lattice.dims[0], static_cast<std::int64_t>(lattice.dims[0]) * lattice.dims[1] };
+  for (int a = 0; a < 3; ++a)
+  {
+    if (c[a] > 0)
+      f(n - step[a]);
+    if (c[a] < lattice.dims[a] - 1)
+      f(n + step[a]);
+  }
+}
+
+// The nodes of D, and with `fillCavities` those of the complement that the grid's border does not
+// reach through it.
+std::vector<char> dilationNodes(const DistanceGrid& field, double radius, bool fillCavities)
+{
+  const std::vector<float>& d = field.values();
+  std::vector<char> inside(d.size());
+  for (std::size_t n = 0; n < d.size(); ++n)
+  {
+    inside[n] = d[n] < radius;
+  }
+  if (!fillCavities)
+  {
+    return inside;
+  }
+  std::vector<char> reached(d.size(), 0);
+  std::vector<std::int64_t> queue;
+  const auto visit = [&](std::int64_t n) {
+    if (!inside[n] && !reached[n])
+    {
+      reached[n] = 1;
+      queue.push_back(n);
+    }
+  };
+  forEachFaceNode(field.lattice(), wholeGrid(field.lattice()), visit);
+  for (std::size_t q = 0; q < queue.size(); ++q)
+  {
+    forEachNeighbour(field.lattice(), queue[q], visit);
+  }
+  for (std::size_t n = 0; n < d.size(); ++n)
+  {
+    inside[n] = !reached[n];
+  }
+  return inside;
+}
+
+// The nodes within a cell of D's boundary by their distance to the target (every node with a
+// neighbour across it), but for those of filled cavities.
+std::vector<std::int64_t> nodesNearBoundary(const DistanceGrid& field, double r, const std::vector<char>& inside)
+{
+  const double width = field.lattice().spacing.maxCoeff();
+  const std::vector<float>& d = field.values();
+  std::vector<std::int64_t> nodes;
+  for (std::size_t n = 0; n < d.size(); ++n)
+  {
+    if (std::abs(d[n] - r) < width && (d[n] < r || !inside[n]))
+    {
+      nodes.push_back(static_cast<std::int64_t>(n));
+    }
+  }
+  return nodes;
+}
+
+// A point of D's boundary, with D's outward normal there.
+struct Front
+{
+  Vec3 point, normal;
+};
+
+// From node n, r beyond the target's closest point p on the line from p through the node (on the
+// node's side of the target); without the target, down the grid's gradient.
+bool projectOnFront(const DistanceGrid& field, const DistanceSource* target, double r, std::int64_t n, Front& front)
+{
+  const GridLattice& lattice = field.lattice();
+  const std::array<int, 3> c = lattice.coordinates(n);
+  const Vec3 x = lattice.position(c);
+  const double d = field.values()[n];
+  if (target)
+  {
+    const double reach = std::abs(d) + 2 * lattice.spacing.maxCoeff();
+    const SourcePoint p = target->closestPoint(x, reach * reach);
+    const double distance = std::sqrt(p.squaredDistance);
+    if (!p.found || !(distance > 0))
+    {
+      return false;
+    }
+    front.normal = (d < 0 ? -1.0 : 1.0) / distance * (x - p.point);
+    front.point = p.point + r * front.normal;
+    return true;
+  }
+  Vec3 gradient;
+  for (int a = 0; a < 3; ++a)
+  {
+    std::array<int, 3> lo = c, hi = c;
+    lo[a] = std::max(0, c[a] - 1);
+    hi[a] = std::min(lattice.dims[a] - 1, c[a] + 1);
+    gradient[a] = (field.values()[lattice.index(hi[0], hi[1], hi[2])] - field.values()[lattice.index(lo[0], lo[1], lo[2])]) /
+      ((hi[a] - lo[a]) * lattice.spacing[a]);
+  }
+  const double norm = gradient.norm();
+  front.normal = gradient / norm;
+  front.point = x - (d - r) * front.normal;
+  return norm > 0;
+}
+
+// Whether the front point is on D's boundary: no other part of the target within r of it. Where
+// one is, the point lies inside D, past a crease where two fronts meet; projected in turn onto
+// each front (r from the nearest target point) it moves onto the crease. Without the target, the
+// grid's value there.
+bool onBoundary(const DistanceGrid& field, const DistanceSource* target, double r, Front& front)
+{
+  const double cell = field.lattice().spacing.maxCoeff();
+  if (!target)
+  {
+    return field.sample(front.point).value > r - 0.05 * cell;
+  }
+  for (int turn = 0; turn < 8; ++turn)
+  {
+    const SourcePoint nearer = target->closestPoint(front.point, r * r);
+    const double distance = std::sqrt(nearer.squaredDistance);
+    if (!nearer.found || distance > r - 1e-6 * cell)
+    {
+      return true;
+    }
+    if (!(distance > 0) || field.sample(front.point).value < 0)
+    {
+      return false; // inside the target (its grid's sign survives a dirty target)
+    }
+    front.normal = (front.point - nearer.point) / distance;
+    front.point = nearer.point + r * front.normal;
+  }
+  return false;
+}
+
+// Whether the front faces a filled cavity: the first node off D out along its normal, within two
+// cells, is in one (or there is none).
+bool facesCavity(const DistanceGrid& field, double r, const std::vector<char>& inside, const Front& front)
+{
+  const GridLattice& lattice = field.lattice();
+  const double cell = lattice.spacing.maxCoeff();
+  for (int k = 1; k <= 4; ++k)
+  {
+    const Vec3 z = front.point + 0.5 * k * cell * front.normal;
+    std::array<int, 3> c;
+    for (int a = 0; a < 3; ++a)
+    {
+      c[a] = static_cast<int>(std::clamp(std::round((z[a] - lattice.origin[a]) / lattice.spacing[a]), 0.0, lattice.dims[a] - 1.0));
+    }
+    const std::int64_t n = lattice.index(c[0], c[1], c[2]);
+    if (field.values()[n] >= r)
+    {
+      return inside[n];
+    }
+  }
+  return true;
+}
+
+// A point of D's boundary near node n, if there is one. From a node outside D it is the node's nearest
+// boundary point (every point of the target is at least d - (d - r) from it); from a node inside,
+// where no other part of the target comes nearer, its nearest too (e = r - d: the closing's distance
+// is d); else on a crease.
+bool boundaryPoint(const DistanceGrid& field, const DistanceSource* target, double r, const std::vector<char>& inside,
+  bool fillCavities, std::int64_t n, Vec3& site)
+{
+  const double d = field.values()[n];
+  const bool outside = d >= r;
+  Front front;
+  if ((outside && inside[n]) || !projectOnFront(field, target, r, n, front)) // a filled cavity's node
+  {
+    return false;
+  }
+  site = front.point;
+  if (outside)
+  {
+    return true;
+  }
+  const bool found = onBoundary(field, target, r, front) && !(fillCavities && facesCavity(field, r, inside, front));
+  site = front.point;
+  return found;
+}
+} // namespace
+
+Status closingField(const DistanceGrid& field, double radius, const DistanceSource* target, bool fillCavities,
+  DistanceGrid& closed)
+{
+  const GridLattice& lattice = field.lattice();
+  if (!(radius >= 0.25 * lattice.spacing.minCoeff()))
   {
     closed = field;
     return {};
   }
-  const TriangleSurface dilated = contour(field, radius);
-  SurfaceMesh check;
-  if (dilated.triangles.empty() || !SurfaceMesh::build(dilated.points, dilated.triangles, check))
+  const std::vector<char> inside = dilationNodes(field, radius, fillCavities);
+  bool border = false;
+  forEachFaceNode(lattice, wholeGrid(lattice), [&](std::int64_t n) { border = border || inside[n]; });
+  if (border || std::find(inside.begin(), inside.end(), 1) == inside.end())
   {
     return Status::failure("the target dilated by half the Gap Size is empty or reaches the border of the "
                            "distance field; lower the Gap Size, or enlarge the field");
   }
-  std::vector<float> distance(field.lattice().nodeCount());
-  const SignedDistanceResult result =
-    computeSignedDistance(dilated, field.lattice(), SignedDistanceSettings(), distance.data());
-  if (!result.isSigned)
+  // The sites: boundary points from the nodes near it, one each; the closest-point passes spread them.
+  const std::vector<std::int64_t> near = nodesNearBoundary(field, radius, inside);
+  std::vector<Vec3> sites(near.size());
+  std::vector<char> found(near.size());
+  parallelFor(0, static_cast<long long>(near.size()), 0, [&](long long b, long long e) {
+    for (long long s = b; s < e; ++s)
+    {
+      found[s] = boundaryPoint(field, target, radius, inside, fillCavities, near[s], sites[s]);
+    }
+  });
+  std::vector<std::int32_t> siteOfNode(lattice.nodeCount(), -1);
+  for (std::size_t s = 0; s < near.size(); ++s)
   {
-    return Status::failure("the distance to the target dilated by half the Gap Size has no sign");
+    siteOfNode[near[s]] = found[s] ? static_cast<std::int32_t>(s) : -1;
   }
-  for (float& d : distance)
-  {
-    d += static_cast<float>(radius);
-  }
-  closed = DistanceGrid(field.lattice(), std::move(distance));
+  std::vector<float> e(lattice.nodeCount());
+  sweepClosestPoints(lattice, sites, siteOfNode.data(), e.data(), Progress());
+  // Inside D, e >= r - d (the ball of radius r - d about a node lies in D), with equality where no
+  // other part of the target is nearer than r to the node's own front point. The passes find a site
+  // near the nearest boundary point, not always on it: where they leave e above r - d outside the
+  // target, the node's own boundary point decides (its distance bounds e from above, and equals
+  // r - d where it is clear). Inside the target, where the wrap never goes, r - e only bounds d.
+  std::vector<float> values(field.values());
+  const float r = static_cast<float>(radius);
+  const float hair = static_cast<float>(1e-3 * lattice.spacing.maxCoeff());
+  parallelFor(0, lattice.nodeCount(), 0, [&](long long b, long long end) {
+    for (long long n = b; n < end; ++n)
+    {
+      if (!inside[n])
+        continue;
+      double nearest = e[n];
+      Vec3 site;
+      if (values[n] >= 0 && r - e[n] < values[n] - hair && boundaryPoint(field, target, radius, inside, fillCavities, n, site))
+      {
+        nearest = std::min(nearest, (site - lattice.position(lattice.coordinates(n))).norm());
+      }
+      values[n] = std::min(values[n], static_cast<float>(radius - nearest));
+    }
+  });
+  closed = DistanceGrid(lattice, std::move(values));
   return {};
 }
 

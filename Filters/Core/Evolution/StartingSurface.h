@@ -6,7 +6,6 @@
 
 #include "DistanceGrid.h"
 #include "EdgeFlips.h"
-#include "GapClosing.h"
 #include "Status.h"
 #include "SurfaceMesh.h"
 #include "TriangleSurface.h"
@@ -16,6 +15,9 @@
 
 namespace shrinkwrap
 {
+
+// Marching cubes of a distance field at one value (the filters give VTK's Flying Edges).
+using Contour = std::function<TriangleSurface(const DistanceGrid& field, double value)>;
 
 enum class StartShape
 {

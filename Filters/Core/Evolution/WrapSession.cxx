@@ -1,6 +1,6 @@
 #include "WrapSession.h"
 
-#include "Components.h"
+#include "GapClosing.h"
 #include "Parallel.h"
 #include "PointSurface.h"
 #include "UnionSource.h"
@@ -117,10 +117,10 @@ GridPlacement WrapSettings::fieldPlacement(const Box& targetBox, bool givenStart
 }
 
 Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const DistanceSource> exact,
-  const WrapSettings& settings, const Contour& contour, WrapFields& fields)
+  const WrapSettings& settings, WrapFields& fields)
 {
   DistanceGrid closed;
-  if (Status status = closingField(grid, 0.5 * settings.gapSize, contour, closed); !status)
+  if (Status status = closingField(grid, 0.5 * settings.gapSize, exact.get(), false, closed); !status)
   {
     return status;
   }
@@ -200,18 +200,17 @@ WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacin
 }
 
 Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> points, double spacing,
-  const WrapSettings& settings, const Contour& contour, WrapFields& fields, std::shared_ptr<const DistanceSource> polygons)
+  const WrapSettings& settings, WrapFields& fields, std::shared_ptr<const DistanceSource> polygons)
 {
-  // Points sample a sheet: the union of balls around them is a shell, and a closing that eroded it
-  // from the inside as well would open every gap between the points again. Without the walls of its
-  // cavities it is a solid, eroded from outside only.
-  const Contour outerContour = [&contour](const DistanceGrid& field, double value) {
-    TriangleSurface surface = contour(field, value);
-    removeCavities(surface);
-    return surface;
-  };
+  // The grid is the distance to the points and the polygons: the closing's sites come from the nearer.
+  std::shared_ptr<const DistanceSource> nearest = points;
+  if (polygons)
+  {
+    nearest = std::make_shared<const UnionSource>(std::vector<std::shared_ptr<const DistanceSource>>{ polygons, points });
+  }
+  // Cavities filled: the union of balls around points that sample a sheet is a shell.
   DistanceGrid closed;
-  if (Status status = closingField(grid, 0.5 * settings.gapSize, outerContour, closed); !status)
+  if (Status status = closingField(grid, 0.5 * settings.gapSize, nearest.get(), true, closed); !status)
   {
     return status;
   }
@@ -222,19 +221,17 @@ Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> poi
   {
     surface = std::make_shared<const PointSurface>(points, kFitWidthPerSpacing * spacing);
   }
-  std::shared_ptr<const DistanceSource> exact = points;
   if (polygons)
   {
     surface = surface ? std::make_shared<const UnionSource>(std::vector<std::shared_ptr<const DistanceSource>>{ polygons, surface })
                       : polygons;
-    exact = std::make_shared<const UnionSource>(std::vector<std::shared_ptr<const DistanceSource>>{ polygons, points });
   }
   fields.driving = TargetDistance(std::move(closed), settings.exactNearTarget ? surface : nullptr, settings.exactBand, true);
   // The wrap lies within half the gap of a point (inside the union of balls the closing erodes): a band
   // that wide makes the Distance array exact at every vertex.
   const double cell = grid.lattice().spacing.maxCoeff();
   const double band = std::max(settings.exactBand, 0.5 * settings.gapSize / cell + 1);
-  fields.target = TargetDistance(std::move(grid), settings.exactNearTarget ? exact : nullptr, band, false);
+  fields.target = TargetDistance(std::move(grid), settings.exactNearTarget ? nearest : nullptr, band, false);
   return {};
 }
 

@@ -77,7 +77,7 @@ struct WrapFields
 // The fields of a wrap from the target's grid (signed or not) and, when `exact` is given, the target
 // itself for the near field; `settings` resolved.
 Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const DistanceSource> exact,
-  const WrapSettings& settings, const Contour& contour, WrapFields& fields);
+  const WrapSettings& settings, WrapFields& fields);
 // Why points cannot be wrapped, if they cannot: they coincide, or lie on a line or in a plane (within
 // 1e-6 of their extent), so they enclose nothing. (checkPoints first: finite, not empty.)
 Status checkPointsEnclose(const std::vector<Vec3>& points);
@@ -93,8 +93,7 @@ WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacin
 // Geometry "Polygons and Points"): `grid` is then the distance to both, and near them the wrap lands
 // on the nearer of the polygons and the points' fitted surface.
 Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> points, double spacing,
-  const WrapSettings& settings, const Contour& contour, WrapFields& fields,
-  std::shared_ptr<const DistanceSource> polygons = nullptr);
+  const WrapSettings& settings, WrapFields& fields, std::shared_ptr<const DistanceSource> polygons = nullptr);
 
 class WrapSession
 {

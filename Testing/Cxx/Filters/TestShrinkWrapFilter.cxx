@@ -408,7 +408,7 @@ void splitSurfaceAsInitialSurface(vtkPolyData* box)
   std::shared_ptr<const TriangleSource> exact;
   signedDistanceGrid(soup, convert::surfaceBounds({ box }), placement, {}, field, result, {}, &exact);
   WrapFields fields;
-  SW_CHECK(wrapFields(field, true, exact, settings, convert::contour, fields), "the wrap's fields");
+  SW_CHECK(wrapFields(field, true, exact, settings, fields), "the wrap's fields");
   std::unique_ptr<WrapSession> session;
   SW_CHECK(WrapSession::create(fields, convert::boundsOf(box), testing::meshOf(sphere), settings, session), "a session");
   if (!session)

@@ -107,7 +107,9 @@ int TestPointDistance(int, char*[])
   check("sphere, 1500 points", random(1500, 2, [&](std::mt19937& r) {
     return Vec3(g(r), g(r), g(r)).normalized();
   }), 40);
-  check("line, 50 points", random(50, 3, [&](std::mt19937& r) { return Vec3(1, 2, 3) * u(r); }), 24);
+  // -> Vec3: deduced, the return type would be Eigen's product expression, which refers to the
+  // temporary Vec3(1, 2, 3) after the lambda has returned (AddressSanitizer: stack-use-after-scope).
+  check("line, 50 points", random(50, 3, [&](std::mt19937& r) -> Vec3 { return Vec3(1, 2, 3) * u(r); }), 24);
   check("plane, 300 points", random(300, 4, [&](std::mt19937& r) { return Vec3(u(r), u(r), 0.25); }), 32);
   check("two points", { Vec3(-1, 0, 0), Vec3(1, 0.2, 0) }, 24);
   return testing::finish("TestPointDistance");

@@ -45,11 +45,11 @@ struct Box
     const Vec3 s = this->size();
     return s.x() * s.y() + s.y() * s.z() + s.z() * s.x();
   }
-  // Squared distance from p to the box (0 inside).
   bool overlaps(const Box& b) const
   {
     return (this->min.array() <= b.max.array()).all() && (b.min.array() <= this->max.array()).all();
   }
+  // Squared distance from p to the box (0 inside).
   double squaredDistance(const Vec3& p) const
   {
     const Vec3 d = (this->min - p).cwiseMax(p - this->max).cwiseMax(0.0);

@@ -17,7 +17,13 @@
 namespace shrinkwrap
 {
 
-// body(b, e) over chunks [b, e) of [first, last); grain 0 lets vtkSMPTools choose the chunk size.
+// Items of a few dozen operations each (a vertex's or a triangle's geometry) pay for threads only from
+// about this many per chunk: VTK 9.2's STDThread backend starts a loop's threads anew each time (tens of
+// microseconds each on a virtual machine), so a loop over a few thousand of them is faster on one.
+constexpr vtkIdType kCheapGrain = 16384;
+
+// body(b, e) over chunks [b, e) of [first, last); grain 0 lets vtkSMPTools choose the chunk size, and
+// a grain of at least last - first runs body on the calling thread.
 template <typename Body>
 void parallelFor(vtkIdType first, vtkIdType last, vtkIdType grain, Body&& body)
 {

@@ -81,11 +81,16 @@ AABBTree::AABBTree(const TriangleSoup& soup, const AABBTreeSettings& settings)
   this->buildInParallel(prims, settings);
   this->Order.resize(prims.size());
   this->Corners.resize(prims.size());
+  this->Planes.resize(prims.size());
   for (std::size_t k = 0; k < prims.size(); ++k)
   {
     const auto& tri = soup.triangles[prims[k].id];
     this->Order[k] = prims[k].id;
     this->Corners[k] = { soup.points[tri[0]], soup.points[tri[1]], soup.points[tri[2]] };
+    const auto& c = this->Corners[k];
+    const Vec3 n = (c[1] - c[0]).cross(c[2] - c[0]);
+    const double length = n.norm();
+    this->Planes[k] = length > 0 && std::isfinite(length) ? Plane{ n / length, n.dot(c[0]) / length } : Plane{};
   }
 }
 
@@ -274,20 +279,33 @@ ClosestHit AABBTree::closestPoint(const Vec3& p, double maxSquaredDistance) cons
   {
     return hit;
   }
-  int stack[2 * kMaxDepth + 2];
+  // Nodes wait with their boxes' distances, computed once, when their parent was opened.
+  struct Pending
+  {
+    int node;
+    double squaredDistance;
+  };
+  Pending stack[2 * kMaxDepth + 2];
   int top = 0;
-  stack[top++] = 0;
+  stack[top++] = { 0, this->Nodes.front().box.squaredDistance(p) };
   while (top > 0)
   {
-    const Node& node = this->Nodes[stack[--top]];
-    if (node.box.squaredDistance(p) >= hit.squaredDistance)
+    const Pending pending = stack[--top];
+    if (pending.squaredDistance >= hit.squaredDistance)
     {
       continue;
     }
+    const Node& node = this->Nodes[pending.node];
     if (node.count > 0)
     {
       for (int k = node.first; k < node.first + node.count; ++k)
       {
+        // No point of a triangle is nearer than its plane.
+        const double h = this->Planes[k].normal.dot(p) - this->Planes[k].offset;
+        if (h * h >= hit.squaredDistance)
+        {
+          continue;
+        }
         const auto& c = this->Corners[k];
         const TrianglePoint tp = closestPointOnTriangle(p, c[0], c[1], c[2]);
         const double d2 = (tp.point - p).squaredNorm();
@@ -303,13 +321,13 @@ ClosestHit AABBTree::closestPoint(const Vec3& p, double maxSquaredDistance) cons
     const double dl = this->Nodes[l].box.squaredDistance(p), dr = this->Nodes[r].box.squaredDistance(p);
     if (dl <= dr)
     {
-      stack[top++] = r;
-      stack[top++] = l;
+      stack[top++] = { r, dr };
+      stack[top++] = { l, dl };
     }
     else
     {
-      stack[top++] = l;
-      stack[top++] = r;
+      stack[top++] = { l, dl };
+      stack[top++] = { r, dr };
     }
   }
   return hit;

@@ -76,6 +76,12 @@ private:
   std::vector<Node> Nodes;
   std::vector<int> Order;                    // soup triangle index per leaf slot
   std::vector<std::array<Vec3, 3>> Corners;  // triangle corners in leaf order, for locality
+  struct Plane // n . x = offset, |n| = 1 (zero for a degenerate triangle: never skipped)
+  {
+    Vec3 normal = Vec3::Zero();
+    double offset = 0;
+  };
+  std::vector<Plane> Planes; // the triangles' planes in leaf order, a cheap bound before the closest point
 };
 
 } // namespace shrinkwrap

@@ -196,7 +196,8 @@ bool Evolver::solve(const Controls& c, const std::vector<Vec3>& vt, std::vector<
   Eigen::MatrixXd solution(nv, 3);
   std::array<bool, 3> solved{};
   const auto& matrix = L.laplacian.matrix();
-  parallelFor(0, 3, 1, [&](int b, int e) {
+  // A column's solve on a few thousand vertices is shorter than starting a thread (Parallel.h).
+  parallelFor(0, 3, nv < kCheapGrain ? 3 : 1, [&](int b, int e) {
     for (int k = b; k < e; ++k)
     {
       solved[k] = symmetric

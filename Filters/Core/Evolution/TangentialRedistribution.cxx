@@ -21,7 +21,7 @@ void angleVelocities(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const 
 {
   const int nv = mesh.vertexCount();
   velocity.resize(nv);
-  parallelFor(0, nv, [&](int b, int e) {
+  parallelFor(0, nv, kCheapGrain, [&](int b, int e) {
     for (int i = b; i < e; ++i)
     {
       Vec3 sum = Vec3::Zero();

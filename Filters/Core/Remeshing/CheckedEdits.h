@@ -1,8 +1,9 @@
 // A round of edits checked once (issue #10's speed). Edits rarely make the surface cross itself, and
-// guarding each one (CrossingGuard) costs more than checking the whole surface once: the edits are made
-// unguarded on a copy first. Where that copy crosses itself, they are made again with only the edits
-// near the crossings guarded (a second time also near the crossings the first redo made), and at last,
-// if the surface still crosses, with every edit guarded.
+// guarding each one (CrossingGuard) costs more than checking once what they made: the edits are made
+// unguarded on a copy first, and the copy's new triangles are checked (the surface did not cross itself
+// before). Where they cross, the edits are made again with only those near the crossings guarded (a
+// second time also near the crossings the first redo made), and at last, if the surface still
+// crosses, with every edit guarded.
 #ifndef ShrinkWrap_CheckedEdits_h
 #define ShrinkWrap_CheckedEdits_h
 
@@ -28,7 +29,8 @@ void editCheckedOnce(SurfaceMesh& mesh, double reach, Edit&& edit)
     SurfaceMesh trial = mesh;
     const bool changed = edit(trial, round > 0, near);
     const SelfIntersections found =
-      changed ? findSelfIntersections(trial.points(), trial.triangles()) : SelfIntersections{};
+      changed ? findNewSelfIntersections(mesh, trial.points(), trial.triangles())
+              : SelfIntersections{};
     if (found.pairs == 0)
     {
       mesh = std::move(trial);

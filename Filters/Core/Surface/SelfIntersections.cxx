@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <mutex>
+#include <cstring>
 #include <optional>
 
 namespace shrinkwrap
@@ -130,7 +131,7 @@ std::vector<std::pair<int, int>> crossingPairs(
   const TriangleGrid& grid, const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
 {
   std::vector<Facet> facets(triangles.size());
-  parallelFor(0, static_cast<vtkIdType>(triangles.size()), [&](vtkIdType b, vtkIdType e) {
+  parallelFor(0, static_cast<vtkIdType>(triangles.size()), kCheapGrain, [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType t = b; t < e; ++t)
     {
       facets[t] = facetOf(x, triangles[t]);
@@ -152,24 +153,125 @@ std::vector<std::pair<int, int>> crossingPairs(
   });
   return pairs;
 }
-} // namespace
 
-SelfIntersections findSelfIntersections(
-  const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+// The pairs that cross at x with a triangle in `changed` (sorted), each once.
+std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid, const std::vector<Vec3>& x,
+  const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& changed)
+{
+  const double margin = roundingMargin(grid);
+  std::vector<std::pair<int, int>> pairs;
+  for (int s : changed)
+  {
+    const Facet fs = facetOf(x, triangles[s]);
+    grid.forEachNear(boxOf(fs.p), [&](int t) {
+      // A pair of two changed triangles is met twice; it is kept once.
+      const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
+      if (t != s && !counted && crosses(fs, facetOf(x, triangles[t]), margin))
+      {
+        pairs.emplace_back(s, t);
+      }
+    });
+  }
+  return pairs;
+}
+
+// Few changed triangles (a step's touch-ups, a round of edits) are tested alone; many, all pairs in
+// parallel.
+std::vector<std::pair<int, int>> crossingsOf(const TriangleGrid& grid, const std::vector<Vec3>& x,
+  const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& changed)
+{
+  return 8 * changed.size() < triangles.size() ? crossingsAmong(grid, x, triangles, changed)
+                                               : crossingPairs(grid, x, triangles);
+}
+
+// For each of `points`, the vertex of `mesh` at exactly the same position (-1: none), through a sorted
+// table of the positions' bits.
+std::vector<int> samePositions(const SurfaceMesh& mesh, const std::vector<Vec3>& points)
+{
+  auto hash = [](const Vec3& p) {
+    std::uint64_t h = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      std::uint64_t bits;
+      std::memcpy(&bits, p.data() + k, sizeof bits);
+      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+      h ^= h >> 29;
+    }
+    return h;
+  };
+  std::vector<std::pair<std::uint64_t, int>> table(mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    table[v] = { hash(mesh.points()[v]), v };
+  }
+  std::sort(table.begin(), table.end());
+  std::vector<int> same(points.size(), -1);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const std::uint64_t h = hash(points[i]);
+    for (auto it = std::lower_bound(table.begin(), table.end(), std::make_pair(h, -1));
+         it != table.end() && it->first == h; ++it)
+    {
+      if (mesh.points()[it->second] == points[i])
+      {
+        same[i] = it->second;
+        break;
+      }
+    }
+  }
+  return same;
+}
+
+// Whether `mesh` has the triangle (a, b, c), in that orientation.
+bool hasTriangle(const SurfaceMesh& mesh, int a, int b, int c)
+{
+  const int p = a < 0 || b < 0 || c < 0 ? -1 : mesh.ringEntry(a, b);
+  return p >= 0 && mesh.ring(mesh.next(a, p)) == c;
+}
+
+SelfIntersections fromPairs(std::size_t triangleCount, const std::vector<std::pair<int, int>>& pairs)
 {
   SelfIntersections found;
-  found.intersecting.assign(triangles.size(), 0);
-  const TriangleGrid grid(x, triangles);
-  if (triangles.size() < 2 || grid.empty())
-  {
-    return found;
-  }
-  for (const auto& st : crossingPairs(grid, x, triangles))
+  found.intersecting.assign(triangleCount, 0);
+  for (const auto& st : pairs)
   {
     ++found.pairs;
     found.intersecting[st.first] = found.intersecting[st.second] = 1;
   }
   return found;
+}
+} // namespace
+
+SelfIntersections findSelfIntersections(
+  const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+{
+  const TriangleGrid grid(x, triangles);
+  if (triangles.size() < 2 || grid.empty())
+  {
+    return fromPairs(triangles.size(), {});
+  }
+  return fromPairs(triangles.size(), crossingPairs(grid, x, triangles));
+}
+
+SelfIntersections findNewSelfIntersections(
+  const SurfaceMesh& before, const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+{
+  const std::vector<int> same = samePositions(before, x);
+  std::vector<int> made;
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+  {
+    const auto& v = triangles[t];
+    if (!hasTriangle(before, same[v[0]], same[v[1]], same[v[2]]))
+    {
+      made.push_back(t);
+    }
+  }
+  const TriangleGrid grid(x, triangles);
+  if (made.empty() || triangles.size() < 2 || grid.empty())
+  {
+    return fromPairs(triangles.size(), {});
+  }
+  return fromPairs(triangles.size(), crossingsOf(grid, x, triangles, made));
 }
 
 std::vector<Box> boxesAround(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
@@ -373,26 +475,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   auto isNew = [&](int s, int t) {
     return !crosses(facetOf(previous, triangles[s]), facetOf(previous, triangles[t]), margin);
   };
-  // The crossings of the triangles in `changed` (sorted) with any other.
-  auto crossingsOf = [&](const std::vector<int>& changed) {
-    std::vector<std::pair<int, int>> pairs;
-    for (int s : changed)
-    {
-      const Facet fs = facetOf(next, triangles[s]);
-      grid.forEachNear(boxOf(fs.p), [&](int t) {
-        // A pair of two changed triangles is met twice; it is kept once.
-        const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
-        if (t != s && !counted && crosses(fs, facetOf(next, triangles[t]), margin))
-        {
-          pairs.emplace_back(s, t);
-        }
-      });
-    }
-    return pairs;
-  };
-  // Few moving triangles (a step's touch-ups) are tested alone; all of them, pair by pair in parallel.
-  std::vector<std::pair<int, int>> found =
-    8 * moving.size() < triangles.size() ? crossingsOf(moving) : crossingPairs(grid, next, triangles);
+  std::vector<std::pair<int, int>> found = crossingsOf(grid, next, triangles, moving);
   std::vector<std::vector<int>> trianglesAt; // per vertex, built when a first vertex is held
   int held = 0;
   while (!found.empty())
@@ -440,7 +523,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
     }
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-    found = crossingsOf(changed);
+    found = crossingsAmong(grid, next, triangles, changed);
   }
   return held;
 }

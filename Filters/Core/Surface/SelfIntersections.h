@@ -7,6 +7,7 @@
 #define ShrinkWrap_SelfIntersections_h
 
 #include "Box.h"
+#include "SurfaceMesh.h"
 #include "TriangleGrid.h"
 #include "Vec3.h"
 
@@ -27,6 +28,13 @@ struct SelfIntersections
 
 SelfIntersections findSelfIntersections(
   const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
+
+// The crossings that edits made on a surface that did not cross itself (`before`): those of the
+// triangles of (points, triangles) that `before` does not have (the same corners at the same positions,
+// in any numbering; a split's halves count as made) with any other. Two triangles the edits left as
+// they were did not cross before and do not now.
+SelfIntersections findNewSelfIntersections(
+  const SurfaceMesh& before, const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
 
 // Fronts stop where they meet: the vertices of each pair of triangles that crosses at `next` but did
 // not at `previous` (the same triangles) go back to their `previous` positions, again until no new

@@ -48,7 +48,7 @@ void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& x, Surfac
   g.weight.resize(mesh.ringEnd(nv - 1));
   g.curvature.resize(nv);
   std::vector<TriangleTerms> terms(nt);
-  parallelFor(0, nt, [&](int b, int e) {
+  parallelFor(0, nt, kCheapGrain, [&](int b, int e) {
     for (int t = b; t < e; ++t)
     {
       const auto& v = tris[t];
@@ -64,7 +64,7 @@ void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& x, Surfac
       }
     }
   });
-  parallelFor(0, nv, [&](int b, int e) {
+  parallelFor(0, nv, kCheapGrain, [&](int b, int e) {
     for (int i = b; i < e; ++i)
     {
       double coVolume = 0;
@@ -125,9 +125,9 @@ SmallestAngle smallestAngle(const SurfaceMesh& mesh, const std::vector<Vec3>& x)
     double sine = 2;
     int triangle = -1;
   };
-  std::vector<Part> parts(std::max(1, mesh.triangleCount() / 4096 + 1));
+  std::vector<Part> parts(std::max(1, mesh.triangleCount() / static_cast<int>(kCheapGrain) + 1));
   const int n = mesh.triangleCount(), chunk = (n + static_cast<int>(parts.size()) - 1) / static_cast<int>(parts.size());
-  parallelFor(0, static_cast<int>(parts.size()), [&](int b, int e) {
+  parallelFor(0, static_cast<int>(parts.size()), 1, [&](int b, int e) {
     for (int p = b; p < e; ++p)
     {
       for (int t = p * chunk; t < std::min(n, (p + 1) * chunk); ++t)

@@ -437,11 +437,8 @@ Status SurfaceMesh::commit()
     return {};
   }
   std::unique_ptr<EditState> edits = std::move(this->Edits);
-  if (edits->removals > 0)
-  {
-    this->compact(edits->removedVertex);
-  }
-  Status status = this->connect();
+  Renumbering renumbered = this->compact(edits->removedVertex);
+  Status status = this->reconnect(edits->touched, renumbered);
   if (!status)
   {
     this->Triangles = std::move(edits->committedTriangles);
@@ -453,20 +450,21 @@ Status SurfaceMesh::commit()
 }
 
 // Drops removed vertices and triangles; the others keep their order.
-void SurfaceMesh::compact(const std::vector<char>& removedVertex)
+SurfaceMesh::Renumbering SurfaceMesh::compact(const std::vector<char>& removedVertex)
 {
   const int nv = static_cast<int>(this->Points.size());
-  std::vector<int> index(nv, -1);
+  Renumbering r;
+  r.vertex.assign(nv, -1);
   int kept = 0;
   for (int v = 0; v < nv; ++v)
   {
     if (!removedVertex[v])
     {
-      index[v] = kept++;
-      this->Points[index[v]] = this->Points[v];
+      r.vertex[v] = kept++;
+      this->Points[r.vertex[v]] = this->Points[v];
       for (auto& entry : this->Data)
       {
-        entry.second[index[v]] = entry.second[v];
+        entry.second[r.vertex[v]] = entry.second[v];
       }
     }
   }
@@ -475,16 +473,107 @@ void SurfaceMesh::compact(const std::vector<char>& removedVertex)
   {
     entry.second.resize(kept);
   }
-  std::vector<std::array<int, 3>> triangles;
-  triangles.reserve(this->Triangles.size());
-  for (const auto& t : this->Triangles)
+  r.triangle.assign(this->Triangles.size(), -1);
+  int t = 0;
+  for (std::size_t u = 0; u < this->Triangles.size(); ++u)
   {
-    if (t[0] >= 0)
+    const auto& old = this->Triangles[u];
+    if (old[0] >= 0)
     {
-      triangles.push_back({ index[t[0]], index[t[1]], index[t[2]] });
+      r.triangle[u] = t;
+      this->Triangles[t++] = { r.vertex[old[0]], r.vertex[old[1]], r.vertex[old[2]] };
     }
   }
-  this->Triangles.swap(triangles);
+  this->Triangles.resize(t);
+  return r;
+}
+
+// The rings of vertices the edits did not touch are the committed ones, renumbered (the numbering
+// keeps the order, so each still starts at its lowest neighbour, as connect() would start it); only the
+// touched and new vertices' fans are walked again. A commit after a few edits thus costs a pass over the
+// rings, not a sort of every corner.
+Status SurfaceMesh::reconnect(const std::vector<char>& touched, const Renumbering& r)
+{
+  const int committed = static_cast<int>(touched.size());
+  const int nv = static_cast<int>(this->Points.size());
+  std::vector<int> oldOf(nv, -1);
+  for (int o = 0; o < static_cast<int>(r.vertex.size()); ++o)
+  {
+    if (r.vertex[o] >= 0)
+    {
+      oldOf[r.vertex[o]] = o;
+    }
+  }
+  std::vector<char> walk(nv); // touched or new: the fans walked again
+  for (int v = 0; v < nv; ++v)
+  {
+    walk[v] = oldOf[v] >= committed || touched[oldOf[v]];
+  }
+  auto dirty = [&walk](int v) { return walk[v] != 0; };
+  // The touched and new vertices' corners, bucketed by vertex.
+  std::vector<int> count(nv + 1, 0);
+  const int nt = this->triangleCount();
+  for (const auto& tri : this->Triangles)
+  {
+    for (int v : tri)
+    {
+      if (v < 0 || v >= nv)
+      {
+        return this->connect(); // it reports the bad triangle
+      }
+      count[v + 1] += dirty(v);
+    }
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0])
+    {
+      return this->connect();
+    }
+  }
+  std::vector<int> start(nv + 1, 0);
+  for (int v = 0; v < nv; ++v)
+  {
+    start[v + 1] = start[v] + (dirty(v) ? count[v + 1] : this->valence(oldOf[v]));
+    count[v + 1] += count[v];
+  }
+  std::vector<Corner> corners(count[nv]);
+  std::vector<int> fill(count.begin(), count.end() - 1);
+  for (int t = 0; t < nt; ++t)
+  {
+    const auto& tri = this->Triangles[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      if (dirty(tri[k]))
+      {
+        corners[fill[tri[k]]++] = { tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3], t };
+      }
+    }
+  }
+  std::vector<int> ring(start[nv]), ringTriangle(start[nv]);
+  for (int v = 0; v < nv; ++v)
+  {
+    if (dirty(v))
+    {
+      if (Status status = walkFan(v, corners.data() + count[v], corners.data() + count[v + 1], ring.data() + start[v],
+            ringTriangle.data() + start[v]);
+          !status)
+      {
+        return status;
+      }
+      continue;
+    }
+    for (int p = this->RingStart[oldOf[v]], q = start[v]; q < start[v + 1]; ++p, ++q)
+    {
+      ring[q] = r.vertex[this->Ring[p]];
+      ringTriangle[q] = r.triangle[this->RingTriangle[p]];
+    }
+  }
+  this->RingStart.swap(start);
+  this->Ring.swap(ring);
+  this->RingTriangle.swap(ringTriangle);
+  for (auto& entry : this->Data)
+  {
+    entry.second.resize(nv, Vec3::Zero());
+  }
+  return {};
 }
 
 } // namespace shrinkwrap

@@ -82,8 +82,13 @@ public:
 
 private:
   struct EditState;
+  struct Renumbering // old index -> new, -1 where removed
+  {
+    std::vector<int> vertex, triangle;
+  };
   Status connect(); // rings from Points and Triangles
-  void compact(const std::vector<char>& removedVertex);
+  Renumbering compact(const std::vector<char>& removedVertex);
+  Status reconnect(const std::vector<char>& touched, const Renumbering& renumbered); // after edits
   void beginEdit();
   int triangleOf(int a, int b) const; // the triangle with directed edge (a, b), or -1
   void setTriangle(int t, const std::array<int, 3>& triangle);

@@ -117,6 +117,11 @@ void TriangleGrid::build()
   {
     forEachBucket(t, [&](std::uint32_t b) { this->Items[fill[b]++] = t; });
   }
+  this->ItemBoxes.resize(this->Items.size());
+  for (std::size_t p = 0; p < this->Items.size(); ++p)
+  {
+    this->ItemBoxes[p] = this->Boxes[this->Items[p]];
+  }
 }
 
 TriangleGrid::Range TriangleGrid::rangeOf(const Box& box) const

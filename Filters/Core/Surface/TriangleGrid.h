@@ -63,6 +63,7 @@ private:
   Range Extent{}; // the cells the triangles cover
   std::vector<std::uint32_t> Start; // bucket b holds Items[Start[b], Start[b + 1])
   std::vector<int> Items;
+  std::vector<Box> ItemBoxes; // Boxes[Items[p]], beside the items for the pair loops
   std::uint64_t Mask = 0;
   Vec3 Origin = Vec3::Zero();
   double Cell = 0;
@@ -124,14 +125,15 @@ void TriangleGrid::forEachOverlappingPair(int begin, int end, F&& f) const
     for (std::uint32_t p = this->Start[b]; p < this->Start[b + 1]; ++p)
     {
       const int s = this->Items[p];
-      const Range& rs = this->Ranges[s];
+      const Box& bs = this->ItemBoxes[p];
       for (std::uint32_t q = p + 1; q < this->Start[b + 1]; ++q)
       {
-        const int t = this->Items[q];
-        if (!this->Boxes[s].overlaps(this->Boxes[t]))
+        if (!bs.overlaps(this->ItemBoxes[q]))
         {
           continue;
         }
+        const int t = this->Items[q];
+        const Range& rs = this->Ranges[s];
         const Range& rt = this->Ranges[t];
         // Tested in the bucket of the first cell both hold, so once.
         if (this->bucketOf(std::max(rs[0], rt[0]), std::max(rs[1], rt[1]), std::max(rs[2], rt[2])) ==

@@ -4,7 +4,8 @@
 // The grid behind them reports every overlapping box once (against brute force); fronts that meet are
 // held back pair by pair; the guard of a pass's edits refuses a flip whose new triangles would cross
 // the surface, and remembers the pass's own edits, and a guard limited to boxes checks only what reaches
-// into them; a round of edits is checked once and made again guarded near its crossings, then everywhere.
+// into them; the crossings edits made are found from the triangles they made alone; a round of edits is
+// checked once and made again guarded near its crossings, then everywhere.
 // And TargetDistance: near the target, d and grad d are the exact distance and direction to it.
 #include "CheckedEdits.h"
 #include "Icosphere.h"
@@ -171,6 +172,39 @@ void guardedEdits()
   SW_CHECK(!away.flipCrosses(0, 1, 2, 3), "a guard whose boxes miss the flip lets it be");
 }
 
+// The crossings edits made, from the triangles the edits made: a vertex pushed through the sphere (its
+// fan is new), the same surface renumbered (nothing new), a split (its halves are new, and cross
+// nothing).
+void newCrossings()
+{
+  const TriangleSurface sphere = icosphere(3, Vec3::Zero(), 1.0);
+  SurfaceMesh before;
+  SW_CHECK(SurfaceMesh::build(sphere.points, sphere.triangles, before), "the sphere is a closed surface");
+  TriangleSurface pushed = sphere;
+  pushed.points[0] = -1.3 * pushed.points[0];
+  const SelfIntersections all = findSelfIntersections(pushed.points, pushed.triangles);
+  const SelfIntersections made = findNewSelfIntersections(before, pushed.points, pushed.triangles);
+  SW_CHECK(made.pairs > 0 && made.pairs == all.pairs && made.intersecting == all.intersecting,
+    "a vertex pushed through: the same " << all.pairs << " crossing pairs as the whole surface's check");
+
+  // Renumbered: vertices in reverse, triangles rotated and in reverse.
+  const int nv = static_cast<int>(pushed.points.size());
+  std::vector<Vec3> reversed(pushed.points.rbegin(), pushed.points.rend());
+  std::vector<std::array<int, 3>> renumbered;
+  for (auto it = pushed.triangles.rbegin(); it != pushed.triangles.rend(); ++it)
+  {
+    renumbered.push_back({ nv - 1 - (*it)[1], nv - 1 - (*it)[2], nv - 1 - (*it)[0] });
+  }
+  SurfaceMesh pushedMesh;
+  SW_CHECK(SurfaceMesh::build(pushed.points, pushed.triangles, pushedMesh), "the pushed sphere is a closed surface");
+  SW_CHECK(findNewSelfIntersections(pushedMesh, reversed, renumbered).pairs == 0,
+    "the same surface renumbered: no triangle is new, so no crossing is new");
+
+  SurfaceMesh split = before;
+  SW_CHECK(split.split(0, split.ring(split.ringBegin(0))) >= 0 && split.commit(), "a split");
+  SW_CHECK(findNewSelfIntersections(before, split.points(), split.triangles()).pairs == 0, "a split's halves cross nothing");
+}
+
 // A round of edits checked once: unguarded first, then guarded near where it crossed, then everywhere.
 void checkedEdits()
 {
@@ -244,6 +278,7 @@ int TestSelfIntersections(int, char*[])
   triangleGrid();
   heldFronts();
   guardedEdits();
+  newCrossings();
   checkedEdits();
   exactNearTarget();
   return testing::finish("TestSelfIntersections");

@@ -1,7 +1,9 @@
 // The editable surface mesh: one-rings of icospheres (eq. (9) counts), refused surfaces, and local
-// edits (split, flip, collapse) whose vertex data follows them.
+// edits (split, flip, collapse) whose vertex data follows them; a commit's rings, rebuilt only where the
+// edits touched, equal those of the surface built anew.
 #include "EdgeSplits.h"
 #include "Icosphere.h"
+#include "Remesher.h"
 #include "SurfaceGeometry.h"
 #include "SurfaceMesh.h"
 #include "TestUtilities.h"
@@ -144,6 +146,62 @@ void edits()
     "120 splits in one pass: level 2's counts, closed");
 }
 
+// The rings a commit leaves (the untouched vertices' renumbered, the others' walked again) entry for
+// entry equal those of SurfaceMesh::build on the same points and triangles.
+bool sameAsBuilt(const SurfaceMesh& mesh)
+{
+  SurfaceMesh built;
+  if (!SurfaceMesh::build(mesh.points(), mesh.triangles(), built) || built.vertexCount() != mesh.vertexCount())
+  {
+    return false;
+  }
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+  {
+    if (built.ringBegin(i) != mesh.ringBegin(i) || built.ringEnd(i) != mesh.ringEnd(i))
+    {
+      return false;
+    }
+    for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
+    {
+      if (built.ring(p) != mesh.ring(p) || built.ringTriangle(p) != mesh.ringTriangle(p))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+void commitsAsBuilt()
+{
+  // A level-3 sphere squashed to an ellipsoid, so that its edges differ in length: rounds of splits,
+  // collapses (which renumber) and flips, each compared with the surface built anew.
+  TriangleSurface sphere = icosphere(3);
+  for (Vec3& x : sphere.points)
+  {
+    x.z() *= 0.3;
+  }
+  SurfaceMesh mesh = meshOf(sphere);
+  int rounds = 0, edits = 0;
+  for (const double length : { 0.12, 0.2, 0.35 })
+  {
+    CollapseSettings collapses;
+    collapses.avoidCrossings = false;
+    const int splits = splitLongEdges(mesh, 4.0 / 3.0 * length);
+    rounds += sameAsBuilt(mesh);
+    const int collapsed = collapseShortEdges(mesh, 0.8 * length, 4.0 / 3.0 * length, collapses);
+    rounds += sameAsBuilt(mesh);
+    FlipSettings flips;
+    flips.avoidCrossings = false;
+    const int flipped = equalizeValences(mesh, flips);
+    rounds += sameAsBuilt(mesh);
+    std::printf("edge length %.2f: %d splits, %d collapses, %d flips, %d vertices\n", length, splits, collapsed,
+      flipped, mesh.vertexCount());
+    edits += splits + collapsed + flipped;
+  }
+  SW_CHECK(rounds == 9 && edits > 300, "after each of 9 rounds (" << edits << " edits) the rings equal a fresh build's");
+}
+
 } // namespace
 
 int TestSurfaceMesh(int, char*[])
@@ -152,6 +210,7 @@ int TestSurfaceMesh(int, char*[])
     icospheres();
     refusedSurfaces();
     edits();
+    commitsAsBuilt();
   });
   return testing::finish("TestSurfaceMesh");
 }

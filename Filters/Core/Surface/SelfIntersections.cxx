@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <mutex>
 #include <cstring>
+#include <mutex>
 #include <optional>
 
 namespace shrinkwrap

@@ -96,7 +96,7 @@ case "$mode" in
     configure_and_build "$build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHRINKWRAP_SANITIZE=ON \
       -DSHRINKWRAP_FUZZ_SECONDS=90
     (cd "$build-asan" && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-      ctest --output-on-failure -j 2 -R "BadInput|Filter|StartingSurface|Fuzz|SurfaceMesh|Edge|Remesher|TestEvolver$|SlabDistance|GapClosing|PointDistance|PointSurface")
+      ctest --output-on-failure -j 2 -R "BadInput|Filter|StartingSurface|Fuzz|SurfaceMesh|Edge|Remesher|TestEvolver$|SlabDistance|GapClosing|PointDistance|PointSurface|SelfIntersections")
     ;;
   bench)
     fetch_cgal_meshes

@@ -159,6 +159,7 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   this->EdgeFlips = e.edgeFlips;
   this->EdgeCollapses = e.edgeCollapses;
   this->CoverRims = e.rims.cover;
+  this->CreaseAngle = e.rims.creaseAngle;
   this->FlipDihedralLimit = e.flips.maxDihedral;
   this->StartingShape = static_cast<int>(defaults.start.shape); // ICOSPHERE, OFFSET_SURFACE in order
   this->StartOffset = defaults.start.offset;
@@ -203,6 +204,7 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
   e.edgeFlips = this->EdgeFlips;
   e.edgeCollapses = this->EdgeCollapses;
   e.rims.cover = this->CoverRims;
+  e.rims.creaseAngle = this->CreaseAngle;
   e.flips.maxDihedral = this->FlipDihedralLimit;
   s.start.shape = static_cast<StartShape>(this->StartingShape);
   s.start.offset = this->StartOffset;
@@ -872,6 +874,7 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EdgeFlips: " << this->EdgeFlips << "\n";
   os << indent << "EdgeCollapses: " << this->EdgeCollapses << "\n";
   os << indent << "CoverRims: " << this->CoverRims << "\n";
+  os << indent << "CreaseAngle: " << this->CreaseAngle << (this->CreaseAngle < 180 ? "\n" : " (rims only)\n");
   os << indent << "FlipDihedralLimit: " << this->FlipDihedralLimit << "\n";
   os << indent << "StartingShape: " << (this->StartingShape == ICOSPHERE ? "Icosphere" : "Offset Surface") << "\n";
   os << indent << "StartOffset: " << this->StartOffset << "\n";

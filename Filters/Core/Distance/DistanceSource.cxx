@@ -77,16 +77,25 @@ const std::vector<char>& TriangleSource::sidesConfirmed() const
   return this->Sides;
 }
 
-std::vector<std::array<Vec3, 2>> TriangleSource::rims() const
+std::vector<std::array<Vec3, 2>> TriangleSource::rims(double creaseAngle) const
 {
   std::vector<std::array<Vec3, 2>> rims;
   const std::vector<EdgeUse> uses = edgeUses(this->Soup);
+  const auto& x = this->Soup.points;
+  const double cosCrease = std::cos(creaseAngle * M_PI / 180);
+  auto crease = [&](const EdgeUse& u, const EdgeUse& v) {
+    const Vec3 nu = unitNormal(this->Soup, u.triangle), nv = unitNormal(this->Soup, v.triangle);
+    // Two triangles that run along the edge the same way face opposite ways (a Moebius band's seam);
+    // a sliver's normal (zero) tells nothing.
+    return nu != Vec3::Zero() && nv != Vec3::Zero() && (u.forward != v.forward ? 1 : -1) * nu.dot(nv) < cosCrease;
+  };
   forEachEdge(uses, [&](std::size_t first, std::size_t last) {
     const auto& t = this->Soup.triangles[uses[first].triangle];
     const int a = t[uses[first].slot], b = t[(uses[first].slot + 1) % 3];
-    if (last == first + 1 && a != b)
+    const bool rim = last == first + 1;
+    if (a != b && (rim || (last == first + 2 && creaseAngle < 180 && crease(uses[first], uses[first + 1]))))
     {
-      rims.push_back({ this->Soup.points[a], this->Soup.points[b] });
+      rims.push_back({ x[a], x[b] });
     }
   });
   return rims;

@@ -64,9 +64,14 @@ public:
     static const std::vector<char> none;
     return none;
   }
-  // The edges where the surface ends (a hole's rim, an open sheet's edge), each as its two ends: what
-  // a wrap must cover there (RimCoverage.h). None for points.
-  virtual std::vector<std::array<Vec3, 2>> rims() const { return {}; }
+  // The edges a wrap must cover (RimCoverage.h), each as its two ends: where the surface ends (a hole's
+  // rim, an open sheet's edge) and its sharp creases, where the faces on the two sides turn by more than
+  // creaseAngle degrees (180: none). None for points.
+  virtual std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const
+  {
+    (void)creaseAngle;
+    return {};
+  }
 };
 
 class TriangleSource : public DistanceSource
@@ -84,7 +89,8 @@ public:
   long long reorientedTriangles() const { return this->Reoriented; }
   double windingNumber(const Vec3& x) const override;
   const std::vector<char>& sidesConfirmed() const override;
-  std::vector<std::array<Vec3, 2>> rims() const override; // edges of one triangle (welded)
+  // Edges of one triangle (welded), and edges of two whose normals differ by more than creaseAngle.
+  std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override;
 
 private:
   const WindingNumber& winding() const;

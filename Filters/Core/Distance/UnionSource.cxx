@@ -57,12 +57,12 @@ SourcePoint UnionSource::closestPoint(const Vec3& x, double maxSquaredDistance) 
   return best;
 }
 
-std::vector<std::array<Vec3, 2>> UnionSource::rims() const
+std::vector<std::array<Vec3, 2>> UnionSource::rims(double creaseAngle) const
 {
   std::vector<std::array<Vec3, 2>> rims;
   for (const auto& part : this->Parts)
   {
-    const auto own = part->rims();
+    const auto own = part->rims(creaseAngle);
     rims.insert(rims.end(), own.begin(), own.end());
   }
   return rims;

@@ -100,7 +100,7 @@ Evolver::Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const
   const double length = settings.remeshing.targetLength;
   if (settings.rims.cover && length > 0 && this->Field && this->Field->exact())
   {
-    this->RimSamples = rimSamples(this->Field->exact()->rims(), settings.rims.spacing * length);
+    this->RimSamples = rimSamples(this->Field->exact()->rims(settings.rims.creaseAngle), settings.rims.spacing * length);
   }
 }
 
@@ -309,6 +309,17 @@ StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool 
   return report;
 }
 
+std::vector<Vec3> Evolver::scaledRimSamples() const
+{
+  std::vector<Vec3> samples;
+  samples.reserve(this->RimSamples.size());
+  for (const Vec3& x : this->RimSamples)
+  {
+    samples.push_back(this->Scale * (x - this->Center));
+  }
+  return samples;
+}
+
 int Evolver::coverRims()
 {
   if (this->RimSamples.empty())
@@ -317,12 +328,7 @@ int Evolver::coverRims()
   }
   const RimSettings& r = this->Settings.rims;
   const double length = this->Settings.remeshing.targetLength * this->Scale;
-  std::vector<Vec3> samples;
-  samples.reserve(this->RimSamples.size());
-  for (const Vec3& x : this->RimSamples)
-  {
-    samples.push_back(this->Scale * (x - this->Center));
-  }
+  const std::vector<Vec3> samples = this->scaledRimSamples();
   const std::vector<Vec3> moves = rimMoves(this->Mesh, samples, r.tolerance * length, r.reach * length);
   // A move the hold-back refuses (it would cross the surface: near a rim both layers lie on the sheet)
   // is tried again at half its length, twice.
@@ -448,6 +454,12 @@ void Evolver::adjustConnectivity(StepReport& report)
 {
   const EvolverSettings& s = this->Settings;
   const StepReport before = report;
+  // The vertices that hold the target's rims stay in place in collapses (RimCoverage.h: rimHolds).
+  if (!this->RimSamples.empty())
+  {
+    const double reach = s.rims.hold * s.remeshing.targetLength * this->Scale;
+    this->Mesh.vertexData(kAnchorData) = rimHolds(this->Mesh, this->scaledRimSamples(), reach);
+  }
   auto edit = [&](SurfaceMesh& mesh, bool guarded, const std::vector<Box>& only) {
     EvolverSettings e = s;
     e.flips.avoidCrossings = guarded && s.flips.avoidCrossings;
@@ -466,6 +478,7 @@ void Evolver::adjustConnectivity(StepReport& report)
   {
     edit(this->Mesh, false, {});
   }
+  this->Mesh.removeVertexData(kAnchorData);
   if (report.connectivityChanged())
   {
     this->connectivityChanged(report.splits == 0 && report.collapses == 0);

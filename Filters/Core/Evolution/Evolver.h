@@ -193,6 +193,7 @@ private:
   StepReport check(const std::vector<Vec3>& y) const;
   int holdBack(std::vector<Vec3>& next) const;
   int coverRims(); // RimCoverage.h: the vertices moved
+  std::vector<Vec3> scaledRimSamples() const;
   void adjustConnectivity(StepReport& report); // remeshing, flips, then collapses, as the settings ask
   // A new solver for the new triangles; the volume redistribution's warm start only for the same vertices.
   void connectivityChanged(bool sameVertices);

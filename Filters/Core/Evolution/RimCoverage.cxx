@@ -102,16 +102,11 @@ std::array<double, 3> barycentric(const Vec3& x, const Vec3& a, const Vec3& b, c
   const double w = std::clamp((d00 * d21 - d01 * d20) / det, 0.0, 1.0 - v);
   return { 1 - v - w, v, w };
 }
-} // namespace
 
-std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach)
+// Per sample, the nearest point of the surface within `reach`, looked for first within `near`.
+std::vector<Nearest> nearestPoints(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double near, double reach)
 {
   const std::vector<Vec3>& y = mesh.points();
-  std::vector<Vec3> moves(y.size(), Vec3::Zero());
-  if (samples.empty() || mesh.triangleCount() == 0)
-  {
-    return moves;
-  }
   // A grid of the triangles (rebuilt every step, by counting sort) rather than a tree: the searches
   // reach only a few edge lengths, and building a tree every step cost more than they do.
   const auto& triangles = mesh.triangles();
@@ -138,13 +133,26 @@ std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& sam
         });
       };
       // Most samples lie on the surface: a small box finds them (a hit within it is the nearest).
-      search(std::min(4 * tolerance, reach));
-      if (hit.triangle < 0)
+      search(std::min(near, reach));
+      if (hit.triangle < 0 && near < reach)
       {
         search(reach);
       }
     }
   });
+  return hits;
+}
+} // namespace
+
+std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach)
+{
+  const std::vector<Vec3>& y = mesh.points();
+  std::vector<Vec3> moves(y.size(), Vec3::Zero());
+  if (samples.empty() || mesh.triangleCount() == 0)
+  {
+    return moves;
+  }
+  const std::vector<Nearest> hits = nearestPoints(mesh, samples, 4 * tolerance, reach);
   // Serial from here, in sample order: the same moves on every run (cached steps equal fresh ones).
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
@@ -168,6 +176,29 @@ std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& sam
     }
   }
   return moves;
+}
+
+std::vector<Vec3> rimHolds(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double reach)
+{
+  const std::vector<Vec3>& y = mesh.points();
+  std::vector<Vec3> holds(y.size(), Vec3::Zero());
+  if (samples.empty() || mesh.triangleCount() == 0)
+  {
+    return holds;
+  }
+  for (const Nearest& hit : nearestPoints(mesh, samples, reach, reach))
+  {
+    if (hit.triangle >= 0)
+    {
+      const auto& t = mesh.triangles()[hit.triangle];
+      const auto w = barycentric(hit.point, y[t[0]], y[t[1]], y[t[2]]);
+      for (int k = 0; k < 3; ++k)
+      {
+        holds[t[k]].x() = std::max(holds[t[k]].x(), w[k]);
+      }
+    }
+  }
+  return holds;
 }
 
 } // namespace shrinkwrap

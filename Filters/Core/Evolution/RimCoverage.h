@@ -21,6 +21,14 @@ struct RimSettings
   double spacing = 1;      // between samples along a rim, in target edge lengths L (L / 2: as close, slower)
   double tolerance = 0.02; // a sample this close to the surface (in L) counts as covered
   double reach = 1.5;      // samples farther from the surface than this (in L) are left alone
+  // Vertices of the nearest point of a sample this close (in L) stay in place in collapses (rimHolds).
+  // On mech-holes-shark the largest distance from the target to the wrap measured 0.36% of the
+  // diagonal at 0.1, 0.15 and 0.5, 0.46% at 0.25 (one rim point), 0.78% without (RESULTS.md).
+  double hold = 0.1;
+  // Sharp creases count as rims where the target's faces turn by more than this (degrees; 180: none):
+  // a wrap's triangles otherwise cut a CAD part's edges and corners. Off by default: the wrap then
+  // follows them with more vertices (fandisk at 45: 8% more, past alpha wrap's at diag/50).
+  double creaseAngle = 180;
 };
 
 // Points along the rims, at most `spacing` apart, both ends of every rim edge among them.
@@ -31,6 +39,13 @@ std::vector<Vec3> rimSamples(const std::vector<std::array<Vec3, 2>>& rims, doubl
 // corners move by their barycentric share (the largest move wins at a vertex); zero elsewhere. Outside:
 // in front of the pseudonormal of the nearest feature.
 std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach);
+
+// Per vertex of `mesh`, how firmly it holds the samples (in x, as vertex data): the largest barycentric
+// weight it has in the nearest surface point of a sample within `reach`; 0 where it holds none. The
+// remeshing keeps such vertices in place (kAnchorData, EdgeCollapses.h): merging a fold's vertex on
+// a rim with its neighbour at the edge's midpoint pulled the fold off the rim by most of an edge every
+// step, and the layers on both sides of the sheet then lay too close to move it back (mech-holes-shark).
+std::vector<Vec3> rimHolds(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double reach);
 
 } // namespace shrinkwrap
 

@@ -51,6 +51,8 @@ Status WrapSettings::validate() const
   if (!(this->edgeRange[0] >= kShortestEdge && this->edgeRange[0] <= 1 && this->edgeRange[1] >= 1 &&
         this->edgeRange[1] <= kLongestEdge))
     return Status::failure("EdgeLengthRange must hold 1: from 0.1 to 1, then from 1 to 4 (times the Target Edge Length)");
+  if (!(this->evolution.rims.creaseAngle >= 0 && this->evolution.rims.creaseAngle <= 180))
+    return Status::failure("CreaseAngle must be between 0 and 180 degrees");
   return {};
 }
 

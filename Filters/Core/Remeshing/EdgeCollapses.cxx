@@ -2,6 +2,8 @@
 
 #include "SurfaceGeometry.h"
 
+#include <utility>
+
 namespace shrinkwrap
 {
 
@@ -50,6 +52,16 @@ bool keepsNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, in
 }
 
 } // namespace
+
+Merge mergeOf(const std::vector<Vec3>& x, const std::vector<Vec3>& anchors, int a, int b)
+{
+  const double ha = anchors.empty() ? 0 : anchors[a].x(), hb = anchors.empty() ? 0 : anchors[b].x();
+  if (ha > 0 || hb > 0)
+  {
+    return ha >= hb ? Merge{ a, b, x[a] } : Merge{ b, a, x[b] };
+  }
+  return { a, b, 0.5 * (x[a] + x[b]) };
+}
 
 bool collapseIsOk(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
   const CollapseSettings& settings)
@@ -100,6 +112,7 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
   // Decisions read the surface as it was before the pass (the rings stay so until the commit).
   const std::vector<Vec3> x = mesh.points();
   const std::vector<std::array<int, 3>> triangles = mesh.triangles();
+  const std::vector<Vec3> anchors = std::as_const(mesh).vertexData(kAnchorData); // as x: before the pass
   const int nv = mesh.vertexCount();
   std::vector<char> touched(nv, 0);
   CrossingGuard guard(x, triangles, settings.guardOnlyIn);
@@ -134,7 +147,8 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
     }
     else
     {
-      collapse(a, b, 0.5 * (x[a] + x[b]));
+      const Merge merge = mergeOf(x, anchors, a, b);
+      collapse(merge.keep, merge.gone, merge.at);
     }
   }
   return collapses > 0 && mesh.commit() ? collapses : 0;

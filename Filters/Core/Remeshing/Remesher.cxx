@@ -85,16 +85,16 @@ int splitLongEdges(SurfaceMesh& mesh, double maxLength)
 
 namespace
 {
-// No edge from the merged vertex at m (which keeps a's size) to a neighbour of a or b longer than
-// maxLength.
-bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const std::vector<Vec3>& sizes, int a, int b,
-  const Vec3& m, double maxLength)
+// No edge from the merged vertex (which keeps the kept vertex's size) to a neighbour of either end
+// longer than maxLength.
+bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const std::vector<Vec3>& sizes,
+  const Merge& merge, double maxLength)
 {
-  for (int v : { a, b })
+  for (int v : { merge.keep, merge.gone })
   {
     for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
     {
-      if ((x[mesh.ring(p)] - m).norm() > maxLength * edgeSize(sizes, a, mesh.ring(p)))
+      if ((x[mesh.ring(p)] - merge.at).norm() > maxLength * edgeSize(sizes, merge.keep, mesh.ring(p)))
       {
         return false;
       }
@@ -110,15 +110,19 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
   CrossingGuard guard(x, triangles, settings.guardOnlyIn);
   std::vector<char> touched(mesh.vertexCount(), 0);
   int collapses = 0;
-  const std::vector<Vec3> sizes = std::as_const(mesh).vertexData(kEdgeSizeData); // as the pass began, as x
+  // as the pass began, as x
+  const std::vector<Vec3> sizes = std::as_const(mesh).vertexData(kEdgeSizeData);
+  const std::vector<Vec3> anchors = std::as_const(mesh).vertexData(kAnchorData);
   for (const auto& e : edgesOf(mesh))
   {
     const int a = e[0], b = e[1];
-    const Vec3 m = 0.5 * (x[a] + x[b]);
-    if (mesh.vertexCount() - collapses > 4 && (x[a] - x[b]).norm() < minLength * edgeSize(sizes, a, b) &&
-      staysShort(mesh, x, sizes, a, b, m, maxLength))
+    if (mesh.vertexCount() - collapses > 4 && (x[a] - x[b]).norm() < minLength * edgeSize(sizes, a, b))
     {
-      collapses += collapseInPass(mesh, x, a, b, m, settings, touched, guard);
+      const Merge merge = mergeOf(x, anchors, a, b);
+      if (staysShort(mesh, x, sizes, merge, maxLength))
+      {
+        collapses += collapseInPass(mesh, x, merge.keep, merge.gone, merge.at, settings, touched, guard);
+      }
     }
   }
   return collapses > 0 && mesh.commit() ? collapses : 0;

@@ -1,6 +1,7 @@
 // Isotropic remeshing (groundwork of issue #10): a coarse sphere refined and a fine one coarsened to
 // the target edge length, closed, same genus, the shape kept, valences near 6, good angles; vertex data
-// follows the edits; adaptive sizes from the curvature; refused settings.
+// follows the edits; anchored vertices stay in place through collapses; adaptive sizes from the
+// curvature; refused settings.
 #include "Icosphere.h"
 #include "Remesher.h"
 #include "SurfaceGeometry.h"
@@ -8,6 +9,7 @@
 
 #include <vtkSMPTools.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -101,6 +103,45 @@ void dataFollows()
   SW_CHECK(collapses > 0 && own && fine.vertexCount() == 642 - collapses, "collapses keep the survivors' data, in order");
 }
 
+// Collapses merge into an anchored end at its position (kAnchorData, e.g. a vertex holding a target's
+// rim): anchors on an independent set of a sphere's vertices all keep their positions through a
+// coarsening that without them moves some.
+void anchorsStay()
+{
+  SurfaceMesh plain = testing::meshOf(icosphere(3));
+  std::vector<Vec3> anchors(plain.vertexCount(), Vec3::Zero());
+  std::vector<Vec3> anchored; // positions
+  for (int i = 0; i < plain.vertexCount(); ++i)
+  {
+    bool free = true; // no anchored neighbour
+    for (int p = plain.ringBegin(i); p < plain.ringEnd(i); ++p)
+    {
+      free = free && anchors[plain.ring(p)].x() == 0;
+    }
+    if (free && i % 3 == 0)
+    {
+      anchors[i] = Vec3(1, 0, 0);
+      anchored.push_back(plain.points()[i]);
+    }
+  }
+  SurfaceMesh fixed = plain;
+  fixed.vertexData(kAnchorData) = anchors;
+  auto kept = [&](const SurfaceMesh& mesh) {
+    int n = 0;
+    for (const Vec3& a : anchored)
+    {
+      n += std::find(mesh.points().begin(), mesh.points().end(), a) != mesh.points().end();
+    }
+    return n;
+  };
+  const int withAnchors = collapseShortEdges(fixed, 0.2, 1.0, CollapseSettings());
+  const int without = collapseShortEdges(plain, 0.2, 1.0, CollapseSettings());
+  const int n = static_cast<int>(anchored.size());
+  SW_CHECK(withAnchors > 0 && kept(fixed) == n && kept(plain) < n,
+    "anchored vertices keep their places through collapses (" << kept(fixed) << " of " << n << "; without anchors "
+                                                               << kept(plain) << ", " << without << " collapses)");
+}
+
 // Adaptive sizing: on a sphere of radius R every vertex gets the chord-error length sqrt(6 e R - 3 e^2);
 // an ellipsoid remeshed adaptively gets shorter edges at its sharp ends than at its flat waist, and
 // more of them than with L alone there.
@@ -183,6 +224,7 @@ int TestRemesher(int, char*[])
     towards(2, 0.08, "refine");
     towards(5, 0.12, "coarsen");
     dataFollows();
+    anchorsStay();
     adaptive();
     refused();
   });

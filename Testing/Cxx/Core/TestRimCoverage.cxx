@@ -1,7 +1,10 @@
-// Rim coverage (issue #10, RimCoverage.h): rim samples along every edge at most the spacing apart, each
-// rim vertex once; a sample outside the surface moves the nearest triangle's corners so that its
-// nearest point reaches the sample; samples inside, within the tolerance or beyond the reach move
-// nothing. Whole wraps of an open CAD shell: Cxx.TestShrinkWrapCGALMeshes.
+// Rim coverage (issue #10, RimCoverage.h): a mesh's rims are its edges of one triangle and, below a
+// crease angle, its sharp creases; rim samples along every edge at most the spacing apart, each rim
+// vertex once; a sample outside the surface moves the nearest triangle's corners so that its nearest
+// point reaches the sample; samples inside, within the tolerance or beyond the reach move nothing; the
+// vertices of a sample's nearest point hold it by their weights there. Whole wraps of an open CAD
+// shell: Cxx.TestShrinkWrapCGALMeshes.
+#include "DistanceSource.h"
 #include "Icosphere.h"
 #include "RimCoverage.h"
 #include "TestUtilities.h"
@@ -62,6 +65,65 @@ void samples()
   SW_CHECK(rimSamples({ { a, b } }, 0).empty(), "no spacing, no samples");
 }
 
+// A unit cube of 12 triangles (each face split along a diagonal), outward; without its top (z = 1)
+// when open.
+TriangleSoup cube(bool open)
+{
+  TriangleSoup soup;
+  for (int k = 0; k < 8; ++k)
+  {
+    soup.points.push_back(Vec3(k & 1, (k >> 1) & 1, (k >> 2) & 1));
+  }
+  soup.triangles = { { 0, 2, 1 }, { 1, 2, 3 }, { 0, 1, 5 }, { 0, 5, 4 }, { 1, 3, 7 }, { 1, 7, 5 }, { 3, 2, 6 },
+    { 3, 6, 7 }, { 2, 0, 4 }, { 2, 4, 6 } };
+  if (!open)
+  {
+    soup.triangles.push_back({ 4, 5, 7 });
+    soup.triangles.push_back({ 4, 7, 6 });
+  }
+  return soup;
+}
+
+void rims()
+{
+  const TriangleSource closed(cube(false)), open(cube(true));
+  SW_CHECK(closed.rims(180).empty(), "a closed cube has no rims");
+  SW_CHECK(closed.rims(45).size() == 12 && closed.rims(91).empty(),
+    "a cube's 12 edges are creases of 90 degrees, its faces' diagonals none (" << closed.rims(45).size() << ")");
+  SW_CHECK(open.rims(180).size() == 4 && open.rims(45).size() == 12,
+    "an open cube: 4 rims, and its 8 other edges creases (" << open.rims(180).size() << ", " << open.rims(45).size()
+                                                              << ")");
+  const TriangleSoup sphere = icosphere(3);
+  SW_CHECK(TriangleSource(sphere).rims(45).empty(), "a sphere of 1280 triangles has no crease of 45 degrees");
+}
+
+void holds()
+{
+  SurfaceMesh sphere = testing::meshOf(icosphere(3));
+  const auto& y = sphere.points();
+  const std::vector<Vec3> atVertex = rimHolds(sphere, { y[0] * 1.01 }, 0.1);
+  int holding = 0;
+  for (const Vec3& h : atVertex)
+  {
+    holding += h.x() > 0;
+  }
+  SW_CHECK(holding == 1 && atVertex[0].x() == 1, "a sample over a vertex is held by that vertex alone, fully");
+  const auto& t = sphere.triangles()[7];
+  const Vec3 centre = (y[t[0]] + y[t[1]] + y[t[2]]) / 3.0;
+  const std::vector<Vec3> atFace = rimHolds(sphere, { centre }, 0.1);
+  double sum = 0;
+  holding = 0;
+  for (const Vec3& h : atFace)
+  {
+    holding += h.x() > 0;
+    sum += h.x();
+  }
+  SW_CHECK(holding == 3 && std::abs(atFace[t[0]].x() - 1.0 / 3) < 1e-9 && std::abs(sum - 1) < 1e-9,
+    "a sample at a triangle's centre is held by its corners, a third each");
+  SW_CHECK(rimHolds(sphere, { y[0] * 1.5 }, 0.1) == std::vector<Vec3>(y.size(), Vec3::Zero()),
+    "a sample beyond the reach is held by none");
+}
+
 void moves()
 {
   SurfaceMesh sphere = testing::meshOf(icosphere(3)); // radius 1, edges about 0.15
@@ -90,8 +152,10 @@ void moves()
 int TestRimCoverage(int, char*[])
 {
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
+    rims();
     samples();
     moves();
+    holds();
   });
   return testing::finish("TestRimCoverage");
 }

@@ -10,7 +10,8 @@
 // both ways below 0.15% of the diagonal (alpha_wrap_3 at diag/50: 0.07-0.23%,
 // Testing/Benchmarks/RESULTS.md); the bunny keeps its ears and knot1 its genus, and the genus-3 CAD
 // part mech-holes-shark its genus, with its open shell's rims inside the wrap; the adaptive edge length
-// follows the fandisk's creases closer than L alone, with no more vertices. Settings whose triangles
+// follows the fandisk's creases closer than L alone, with no more vertices, and Crease Angle 45 closer
+// still (the creases covered as rims). Settings whose triangles
 // degenerate (D = 1, C2 = 0.1) run through with edge collapses.
 // Argument: the folder holding CGAL's data/meshes/*.off.
 #include "SurfaceMesh.h"
@@ -193,9 +194,9 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
       }
     }
     // The defaults, held to the bars on bunny00, armadillo and knot1 (genus 1, strands nearly
-    // touching). The bent chair (whose start's contour nearly touches itself) and the open elephant
-    // (whose holes the wrap enters, issue #10 stays open for it) are held to no crossing; their other
-    // figures are printed.
+    // touching). The bent chair (whose start's contour nearly touches itself) is held to no crossing;
+    // the open elephant (106 holes, which the wrap spans) also to issue #10's mean distances: no farther
+    // than alpha_wrap_3's at diag/50 either way (0.215% and 0.099% of the diagonal, RESULTS.md).
     const shrinkwrap::TriangleSoup soup = testing::triangulated(target);
     testing::WrapFigures sampled;
     const Figures f = wrap(target, [](vtkShrinkWrapFilter*) {}, &sampled, &soup);
@@ -225,6 +226,9 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
     SW_CHECK(name != "bunny00" || sampled.targetToWrap.largest < 2.0, "bunny00: the ears kept (largest target to wrap "
       << sampled.targetToWrap.largest << "% of the diagonal)");
     SW_CHECK(name != "knot1" || sampled.genus == 1, "knot1: genus 1 kept (" << sampled.genus << ")");
+    SW_CHECK(name != "elephant-with-holes" || (sampled.wrapToTarget.mean <= 0.215 && sampled.targetToWrap.mean <= 0.099),
+      "elephant-with-holes: mean distances within alpha wrap's (" << sampled.wrapToTarget.mean << "% / "
+                                                                  << sampled.targetToWrap.mean << "%)");
   }
 
   // Close Holes on the open elephant (1353 rim edges, holes wider than the Gap Size): its inside by the
@@ -260,12 +264,13 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
       SW_CHECK(sampled.genus == 3 && sampled.selfIntersections == 0,
         "mech-holes-shark: genus 3 kept, no crossing (genus " << sampled.genus << ")");
       // Its open shell's rims stay inside the wrap (Cover Rims): without, the wrap's folds creep back
-      // along the sheets and the rims poke out by 2.1% of the diagonal (RESULTS.md, issue #10).
+      // along the sheets and the rims poke out by 1.7-2.1% of the diagonal (RESULTS.md, issue #10). With
+      // it, within issue #10's bar: 1.5 times alpha_wrap_3's largest at diag/50 (0.27%).
       testing::WrapFigures uncovered;
       wrap(part, [](vtkShrinkWrapFilter* w) { w->SetCoverRims(false); }, &uncovered, &soup);
       std::printf("  largest target to wrap: %.2f%% of the diagonal, %.2f%% without Cover Rims\n",
         sampled.targetToWrap.largest, uncovered.targetToWrap.largest);
-      SW_CHECK(sampled.targetToWrap.largest < 1.5 && sampled.targetToWrap.largest < 0.75 * uncovered.targetToWrap.largest,
+      SW_CHECK(sampled.targetToWrap.largest <= 1.5 * 0.27 && sampled.targetToWrap.largest < 0.75 * uncovered.targetToWrap.largest,
         "mech-holes-shark: the rims covered (largest target to wrap " << sampled.targetToWrap.largest << "% against "
           << uncovered.targetToWrap.largest << "% without Cover Rims)");
     }
@@ -293,6 +298,20 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
       SW_CHECK(a.ok && adaptive.selfIntersections == 0 && a.smallAngles < 1.0, "fandisk adaptive: no crossing, good triangles");
       SW_CHECK(adaptive.targetToWrap.mean < 0.95 * uniform.targetToWrap.mean && a.vertices <= u.vertices,
         "fandisk adaptive: its creases followed closer, with no more vertices");
+      // Crease Angle 45: the creases count as rims and pull the wrap onto them (RESULTS.md: the mean
+      // from the target 0.033% against 0.055%, with 8% more vertices).
+      testing::WrapFigures creased;
+      const Figures c = wrap(fandisk, [](vtkShrinkWrapFilter* w) { w->SetCreaseAngle(45); }, &creased, &soup);
+      std::printf("fandisk at Crease Angle 45: target to wrap mean %.3f%%, largest %.2f%% (%lld vertices, %.2f%% of angles "
+                  "under 20 degrees, %lld crossing pairs)\n",
+        creased.targetToWrap.mean, creased.targetToWrap.largest, static_cast<long long>(c.vertices), c.smallAngles,
+        creased.selfIntersections);
+      SW_CHECK(c.ok && creased.selfIntersections == 0 && c.smallAngles < 1.0 && creased.genus == 0,
+        "fandisk at Crease Angle 45: no crossing, good triangles, genus 0");
+      SW_CHECK(creased.targetToWrap.mean < 0.8 * uniform.targetToWrap.mean &&
+          creased.wrapToTarget.mean < 0.9 * uniform.wrapToTarget.mean,
+        "fandisk at Crease Angle 45: closer both ways than without (target to wrap " << creased.targetToWrap.mean
+          << "% against " << uniform.targetToWrap.mean << "%)");
     }
   }
 

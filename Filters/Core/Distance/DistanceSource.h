@@ -67,11 +67,7 @@ public:
   // The edges a wrap must cover (RimCoverage.h), each as its two ends: where the surface ends (a hole's
   // rim, an open sheet's edge) and its sharp creases, where the faces on the two sides turn by more than
   // creaseAngle degrees (180: none). None for points.
-  virtual std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const
-  {
-    (void)creaseAngle;
-    return {};
-  }
+  virtual std::vector<std::array<Vec3, 2>> rims(double /*creaseAngle*/) const { return {}; }
 };
 
 class TriangleSource : public DistanceSource

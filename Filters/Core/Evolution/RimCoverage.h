@@ -3,7 +3,7 @@
 // (d = 0), nothing in eq. (4) pulls the fold back out to the rim, while the curvature term and the
 // remeshing's collapses pull it in, and the rim pokes out (mech-holes-shark: by 2% of the diagonal).
 // So after each step, the points of the target's rims that lie outside the surface pull the nearest
-// triangle onto them.
+// triangle onto them, and during the step's remeshing the vertices that hold them stay in place.
 #ifndef ShrinkWrap_RimCoverage_h
 #define ShrinkWrap_RimCoverage_h
 

@@ -47,7 +47,8 @@ struct RemeshReport
 // With kEdgeSizeData on the mesh, the lengths below are those of an edge of size 1, scaled per edge.
 // Splits every edge longer than maxLength at its midpoint, in passes until none is left (at most 16).
 int splitLongEdges(SurfaceMesh& mesh, double maxLength);
-// Collapses edges shorter than minLength into their midpoints where no edge then exceeds maxLength
+// Collapses edges shorter than minLength into their midpoints (into an anchored end: kAnchorData,
+// EdgeCollapses.h) where no edge then exceeds maxLength
 // and collapseInPass allows it, in passes until none is left (at most 16).
 int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings);
 // One pass of flips that bring the four valences of an edge's triangles closer to 6, within the

@@ -62,17 +62,20 @@ void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings)
 int splitLongEdges(SurfaceMesh& mesh, double maxLength)
 {
   int splits = 0;
-  for (int pass = 0; pass < 16; ++pass)
+  // After the first pass only the edges at the new vertices (numbered after the others) can be long.
+  for (int pass = 0, firstNew = 0; pass < 16; ++pass)
   {
     std::vector<std::array<int, 2>> longEdges;
     const std::vector<Vec3>& sizes = std::as_const(mesh).vertexData(kEdgeSizeData); // none: uniform
+    const std::vector<Vec3>& x = mesh.points();
     for (const auto& e : edgesOf(mesh))
     {
-      if ((mesh.points()[e[0]] - mesh.points()[e[1]]).norm() > maxLength * edgeSize(sizes, e[0], e[1]))
+      if (std::max(e[0], e[1]) >= firstNew && (x[e[0]] - x[e[1]]).norm() > maxLength * edgeSize(sizes, e[0], e[1]))
       {
         longEdges.push_back(e);
       }
     }
+    firstNew = mesh.vertexCount();
     const int made = longEdges.empty() ? 0 : splitEdges(mesh, longEdges);
     splits += made;
     if (made == 0)
@@ -103,26 +106,53 @@ bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const std::
   return true;
 }
 
-int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings)
+// One pass over the edges with an end in `look` (all when it is empty), in the order of edgesOf.
+// `look` becomes, numbered as after the pass, the ends of the short edges it found: the only edges
+// that can be short in the next pass are those and the ones a merge moved an end of (the kept vertex
+// is among them), since no other vertex moves. So later passes look at a few edges and decide as a
+// pass over all of them would.
+int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings,
+  std::vector<char>& look)
 {
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
   const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // edits change the mesh's own
   CrossingGuard guard(x, triangles, settings.guardOnlyIn);
-  std::vector<char> touched(mesh.vertexCount(), 0);
+  const int nv = mesh.vertexCount();
+  std::vector<char> touched(nv, 0), shortEnd(nv, 0), gone(nv, 0);
   int collapses = 0;
   // as the pass began, as x
   const std::vector<Vec3> sizes = std::as_const(mesh).vertexData(kEdgeSizeData);
   const std::vector<Vec3> anchors = std::as_const(mesh).vertexData(kAnchorData);
-  for (const auto& e : edgesOf(mesh))
+  for (int a = 0; a < nv; ++a)
   {
-    const int a = e[0], b = e[1];
-    if (mesh.vertexCount() - collapses > 4 && (x[a] - x[b]).norm() < minLength * edgeSize(sizes, a, b))
+    for (int p = mesh.ringBegin(a); p < mesh.ringEnd(a); ++p)
     {
-      const Merge merge = mergeOf(x, anchors, a, b);
-      if (staysShort(mesh, x, sizes, merge, maxLength))
+      const int b = mesh.ring(p);
+      if (a > b || !(look.empty() || look[a] || look[b]) ||
+        !((x[a] - x[b]).norm() < minLength * edgeSize(sizes, a, b)))
       {
-        collapses += collapseInPass(mesh, x, merge.keep, merge.gone, merge.at, settings, touched, guard);
+        continue;
       }
+      shortEnd[a] = shortEnd[b] = 1;
+      if (touched[a] || touched[b] || nv - collapses <= 4) // collapseInPass refuses touched ends
+      {
+        continue;
+      }
+      const Merge merge = mergeOf(x, anchors, a, b);
+      if (staysShort(mesh, x, sizes, merge, maxLength) &&
+        collapseInPass(mesh, x, merge.keep, merge.gone, merge.at, settings, touched, guard))
+      {
+        gone[merge.gone] = 1;
+        ++collapses;
+      }
+    }
+  }
+  look.assign(nv - collapses, 0);
+  for (int v = 0, kept = 0; v < nv; ++v)
+  {
+    if (!gone[v])
+    {
+      look[kept++] = shortEnd[v];
     }
   }
   return collapses > 0 && mesh.commit() ? collapses : 0;
@@ -132,9 +162,10 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
 int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings)
 {
   int collapses = 0;
+  std::vector<char> look; // every edge in the first pass
   for (int pass = 0; pass < 16; ++pass)
   {
-    const int made = collapsePass(mesh, minLength, maxLength, settings);
+    const int made = collapsePass(mesh, minLength, maxLength, settings, look);
     collapses += made;
     if (made == 0)
     {

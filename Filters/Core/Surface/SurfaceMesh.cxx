@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <atomic>
 #include <sstream>
-#include <unordered_map>
+#include <cstdint>
+#include <utility>
 
 namespace shrinkwrap
 {
@@ -118,6 +119,104 @@ std::uint64_t edgeKey(int a, int b)
 }
 
 constexpr std::array<int, 3> kRemoved = { -1, -1, -1 };
+
+// Directed edge -> triangle, open addressing in one array: filled with every edge of the surface on
+// a round of edits' first lookup between touched vertices, so without a node allocation per edge (a
+// std::unordered_map made that fill most of a step's splits' cost).
+class EdgeTable
+{
+public:
+  void reserve(std::size_t edges)
+  {
+    std::size_t size = 16;
+    while (size < 2 * edges)
+    {
+      size <<= 1;
+    }
+    this->Slots.assign(size, { kEmpty, -1 });
+    this->Used = 0;
+  }
+  int find(std::uint64_t key) const
+  {
+    if (this->Slots.empty())
+    {
+      return -1;
+    }
+    for (std::size_t s = this->first(key);; s = (s + 1) & (this->Slots.size() - 1))
+    {
+      if (this->Slots[s].first == key)
+        return this->Slots[s].second;
+      if (this->Slots[s].first == kEmpty)
+        return -1;
+    }
+  }
+  void set(std::uint64_t key, int value)
+  {
+    if (this->Slots.empty())
+    {
+      this->reserve(8);
+    }
+    std::size_t free = this->Slots.size();
+    std::size_t s = this->first(key);
+    for (;; s = (s + 1) & (this->Slots.size() - 1))
+    {
+      if (this->Slots[s].first == key)
+      {
+        this->Slots[s].second = value;
+        return;
+      }
+      if (this->Slots[s].first == kGone && free == this->Slots.size())
+        free = s;
+      if (this->Slots[s].first == kEmpty)
+        break;
+    }
+    if (free == this->Slots.size())
+    {
+      free = s;
+      ++this->Used;
+    }
+    this->Slots[free] = { key, value };
+    if (2 * this->Used > this->Slots.size())
+    {
+      this->grow();
+    }
+  }
+  // Removes the key if it maps to value.
+  void erase(std::uint64_t key, int value)
+  {
+    for (std::size_t s = this->first(key); !this->Slots.empty(); s = (s + 1) & (this->Slots.size() - 1))
+    {
+      if (this->Slots[s].first == key)
+      {
+        if (this->Slots[s].second == value)
+          this->Slots[s].first = kGone; // keeps the probe chains through it
+        return;
+      }
+      if (this->Slots[s].first == kEmpty)
+        return;
+    }
+  }
+
+private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t(0), kGone = kEmpty - 1;
+  std::size_t first(std::uint64_t key) const
+  {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (this->Slots.size() - 1);
+  }
+  void grow()
+  {
+    std::vector<std::pair<std::uint64_t, int>> old;
+    old.swap(this->Slots);
+    this->reserve(old.size());
+    for (const auto& slot : old)
+    {
+      if (slot.first != kEmpty && slot.first != kGone)
+        this->set(slot.first, slot.second);
+    }
+  }
+  std::vector<std::pair<std::uint64_t, int>> Slots;
+  std::size_t Used = 0; // slots not empty (tombstones included)
+};
 } // namespace
 
 // What the edits since the last commit need: which vertices they touched (the rings of the others are
@@ -127,7 +226,7 @@ struct SurfaceMesh::EditState
 {
   std::vector<char> touched; // per committed vertex
   bool mapped = false;
-  std::unordered_map<std::uint64_t, int> edgeTriangle;
+  EdgeTable edgeTriangle;
   std::vector<char> removedVertex;
   int removals = 0; // vertices and triangles removed
   std::vector<std::array<int, 3>> committedTriangles;
@@ -295,13 +394,12 @@ int SurfaceMesh::triangleOf(int a, int b) const
       const auto& v = this->Triangles[t];
       for (int k = 0; k < 3 && v[0] >= 0; ++k)
       {
-        e.edgeTriangle[edgeKey(v[k], v[(k + 1) % 3])] = t;
+        e.edgeTriangle.set(edgeKey(v[k], v[(k + 1) % 3]), t);
       }
     }
     e.mapped = true;
   }
-  const auto found = e.edgeTriangle.find(edgeKey(a, b));
-  return found == e.edgeTriangle.end() ? -1 : found->second;
+  return e.edgeTriangle.find(edgeKey(a, b));
 }
 
 void SurfaceMesh::setTriangle(int t, const std::array<int, 3>& triangle)
@@ -320,11 +418,7 @@ void SurfaceMesh::setTriangle(int t, const std::array<int, 3>& triangle)
   }
   for (int k = 0; k < 3 && e.mapped && old[0] >= 0; ++k)
   {
-    const auto found = e.edgeTriangle.find(edgeKey(old[k], old[(k + 1) % 3]));
-    if (found != e.edgeTriangle.end() && found->second == t)
-    {
-      e.edgeTriangle.erase(found);
-    }
+    e.edgeTriangle.erase(edgeKey(old[k], old[(k + 1) % 3]), t);
   }
   if (t == this->triangleCount())
   {
@@ -333,7 +427,7 @@ void SurfaceMesh::setTriangle(int t, const std::array<int, 3>& triangle)
   this->Triangles[t] = triangle;
   for (int k = 0; k < 3 && e.mapped && triangle[0] >= 0; ++k)
   {
-    e.edgeTriangle[edgeKey(triangle[k], triangle[(k + 1) % 3])] = t;
+    e.edgeTriangle.set(edgeKey(triangle[k], triangle[(k + 1) % 3]), t);
   }
 }
 

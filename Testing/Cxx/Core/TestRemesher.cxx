@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace
@@ -142,6 +143,25 @@ void anchorsStay()
                                                                << kept(plain) << ", " << without << " collapses)");
 }
 
+// Passes after the first look only at the edges the last pass found short or moved an end of, and
+// splits only at the new vertices: yet a fresh pass over every edge afterwards finds nothing left, on
+// a level-5 sphere coarsened to twice its edge length (a dozen collapse passes, as a contour start
+// takes) and on a level-0 one refined, whose splits take several passes.
+void laterPassesMissNothing()
+{
+  SurfaceMesh fine = testing::meshOf(icosphere(5));
+  const double L = 0.08; // twice the edges of level 5 on the unit sphere
+  const int collapses = collapseShortEdges(fine, 0.8 * L, 4.0 / 3.0 * L, CollapseSettings());
+  const int again = collapseShortEdges(fine, 0.8 * L, 4.0 / 3.0 * L, CollapseSettings());
+  SurfaceMesh coarse = testing::meshOf(icosphere(0));
+  const int splits = splitLongEdges(coarse, 0.1);
+  const int more = splitLongEdges(coarse, 0.1);
+  std::printf("later passes: %d collapses (10242 -> %d vertices), then %d; %d splits, then %d\n", collapses,
+    fine.vertexCount(), again, splits, more);
+  SW_CHECK(collapses > 5000 && again == 0, "a fresh collapse pass after the incremental ones finds no edge left");
+  SW_CHECK(splits > 100 && more == 0, "a fresh split pass after the incremental ones finds no edge left");
+}
+
 // Adaptive sizing: on a sphere of radius R every vertex gets the chord-error length sqrt(6 e R - 3 e^2);
 // an ellipsoid remeshed adaptively gets shorter edges at its sharp ends than at its flat waist, and
 // more of them than with L alone there.
@@ -225,6 +245,7 @@ int TestRemesher(int, char*[])
     towards(5, 0.12, "coarsen");
     dataFollows();
     anchorsStay();
+    laterPassesMissNothing();
     adaptive();
     refused();
   });

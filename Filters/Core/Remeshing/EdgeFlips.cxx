@@ -44,14 +44,14 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
       const int j = mesh.ring(p);
       const int c = mesh.ring(mesh.next(i, p)), d = mesh.ring(mesh.previous(i, p));
       if (j < i || touched[i] || touched[j] || touched[c] || touched[d] || mesh.valence(i) <= 3 ||
-        mesh.valence(j) <= 3 || c == d || mesh.ringEntry(c, d) >= 0)
+        mesh.valence(j) <= 3 || c == d)
       {
         continue;
       }
       // Only non-Delaunay edges (angles at c and d summing past pi) can gain; this test is cheap.
       const Vec3 ci = x[i] - x[c], cj = x[j] - x[c], di = x[i] - x[d], dj = x[j] - x[d];
       const double sinC = ci.cross(cj).norm(), sinD = di.cross(dj).norm();
-      if (ci.dot(cj) * sinD + di.dot(dj) * sinC >= 0) // sin(C + D) >= 0
+      if (ci.dot(cj) * sinD + di.dot(dj) * sinC >= 0 || mesh.ringEntry(c, d) >= 0) // sin(C + D) >= 0
       {
         continue;
       }

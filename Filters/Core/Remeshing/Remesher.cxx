@@ -192,12 +192,12 @@ int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings)
     const int p = mesh.ringEntry(i, j);
     const int c = mesh.ring(mesh.next(i, p)), d = mesh.ring(mesh.previous(i, p));
     if (touched[i] || touched[j] || touched[c] || touched[d] || mesh.valence(i) <= 3 || mesh.valence(j) <= 3 ||
-      c == d || mesh.ringEntry(c, d) >= 0)
+      c == d)
     {
       continue;
     }
     const int vi = mesh.valence(i), vj = mesh.valence(j), vc = mesh.valence(c), vd = mesh.valence(d);
-    if (deviation(vi - 1, vj - 1, vc + 1, vd + 1) >= deviation(vi, vj, vc, vd) ||
+    if (deviation(vi - 1, vj - 1, vc + 1, vd + 1) >= deviation(vi, vj, vc, vd) || mesh.ringEntry(c, d) >= 0 ||
       !flipKeepsShape(x, i, j, c, d, cosMax) || (settings.avoidCrossings && guard.flipCrosses(i, j, c, d)) ||
       !mesh.flip(i, j))
     {

@@ -476,7 +476,8 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
     return !crosses(facetOf(previous, triangles[s]), facetOf(previous, triangles[t]), margin);
   };
   std::vector<std::pair<int, int>> found = crossingsOf(grid, next, triangles, moving);
-  std::vector<std::vector<int>> trianglesAt; // per vertex, built when a first vertex is held
+  // Per vertex v its triangles trianglesAt[at[v] .. at[v + 1]), built when a first vertex is held.
+  std::vector<int> at, trianglesAt;
   int held = 0;
   while (!found.empty())
   {
@@ -504,14 +505,27 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
       break;
     }
     held += static_cast<int>(moved.size());
-    if (trianglesAt.empty())
+    if (at.empty())
     {
-      trianglesAt.resize(next.size());
+      at.assign(next.size() + 1, 0);
+      for (const auto& tri : triangles)
+      {
+        for (int v : tri)
+        {
+          ++at[v + 1];
+        }
+      }
+      for (std::size_t v = 0; v < next.size(); ++v)
+      {
+        at[v + 1] += at[v];
+      }
+      trianglesAt.resize(at.back());
+      std::vector<int> fill(at.begin(), at.end() - 1);
       for (int t = 0; t < nt; ++t)
       {
         for (int v : triangles[t])
         {
-          trianglesAt[v].push_back(t);
+          trianglesAt[fill[v]++] = t;
         }
       }
     }
@@ -519,7 +533,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
     std::vector<int> changed;
     for (int v : moved)
     {
-      changed.insert(changed.end(), trianglesAt[v].begin(), trianglesAt[v].end());
+      changed.insert(changed.end(), trianglesAt.begin() + at[v], trianglesAt.begin() + at[v + 1]);
     }
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());

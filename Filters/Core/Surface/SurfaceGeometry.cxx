@@ -8,15 +8,6 @@
 namespace shrinkwrap
 {
 
-namespace
-{
-double cotangent(const Vec3& u, const Vec3& v)
-{
-  const double s = u.cross(v).norm();
-  return s > 0 ? u.dot(v) / s : 0.0; // a degenerate angle contributes nothing; the step reports it
-}
-} // namespace
-
 std::array<double, 3> triangleAngles(const Vec3& a, const Vec3& b, const Vec3& c)
 {
   return { angleBetween(b - a, c - a), angleBetween(c - b, a - b), angleBetween(a - c, b - c) };
@@ -59,8 +50,10 @@ void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& x, Surfac
       for (int k = 0; k < 3; ++k)
       {
         const Vec3 u = x[v[(k + 1) % 3]] - x[v[k]], w = x[v[(k + 2) % 3]] - x[v[k]];
-        terms[t].angle[k] = angleBetween(u, w);
-        terms[t].cotangent[k] = cotangent(u, w);
+        // angleBetween and cotangent from one sine and cosine (times |u| |w|)
+        const double sine = u.cross(w).norm(), cosine = u.dot(w);
+        terms[t].angle[k] = std::atan2(sine, cosine);
+        terms[t].cotangent[k] = sine > 0 ? cosine / sine : 0.0; // degenerate: nothing (the step reports it)
       }
     }
   });

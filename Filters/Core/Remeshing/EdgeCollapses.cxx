@@ -127,7 +127,8 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
       continue;
     }
     // The shortest edge (a, b), merged at its midpoint; but a vertex of valence 3 beside it (which
-    // would be left with two triangles) goes first, into a, where it leaves one triangle.
+    // would be left with two triangles) goes first, into a, where it leaves one triangle. Anchored
+    // ends keep their places (mergeOf).
     int a = t[0], b = t[1];
     for (int e = 1; e < 3; ++e)
     {
@@ -143,7 +144,9 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
     const int lone = mesh.valence(c) == 3 ? c : (mesh.valence(d) == 3 ? d : -1);
     if (lone >= 0)
     {
-      collapse(a, lone, x[a]);
+      // into a where it stands, unless the lone vertex holds more of a rim (kAnchorData)
+      const Merge merge = mergeOf(x, anchors, a, lone);
+      collapse(merge.keep, merge.gone, merge.keep == a ? x[a] : merge.at);
     }
     else
     {

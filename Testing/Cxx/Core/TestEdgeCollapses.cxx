@@ -6,6 +6,8 @@
 
 #include <vtkSMPTools.h>
 
+#include <algorithm>
+
 namespace
 {
 using namespace shrinkwrap;
@@ -78,12 +80,41 @@ void edgeCollapses()
     "no collapse leaves fewer than four vertices or breaks the link condition");
 }
 
+// A needle (a, b) beside a vertex of valence 3 merges that vertex away first, into a where a stands;
+// but where the lone vertex holds a rim (kAnchorData), a merges into it there instead.
+void loneVertexAnchored()
+{
+  TriangleSurface cap = icosphere(2);
+  const std::array<int, 3> face = cap.triangles[7];
+  const int v = static_cast<int>(cap.points.size());
+  const Vec3 lone = (cap.points[face[0]] + cap.points[face[1]] + cap.points[face[2]]) / 3;
+  cap.points.push_back(lone);
+  cap.triangles[7] = { face[0], face[1], v };
+  cap.triangles.push_back({ face[1], face[2], v });
+  cap.triangles.push_back({ face[2], face[0], v });
+  cap.points[face[0]] = cap.points[face[1]] + 0.01 * (cap.points[face[0]] - cap.points[face[1]]);
+  auto keeps = [&](bool anchored) {
+    SurfaceMesh mesh = meshOf(cap);
+    if (anchored)
+    {
+      mesh.vertexData(kAnchorData)[v] = Vec3(1, 0, 0);
+    }
+    const int n = collapseEdges(mesh, CollapseSettings());
+    const bool found = std::find(mesh.points().begin(), mesh.points().end(), lone) != mesh.points().end();
+    std::printf("lone vertex %s: %d collapse(s), its position %s\n", anchored ? "anchored" : "free", n,
+      found ? "kept" : "gone");
+    return n > 0 && found;
+  };
+  SW_CHECK(keeps(true) && !keeps(false), "an anchored lone vertex keeps its place; a free one merges into a");
+}
+
 } // namespace
 
 int TestEdgeCollapses(int, char*[])
 {
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
     edgeCollapses();
+    loneVertexAnchored();
   });
   return testing::finish("TestEdgeCollapses");
 }

@@ -144,9 +144,10 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
     const int lone = mesh.valence(c) == 3 ? c : (mesh.valence(d) == 3 ? d : -1);
     if (lone >= 0)
     {
-      // into a where it stands, unless the lone vertex holds more of a rim (kAnchorData)
+      // into a where it stands, unless the lone vertex holds more of a rim (kAnchorData): the kept
+      // vertex stays where it is
       const Merge merge = mergeOf(x, anchors, a, lone);
-      collapse(merge.keep, merge.gone, merge.keep == a ? x[a] : merge.at);
+      collapse(merge.keep, merge.gone, x[merge.keep]);
     }
     else
     {

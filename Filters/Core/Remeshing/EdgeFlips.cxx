@@ -51,7 +51,8 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
       // Only non-Delaunay edges (angles at c and d summing past pi) can gain; this test is cheap.
       const Vec3 ci = x[i] - x[c], cj = x[j] - x[c], di = x[i] - x[d], dj = x[j] - x[d];
       const double sinC = ci.cross(cj).norm(), sinD = di.cross(dj).norm();
-      if (ci.dot(cj) * sinD + di.dot(dj) * sinC >= 0 || mesh.ringEntry(c, d) >= 0) // sin(C + D) >= 0
+      // sin(C + D) >= 0: Delaunay already; (c, d) already an edge: the flip would pinch the surface.
+      if (ci.dot(cj) * sinD + di.dot(dj) * sinC >= 0 || mesh.ringEntry(c, d) >= 0)
       {
         continue;
       }

@@ -355,7 +355,7 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
     {
       box = use.polygons ? box : Box();
       box.extend(Box::around(points));
-      chosen = withPointSizes(chosen, box, medianNeighbourDistance(points), givenStart);
+      chosen = withPointSizes(chosen, box, this->PointSpacing(target, points.size(), [&] { return medianNeighbourDistance(points); }), givenStart);
     }
     else if (!use.polygons) // no points: no field (StartSession says why); beside polygons: the polygons'
     {
@@ -382,6 +382,18 @@ int vtkShrinkWrapFilter::RequestUpdateExtent(
     }
   }
   return 1;
+}
+
+double vtkShrinkWrapFilter::PointSpacing(
+  const vtkDataObject* target, std::size_t points, const std::function<double()>& measure)
+{
+  const vtkMTimeType key = this->SessionKey();
+  SpacingCache& c = this->Spacing;
+  if (c.target != target || c.key != key || c.points != points)
+  {
+    c = { target, key, points, measure() };
+  }
+  return c.spacing;
 }
 
 vtkMTimeType vtkShrinkWrapFilter::SessionKey()
@@ -502,7 +514,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
     vtkErrorMacro("The target has NaN or infinite coordinates.");
     return false;
   }
-  const double spacing = wrapsPoints ? medianNeighbourDistance(points) : 0.0;
+  const double spacing = wrapsPoints ? this->PointSpacing(target, points.size(), [&] { return medianNeighbourDistance(points); }) : 0.0;
   const WrapSettings settings = (wrapsPoints ? withPointSizes(this->CoreSettings(), targetBox, spacing, initial != nullptr)
                                              : this->CoreSettings())
                                   .resolved(targetBox);

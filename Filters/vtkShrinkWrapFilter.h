@@ -401,6 +401,8 @@ private:
   vtkTimeStamp RunAgainTime;
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
+  // The spacing of a target's `points` wrapped points as `measure` gives it, measured once (Spacing).
+  double PointSpacing(const vtkDataObject* target, std::size_t points, const std::function<double()>& measure);
   bool TargetAndField(vtkInformationVector** inputVector, vtkDataObject*& target, vtkImageData*& field);
   // One surface: of the target, or of all a composite target's blocks together.
   void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
@@ -431,6 +433,15 @@ private:
   vtkMTimeType BlocksKey = 0;
   std::vector<int> BlockPieces; // the piece that wraps each block of a composite every rank holds
   int BlockPiecesOf = 0;        // among so many pieces
+  // The wrapped points' spacing, kept while the filter and its inputs stay as they were when it was
+  // measured: RequestInformation and RequestData both need it.
+  struct SpacingCache
+  {
+    const vtkDataObject* target = nullptr;
+    vtkMTimeType key = 0;
+    std::size_t points = 0;
+    double spacing = 0;
+  } Spacing;
 
 };
 

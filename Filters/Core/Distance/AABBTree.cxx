@@ -9,11 +9,6 @@
 namespace shrinkwrap
 {
 
-namespace
-{
-constexpr int kMaxDepth = 64;
-} // namespace
-
 // Buffers of the split search, reused from node to node (a tree has tens of thousands of nodes).
 struct AABBTree::SplitScratch
 {
@@ -110,7 +105,7 @@ void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int ind
     return;
   }
   const int mid =
-    count > s.leafSize && depth < kMaxDepth ? this->splitPosition(prims, begin, end, centroids, s, scratch) : -1;
+    count > s.leafSize && depth < kMaxHierarchyDepth ? this->splitPosition(prims, begin, end, centroids, s, scratch) : -1;
   if (mid <= begin || mid >= end)
   {
     nodes[index] = { box, begin, count };
@@ -279,57 +274,21 @@ ClosestHit AABBTree::closestPoint(const Vec3& p, double maxSquaredDistance) cons
   {
     return hit;
   }
-  // Nodes wait with their boxes' distances, computed once, when their parent was opened.
-  struct Pending
-  {
-    int node;
-    double squaredDistance;
-  };
-  Pending stack[2 * kMaxDepth + 2];
-  int top = 0;
-  stack[top++] = { 0, this->Nodes.front().box.squaredDistance(p) };
-  while (top > 0)
-  {
-    const Pending pending = stack[--top];
-    if (pending.squaredDistance >= hit.squaredDistance)
+  searchNearest(this->Nodes, p, hit.squaredDistance, [&](int k) {
+    // No point of a triangle is nearer than its plane.
+    const double h = this->Planes[k].normal.dot(p) - this->Planes[k].offset;
+    if (h * h >= hit.squaredDistance)
     {
-      continue;
+      return;
     }
-    const Node& node = this->Nodes[pending.node];
-    if (node.count > 0)
+    const auto& c = this->Corners[k];
+    const TrianglePoint tp = closestPointOnTriangle(p, c[0], c[1], c[2]);
+    const double d2 = (tp.point - p).squaredNorm();
+    if (d2 < hit.squaredDistance)
     {
-      for (int k = node.first; k < node.first + node.count; ++k)
-      {
-        // No point of a triangle is nearer than its plane.
-        const double h = this->Planes[k].normal.dot(p) - this->Planes[k].offset;
-        if (h * h >= hit.squaredDistance)
-        {
-          continue;
-        }
-        const auto& c = this->Corners[k];
-        const TrianglePoint tp = closestPointOnTriangle(p, c[0], c[1], c[2]);
-        const double d2 = (tp.point - p).squaredNorm();
-        if (d2 < hit.squaredDistance)
-        {
-          hit = { this->Order[k], d2, tp.point, tp.feature };
-        }
-      }
-      continue;
+      hit = { this->Order[k], d2, tp.point, tp.feature };
     }
-    // Push the farther child first so that the nearer one is searched first and prunes more.
-    const int l = node.first, r = node.first + 1;
-    const double dl = this->Nodes[l].box.squaredDistance(p), dr = this->Nodes[r].box.squaredDistance(p);
-    if (dl <= dr)
-    {
-      stack[top++] = { r, dr };
-      stack[top++] = { l, dl };
-    }
-    else
-    {
-      stack[top++] = { l, dl };
-      stack[top++] = { r, dr };
-    }
-  }
+  });
   return hit;
 }
 

@@ -6,6 +6,7 @@
 #ifndef ShrinkWrap_AABBTree_h
 #define ShrinkWrap_AABBTree_h
 
+#include "BoxHierarchy.h"
 #include "TriangleDistance.h"
 #include "TriangleSoup.h"
 
@@ -44,12 +45,7 @@ public:
   const Box& bounds() const { return this->Nodes.front().box; }
 
   // The hierarchy itself, for other queries over the same nodes (WindingNumber.h). Node 0 is the root.
-  struct Node
-  {
-    Box box;
-    int first; // leaf: first triangle in Order; inner: index of the left child (right = first + 1)
-    int count; // leaf: number of triangles; inner: 0
-  };
+  using Node = HierarchyNode; // a leaf's slots index Order
   const std::vector<Node>& nodes() const { return this->Nodes; }
   int triangleAt(int slot) const { return this->Order[slot]; } // the soup's triangle in a leaf slot
 

@@ -18,12 +18,29 @@ PointGrid::PointGrid(const std::vector<Vec3>& points, double cell)
     keyed[i] = { key(this->binOf(points[i])), static_cast<int>(i) };
   }
   std::sort(keyed.begin(), keyed.end());
+  std::size_t size = 2;
+  while (size < 2 * keyed.size())
+  {
+    size <<= 1;
+  }
+  this->Bins.assign(size, Slot());
+  this->Mask = size - 1;
   this->Order.resize(keyed.size());
+  std::size_t last = 0; // the slot of the bin being filled
   for (std::size_t s = 0; s < keyed.size(); ++s)
   {
     this->Order[s] = keyed[s].second;
-    auto& range = this->Bins.try_emplace(keyed[s].first, static_cast<std::uint32_t>(s), 0).first->second;
-    range.second = static_cast<std::uint32_t>(s + 1);
+    if (s == 0 || keyed[s].first != keyed[s - 1].first)
+    {
+      std::size_t slot = this->slotOf(keyed[s].first);
+      while (this->Bins[slot].key >= 0)
+      {
+        slot = (slot + 1) & this->Mask;
+      }
+      this->Bins[slot] = { keyed[s].first, static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(s) };
+      last = slot;
+    }
+    this->Bins[last].end = static_cast<std::uint32_t>(s + 1);
   }
 }
 
@@ -37,17 +54,6 @@ PointGrid::Bin PointGrid::binOf(const Vec3& p) const
     b[a] = static_cast<std::int64_t>(std::clamp(u, -1.0e6, 1.0e6));
   }
   return b;
-}
-
-double PointGrid::neighbourDistance(int id, double radius) const
-{
-  double best = std::numeric_limits<double>::infinity();
-  this->forEachWithin(this->Points[id], radius, [&](int other) {
-    const double d = (this->Points[other] - this->Points[id]).squaredNorm();
-    if (d > 0)
-      best = std::min(best, d);
-  });
-  return std::sqrt(best);
 }
 
 } // namespace shrinkwrap

@@ -1,6 +1,5 @@
-// Points binned in a uniform hash grid, for the queries the AABB tree does not answer: every point
-// within a radius (the neighbourhood a local surface fit needs, PointSurface.h) and the nearest
-// neighbour of a point among the others (the sampling's spacing).
+// Points binned in a uniform hash grid, for the query the k-d tree (PointTree.h) does not answer:
+// every point within a radius, the neighbourhood a local surface fit needs (PointSurface.h).
 #ifndef ShrinkWrap_PointGrid_h
 #define ShrinkWrap_PointGrid_h
 
@@ -8,7 +7,6 @@
 
 #include <array>
 #include <cstdint>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -32,10 +30,10 @@ public:
       for (std::int64_t j = low[1]; j <= high[1]; ++j)
         for (std::int64_t i = low[0]; i <= high[0]; ++i)
         {
-          const auto range = this->Bins.find(key({ i, j, k }));
-          if (range == this->Bins.end())
+          const Slot* bin = this->find(key({ i, j, k }));
+          if (!bin)
             continue;
-          for (std::uint32_t s = range->second.first; s < range->second.second; ++s)
+          for (std::uint32_t s = bin->begin; s < bin->end; ++s)
           {
             const int id = this->Order[s];
             if ((this->Points[id] - x).squaredNorm() <= r2)
@@ -43,9 +41,6 @@ public:
           }
         }
   }
-  // The distance from point `id` to its nearest point within `radius` apart from the points at its
-  // position (duplicates say nothing of the spacing); infinity: none.
-  double neighbourDistance(int id, double radius) const;
 
 private:
   using Bin = std::array<std::int64_t, 3>;
@@ -56,11 +51,33 @@ private:
     return static_cast<std::int64_t>((bits(b[0]) << 42) | (bits(b[1]) << 21) | bits(b[2]));
   }
 
+  // The occupied bins in an open-addressing table (a lookup per bin of every query: no node chasing).
+  struct Slot
+  {
+    std::int64_t key = -1; // -1: empty (keys are non-negative)
+    std::uint32_t begin = 0, end = 0; // the bin's range in Order
+  };
+  std::size_t slotOf(std::int64_t k) const
+  {
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(k) * 0x9E3779B97F4A7C15ull) >> 32) & this->Mask;
+  }
+  const Slot* find(std::int64_t k) const
+  {
+    for (std::size_t s = this->slotOf(k);; s = (s + 1) & this->Mask)
+    {
+      if (this->Bins[s].key == k)
+        return &this->Bins[s];
+      if (this->Bins[s].key < 0)
+        return nullptr;
+    }
+  }
+
   const std::vector<Vec3>& Points;
   Vec3 Origin;
   double Cell;
   std::vector<int> Order; // point indices sorted by bin
-  std::unordered_map<std::int64_t, std::pair<std::uint32_t, std::uint32_t>> Bins; // bin -> range in Order
+  std::vector<Slot> Bins; // at most half full
+  std::size_t Mask = 0;
 };
 
 } // namespace shrinkwrap

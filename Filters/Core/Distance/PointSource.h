@@ -1,12 +1,11 @@
 // A point set as a distance source (DistanceSource.h), for scans and sampled points (issue #13): the
-// distance to the nearest input point, unsigned (points have no sides). Each point is kept as a
-// triangle with three equal corners, so the AABB tree's nearest-triangle query is the nearest-point
-// query and band, sweeps and field come unchanged from Algorithm 1.
+// distance to the nearest input point, unsigned (points have no sides), from a k-d tree (PointTree.h)
+// where a mesh has its AABB tree, so that band, sweeps and field come unchanged from Algorithm 1.
 #ifndef ShrinkWrap_PointSource_h
 #define ShrinkWrap_PointSource_h
 
-#include "AABBTree.h"
 #include "DistanceSource.h"
+#include "PointTree.h"
 
 #include <vector>
 
@@ -17,20 +16,21 @@ class PointSource : public DistanceSource
 {
 public:
   explicit PointSource(const std::vector<Vec3>& points);
-  Box bounds() const override { return this->Points.bounds(); }
+  Box bounds() const override { return this->Bounds; }
   // The cells that hold a point (Algorithm 2's outline reduces to that).
   bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const override;
   // The nearest input point; side 0 and not sure: a point has no inside.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
-  const std::vector<Vec3>& points() const { return this->Points.points; }
+  const std::vector<Vec3>& points() const { return this->Points; }
 
 private:
-  TriangleSoup Points; // one triangle {i, i, i} per point
-  AABBTree Tree;
+  std::vector<Vec3> Points;
+  Box Bounds;
+  PointTree Tree;
 };
 
 // The median distance from a point to its nearest neighbour at another position (over up to 20,000
-// of the points, by a hash grid); 0 when the points have no such neighbours (all coincide).
+// of the points); 0 when the points have no such neighbours (all coincide).
 double medianNeighbourDistance(const std::vector<Vec3>& points);
 
 } // namespace shrinkwrap

@@ -472,7 +472,8 @@ void Evolver::adjustConnectivity(StepReport& report)
   if (s.flips.avoidCrossings || s.collapses.avoidCrossings)
   {
     // The edits behind a crossing lie within about two edges of it.
-    editCheckedOnce(this->Mesh, TriangleGrid::cellSizeFor(this->Mesh.points(), this->Mesh.triangles()), edit);
+    editCheckedOnce(this->Mesh, TriangleGrid::cellSizeFor(this->Mesh.points(), this->Mesh.triangles()),
+      this->GuardedBoxes, edit);
   }
   else
   {

@@ -207,6 +207,7 @@ private:
   Vec3 Center;
   Status Valid;
   std::vector<Vec3> RimSamples; // the target's rims, in the caller's units (RimCoverage.h)
+  std::vector<Box> GuardedBoxes; // where the last step's edits needed guarding (CheckedEdits.h)
   int Steps = 0;
   std::vector<double> Potential; // the volume redistribution's warm start
   std::unique_ptr<Solver> Linear;

@@ -235,6 +235,11 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
   {
     siteOfNode[near[s]] = found[s] ? static_cast<std::int32_t>(s) : -1;
   }
+  std::vector<std::int32_t> nearSlot(lattice.nodeCount(), -1); // the passes below overwrite siteOfNode
+  for (std::size_t s = 0; s < near.size(); ++s)
+  {
+    nearSlot[near[s]] = static_cast<std::int32_t>(s);
+  }
   std::vector<float> e(lattice.nodeCount());
   sweepClosestPoints(lattice, sites, siteOfNode.data(), e.data(), Progress());
   // Inside D, e >= r - d (the ball of radius r - d about a node lies in D), with equality where no
@@ -251,10 +256,17 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
       if (!inside[n])
         continue;
       double nearest = e[n];
-      Vec3 site;
-      if (values[n] >= 0 && r - e[n] < values[n] - hair && boundaryPoint(field, target, radius, inside, fillCavities, n, site))
+      if (values[n] >= 0 && r - e[n] < values[n] - hair)
       {
-        nearest = std::min(nearest, (site - lattice.position(lattice.coordinates(n))).norm());
+        // A node near the boundary has its boundary point from above.
+        const std::int32_t s = nearSlot[n];
+        Vec3 site;
+        const bool has = s >= 0 ? (site = sites[s], found[s] != 0)
+                                : boundaryPoint(field, target, radius, inside, fillCavities, n, site);
+        if (has)
+        {
+          nearest = std::min(nearest, (site - lattice.position(lattice.coordinates(n))).norm());
+        }
       }
       values[n] = std::min(values[n], static_cast<float>(radius - nearest));
     }

@@ -2,9 +2,8 @@
 // plane it is exact; on a randomly sampled unit sphere the surface point under a query lies on the
 // sphere to a small fraction of the sampling's spacing, holes of the random sample included (the plane
 // alone is biased inwards by about h^2 / 2, the quadric removes that); with Gaussian noise of sigma
-// it lies well inside the noise band; over a hole far wider than h it finds nothing (the grid decides);
-// and medianNeighbourDistance / PointGrid agree with brute force, duplicated points aside.
-#include "PointGrid.h"
+// it lies well inside the noise band; over a hole far wider than h it finds nothing (the grid decides).
+// (The point queries under it: TestPointTree.)
 #include "PointSurface.h"
 #include "TestUtilities.h"
 
@@ -60,38 +59,6 @@ Landing onSphere(const PointSurface& surface, int queries)
   return l;
 }
 
-void neighbourDistances()
-{
-  const std::vector<Vec3> points = spherePoints(3000, 0, 5);
-  std::vector<double> exact;
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < points.size(); ++j)
-    {
-      best = j == i ? best : std::min(best, (points[i] - points[j]).norm());
-    }
-    exact.push_back(best);
-  }
-  const PointGrid grid(points, 0.05);
-  int wrong = 0;
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    const double d = grid.neighbourDistance(static_cast<int>(i), 0.2);
-    wrong += exact[i] <= 0.2 ? d != exact[i] : d != std::numeric_limits<double>::infinity();
-  }
-  SW_CHECK(wrong == 0, "PointGrid: the nearest neighbour within a radius equals brute force (" << wrong << " wrong)");
-  std::vector<double> sorted = exact;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double median = medianNeighbourDistance(points);
-  SW_CHECK(median == sorted[sorted.size() / 2], "medianNeighbourDistance " << median << " equals brute force's "
-                                                                          << sorted[sorted.size() / 2]);
-  // Every point twice (the vertices of an unwelded soup): the same spacing, not 0.
-  std::vector<Vec3> twice = points;
-  twice.insert(twice.end(), points.begin(), points.end());
-  SW_CHECK(medianNeighbourDistance(twice) == median, "medianNeighbourDistance ignores duplicates ("
-                                                        << medianNeighbourDistance(twice) << ")");
-}
 } // namespace
 
 int TestPointSurface(int, char*[])
@@ -162,6 +129,5 @@ int TestPointSurface(int, char*[])
     SW_CHECK(beyond.found && beyond.trust == 1 && std::abs(beyond.point.z()) < 1e-9,
       "holed plane: the plane beyond the rim (z " << beyond.point.z() << ")");
   }
-  neighbourDistances();
   return testing::finish("TestPointSurface");
 }

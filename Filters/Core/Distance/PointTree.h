@@ -1,0 +1,39 @@
+// A k-d tree over points (issue #13): the nearest point to a query, for a point set's distance
+// (PointSource.h) and for its spacing, a point's nearest neighbour at another position. Splits at the
+// median along the box's longest side, so that it is balanced and built in O(n log n); the points are
+// kept in leaf order for locality. Points with a NaN or infinite coordinate are left out.
+#ifndef ShrinkWrap_PointTree_h
+#define ShrinkWrap_PointTree_h
+
+#include "BoxHierarchy.h"
+
+#include <limits>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+class PointTree
+{
+public:
+  explicit PointTree(const std::vector<Vec3>& points, int leafSize = 8);
+
+  struct Hit
+  {
+    int id = -1; // the input point's index; -1: none within the search radius
+    double squaredDistance = std::numeric_limits<double>::infinity();
+  };
+  // The nearest point to x within sqrt(maxSquaredDistance); with `apart`, the nearest at another
+  // position than x's (a point's neighbour, its duplicates left out).
+  Hit nearest(const Vec3& x, double maxSquaredDistance = std::numeric_limits<double>::infinity(),
+    bool apart = false) const;
+
+private:
+  std::vector<HierarchyNode> Nodes;
+  std::vector<Vec3> Sorted; // the points in leaf order
+  std::vector<int> Ids;     // their input indices
+};
+
+} // namespace shrinkwrap
+
+#endif

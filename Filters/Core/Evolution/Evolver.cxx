@@ -472,8 +472,17 @@ void Evolver::adjustConnectivity(StepReport& report)
   if (s.flips.avoidCrossings || s.collapses.avoidCrossings)
   {
     // The edits behind a crossing lie within about two edges of it.
-    editCheckedOnce(this->Mesh, TriangleGrid::cellSizeFor(this->Mesh.points(), this->Mesh.triangles()),
-      this->GuardedBoxes, edit);
+    std::vector<Box> recent;
+    for (const auto& boxes : this->RecentCrossings)
+    {
+      recent.insert(recent.end(), boxes.begin(), boxes.end());
+    }
+    this->RecentCrossings.push_back(
+      editCheckedOnce(this->Mesh, TriangleGrid::cellSizeFor(this->Mesh.points(), this->Mesh.triangles()), recent, edit));
+    if (this->RecentCrossings.size() > kRememberedSteps)
+    {
+      this->RecentCrossings.pop_front();
+    }
   }
   else
   {

@@ -23,6 +23,7 @@
 #include "SurfaceGeometry.h"
 #include "TargetDistance.h"
 
+#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -207,7 +208,9 @@ private:
   Vec3 Center;
   Status Valid;
   std::vector<Vec3> RimSamples; // the target's rims, in the caller's units (RimCoverage.h)
-  std::vector<Box> GuardedBoxes; // where the last step's edits needed guarding (CheckedEdits.h)
+  // Where the edits of the last kRememberedSteps steps crossed (CheckedEdits.h): guarded from the start.
+  static constexpr std::size_t kRememberedSteps = 3;
+  std::deque<std::vector<Box>> RecentCrossings;
   int Steps = 0;
   std::vector<double> Potential; // the volume redistribution's warm start
   std::unique_ptr<Solver> Linear;

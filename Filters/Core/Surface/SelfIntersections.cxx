@@ -304,8 +304,23 @@ const TriangleGrid& CrossingGuard::grid()
   if (!this->Grid)
   {
     this->Grid = std::make_unique<TriangleGrid>(this->Points, this->Triangles);
+    for (std::size_t e = 0; e < this->Edits.size(); ++e)
+    {
+      this->index(static_cast<int>(e));
+    }
   }
   return *this->Grid;
+}
+
+void CrossingGuard::index(int e)
+{
+  const TriangleGrid::Range r = this->Grid->rangeOf(this->Edits[e].box);
+  for (std::uint32_t k = r[2]; k <= r[5]; ++k)
+    for (std::uint32_t j = r[1]; j <= r[4]; ++j)
+      for (std::uint32_t i = r[0]; i <= r[3]; ++i)
+      {
+        this->EditCells[TriangleGrid::key(i, j, k)].push_back(e);
+      }
 }
 
 const Vec3& CrossingGuard::position(int v) const
@@ -430,19 +445,17 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
   return crossing;
 }
 
+// Recorded everywhere, but indexed in the grid's cells only once a question needs the grid (where the
+// guard covers a few boxes, most passes ask none).
 void CrossingGuard::add(const std::vector<Made>& made)
 {
-  const TriangleGrid& grid = this->grid();
   for (const Made& m : made)
   {
     this->Edits.push_back(m);
-    const TriangleGrid::Range r = grid.rangeOf(m.box);
-    for (std::uint32_t k = r[2]; k <= r[5]; ++k)
-      for (std::uint32_t j = r[1]; j <= r[4]; ++j)
-        for (std::uint32_t i = r[0]; i <= r[3]; ++i)
-        {
-          this->EditCells[TriangleGrid::key(i, j, k)].push_back(static_cast<int>(this->Edits.size()) - 1);
-        }
+    if (this->Grid)
+    {
+      this->index(static_cast<int>(this->Edits.size()) - 1);
+    }
   }
 }
 

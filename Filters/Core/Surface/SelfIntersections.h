@@ -80,7 +80,8 @@ private:
   // vertices whose triangles it replaces; -1: none), or an earlier edit's triangle.
   bool anyCrosses(const std::vector<Made>& made, int a, int b);
   void add(const std::vector<Made>& made);
-  const TriangleGrid& grid(); // built at the first question
+  const TriangleGrid& grid(); // built at the first question, with the edits so far indexed
+  void index(int edit);       // into EditCells
   const Vec3& position(int v) const; // where the pass's merges put it
 
   const std::vector<Vec3>& Points;

@@ -355,7 +355,8 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
     {
       box = use.polygons ? box : Box();
       box.extend(Box::around(points));
-      chosen = withPointSizes(chosen, box, this->PointSpacing(target, points.size(), [&] { return medianNeighbourDistance(points); }), givenStart);
+      const double spacing = this->PointSpacing(target, points.size(), [&] { return medianNeighbourDistance(points); });
+      chosen = withPointSizes(chosen, box, spacing, givenStart);
     }
     else if (!use.polygons) // no points: no field (StartSession says why); beside polygons: the polygons'
     {
@@ -514,7 +515,8 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
     vtkErrorMacro("The target has NaN or infinite coordinates.");
     return false;
   }
-  const double spacing = wrapsPoints ? this->PointSpacing(target, points.size(), [&] { return medianNeighbourDistance(points); }) : 0.0;
+  const double spacing =
+    wrapsPoints ? this->PointSpacing(target, points.size(), [&] { return medianNeighbourDistance(points); }) : 0.0;
   const WrapSettings settings = (wrapsPoints ? withPointSizes(this->CoreSettings(), targetBox, spacing, initial != nullptr)
                                              : this->CoreSettings())
                                   .resolved(targetBox);

@@ -545,6 +545,7 @@ bool Evolver::restart(
   this->Mesh.points() = state;
   this->Steps = steps;
   this->Potential.clear();
+  this->RecentCrossings.clear(); // crossings of a surface no longer held
   this->velocity().assign(state.size(), Vec3::Zero());
   return true;
 }

@@ -27,8 +27,11 @@ constexpr double kFitWidthPerSpacing = 3;
 // 4,000-200,000 points), so the wrap spans them and enters no hole the sampling left.
 constexpr double kPointGapPerNeighbourDistance = 8;
 // ... and in cells of the field at least: a closing by a ball below a cell or so is lost in the grid's
-// interpolation, and the wrap then meets sub-cell tunnels in it (handles the points do not have).
-constexpr double kMinPointGapCells = 2.5;
+// interpolation, and the wrap then meets sub-cell tunnels in it (handles the points do not have). 1.5
+// rather than 2.5: at 200,000 points 8 spacings are below a cell, and 2.5 cells bridged the slot
+// between the camel's legs and the dragon's handle; 1.5 kept them open and added no handle on the
+// five clouds of the benchmark, clean or noisy (RESULTS.md, 2026-11-27).
+constexpr double kMinPointGapCells = 1.5;
 // The automatic Target Edge Length of a point cloud, in median neighbour distances: a triangle then
 // spans a few dozen points, the detail their fitted surface holds; never coarser than a mesh's
 // automatic length (diagonal / kLengthDivisor), nor finer than diagonal / kMaxPointLengthDivisor.

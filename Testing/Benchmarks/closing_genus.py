@@ -2,7 +2,8 @@
 morphological closing by a ball of radius gap / 2 (dilate, then erode), from two Mesh Signed Distance
 fields and their contours. Issue #13's genus bar asks for the truth's genus "where the holes are wider
 than the gap size"; this tells which handles a wrap at that gap may rightly have (two fingers or legs
-closer than the gap make one). Each connected component's genus from its Euler characteristic; inner
+closer than the gap make one). The dilation by gap / 2 is printed too: an offset start at that
+distance has its topology. Each connected component's genus from its Euler characteristic; inner
 components are cavities the closing left. Meaningless for open targets (their sign is not defined).
 Usage: pvpython closing_genus.py <ShrinkWrap plugin .so> <target.vtp, as BenchShrinkWrap --out writes it>
 <gap> [resolution, default 300]"""
@@ -54,4 +55,5 @@ mesh = XMLPolyDataReader(FileName=[target])
 dilation = level_set(mesh, gap / 2)
 closing = level_set(dilation, -gap / 2)
 print("target: genus and triangles of each component", component_genera(mesh))
+print("dilated by %g:" % (gap / 2), component_genera(dilation))
 print("closed at gap %g:" % gap, component_genera(closing))

@@ -32,6 +32,11 @@ public:
   const std::vector<float>& values() const { return this->Values; }
   DistanceSample sample(const Vec3& x) const;
 
+  // The same trilinear interpolant sampled at half the spacing (the nodes kept): a contour of it
+  // follows the interpolant's topology more closely where marching cubes on this grid resolves an
+  // ambiguous face the other way.
+  DistanceGrid refined() const;
+
 private:
   GridLattice Lattice;
   std::vector<float> Values;

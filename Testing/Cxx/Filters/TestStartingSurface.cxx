@@ -6,7 +6,10 @@
 // - the filter wraps a torus from a contour, keeping the hole (Euler characteristic 0) where the
 //   icosphere closes it over (2), and starts from the relaxed contour;
 // - the Offset Surface start (the default) does the same by itself, and closes the hole over when it is
-//   narrower than the Gap Size; with remeshing on, it begins coarsened to the Target Edge Length.
+//   narrower than the Gap Size; with remeshing on, it begins coarsened to the Target Edge Length;
+// - a contour follows the field's trilinear interpolant, not the case table, where the two differ on
+//   an ambiguous face (the table joins the corners below the value; ContourTopology.h).
+#include "ContourTopology.h"
 #include "Icosphere.h"
 #include "Relaxation.h"
 #include "SelfIntersections.h"
@@ -285,10 +288,67 @@ void coarsensTheOffsetStart()
   }
 }
 
+// 4 x 4 x 3 nodes at `outside`, but on the middle layer the face (1..2, 1..2): `below` at (1, 1) and
+// (2, 2), `outside` at (2, 1) and (1, 2) -- its corners alternate about 0.
+shrinkwrap::DistanceGrid ambiguousFace(float below, float outside)
+{
+  shrinkwrap::GridLattice lattice;
+  lattice.dims = { 4, 4, 3 };
+  std::vector<float> values(lattice.nodeCount(), outside);
+  values[lattice.index(1, 1, 1)] = below;
+  values[lattice.index(2, 2, 1)] = below;
+  return shrinkwrap::DistanceGrid(lattice, std::move(values));
+}
+
+long long eulerOf(const shrinkwrap::TriangleSurface& s)
+{
+  return static_cast<long long>(s.points.size()) - static_cast<long long>(s.triangles.size()) / 2;
+}
+
+void followsTheInterpolantsTopology()
+{
+  using shrinkwrap::contourEulerCharacteristic;
+  // -1 and +2: the face's bilinear saddle is +0.5, so the interpolant keeps the two nodes below 0 apart
+  // (two closed blobs, 4) where the table joins them (one, 2).
+  const shrinkwrap::DistanceGrid apart = ambiguousFace(-1, 2);
+  SW_CHECK(contourEulerCharacteristic(apart, 0, false) == 2, "the table joins the corners below: one blob");
+  SW_CHECK(contourEulerCharacteristic(apart, 0, true) == 4, "at half the spacing they are apart: two blobs");
+  const shrinkwrap::TriangleSurface split = shrinkwrap::convert::contour(apart, 0, true);
+  SW_CHECK(eulerOf(split) == 4, "the contour is the two blobs, not one (" << eulerOf(split) << ")");
+  SW_CHECK(eulerOf(shrinkwrap::convert::contour(apart, 0)) == 2, "unless asked for: the table's one blob");
+  // -2 and +1: the saddle is -0.5, the interpolant joins them too; the grid's own contour is kept.
+  const shrinkwrap::DistanceGrid joined = ambiguousFace(-2, 1);
+  SW_CHECK(contourEulerCharacteristic(joined, 0, true) == 2 && contourEulerCharacteristic(joined, 0, false) == 2,
+    "both join the corners below");
+  const shrinkwrap::TriangleSurface one = shrinkwrap::convert::contour(joined, 0, true);
+  const std::size_t finer = shrinkwrap::convert::contour(joined.refined(), 0).triangles.size();
+  SW_CHECK(eulerOf(one) == 2 && one.triangles.size() < finer,
+    "the grid's own contour: one blob, " << one.triangles.size() << " triangles (at half the spacing " << finer << ")");
+  // The counts agree with the contours marching cubes builds, on a torus's field at a few levels.
+  const double h = 0.1;
+  shrinkwrap::GridLattice lattice;
+  lattice.origin = Vec3(-1.6, -1.6, -0.6);
+  lattice.spacing = Vec3(h, h, h);
+  lattice.dims = { 33, 33, 13 };
+  std::vector<float> values(lattice.nodeCount());
+  for (std::int64_t n = 0; n < lattice.nodeCount(); ++n)
+  {
+    values[n] = static_cast<float>(torusDistance(lattice.position(lattice.coordinates(n))));
+  }
+  const shrinkwrap::DistanceGrid field(lattice, std::move(values));
+  for (const double level : { 0.0, 0.1, 0.15 })
+  {
+    SW_CHECK(contourEulerCharacteristic(field, level, false) == eulerOf(shrinkwrap::convert::contour(field, level)) &&
+        contourEulerCharacteristic(field, level, true) == 0,
+      "a torus's contour at " << level << ": the count is the contour's, 0");
+  }
+}
+
 } // namespace
 
 int TestStartingSurface(int, char*[])
 {
+  followsTheInterpolantsTopology();
   relaxesAContour();
   wrapsATorusFromAContour();
   wrapsATorusFromItsOffset();

@@ -1,0 +1,22 @@
+// The Euler characteristic of a grid's marching-cubes contour, counted cell by cell without building
+// it, on the grid and on its trilinear interpolant at half the spacing (DistanceGrid::refined). The
+// case table settles a face whose corners alternate in sign by joining the corners below the value,
+// not as the interpolant may; where that adds handles or joins components, the count at half the
+// spacing is higher, and the start is taken from the finer contour (contour() in VTKConversions.h).
+#ifndef ShrinkWrap_ContourTopology_h
+#define ShrinkWrap_ContourTopology_h
+
+#include "DistanceGrid.h"
+
+namespace shrinkwrap
+{
+
+// V - F / 2 of the contour at `value` (V - E + F of a closed triangle surface, E = 3F / 2; 2 per
+// component less 2 per handle): a vertex per grid edge that crosses the value, the case table's
+// triangles per cell. With `halfSpacing`, of the contour of grid.refined(), from the cells that
+// cross the value only (a trilinear cell's values lie between its corners').
+long long contourEulerCharacteristic(const DistanceGrid& grid, double value, bool halfSpacing);
+
+} // namespace shrinkwrap
+
+#endif

@@ -565,9 +565,9 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
   }
   SurfaceMesh start;
   int specks = 0;
-  // Points: the start's contour with the field's topology where the case table's differs (the hand's
-  // 200,000 points lose a handle). Not yet for meshes: the finer contour costs the hand's mesh 0.3 s of
-  // its 0.4 s wrap, where it would also lose a handle (RESULTS.md, 2026-11-27).
+  // Points: the start's contour at half the spacing where the case table's joins add handles (the
+  // hand's 200,000 points lose one). Not yet for meshes: there the finer start makes the hand's wrap
+  // 0.71 s instead of 0.38 s, though it would lose a handle too (RESULTS.md, 2026-11-27).
   const Contour contour = [wrapsPoints](const DistanceGrid& grid, double value) {
     return convert::contour(grid, value, wrapsPoints);
   };

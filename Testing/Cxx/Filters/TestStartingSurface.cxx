@@ -7,8 +7,9 @@
 //   icosphere closes it over (2), and starts from the relaxed contour;
 // - the Offset Surface start (the default) does the same by itself, and closes the hole over when it is
 //   narrower than the Gap Size; with remeshing on, it begins coarsened to the Target Edge Length;
-// - a contour follows the field's trilinear interpolant, not the case table, where the two differ on
-//   an ambiguous face (the table joins the corners below the value; ContourTopology.h).
+// - asked for fewer joins, a contour is taken at half the spacing where the case table joins the
+//   corners below the value on an ambiguous face that the trilinear interpolant keeps apart, and
+//   nowhere else (ContourTopology.h).
 #include "ContourTopology.h"
 #include "Icosphere.h"
 #include "Relaxation.h"

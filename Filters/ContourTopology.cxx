@@ -62,14 +62,14 @@ long long blockEuler(int n, const At& at, double value, const std::array<int, 25
 }
 } // namespace
 
-long long contourEulerCharacteristic(const DistanceGrid& grid, double value, bool halfSpacing)
+ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value)
 {
   static const std::array<int, 256> triangles = trianglesPerCase(); // a constant table
   const GridLattice& lattice = grid.lattice();
   const std::vector<float>& v = grid.values();
-  std::atomic<long long> twice{ 0 };
+  std::atomic<long long> twiceGrid{ 0 }, twiceFine{ 0 };
   parallelFor(0, lattice.dims[2] - 1, 1, [&](vtkIdType kb, vtkIdType ke) {
-    long long sum = 0;
+    long long sumGrid = 0, sumFine = 0;
     for (int k = static_cast<int>(kb); k < ke; ++k)
     {
       for (int j = 0; j + 1 < lattice.dims[1]; ++j)
@@ -89,35 +89,23 @@ long long contourEulerCharacteristic(const DistanceGrid& grid, double value, boo
           {
             continue; // no contour in the cell, nor in its finer cells
           }
-          if (!halfSpacing)
-          {
-            sum += blockEuler(1, [&](int a, int b, int c) { return corner[a][b][c]; }, value, triangles);
-            continue;
-          }
-          // The interpolant at the cell's 3^3 half-spacing nodes: means of 1, 2, 4 or 8 corners.
-          float fine[3][3][3];
+          const auto at = [&](int a, int b, int c) { return corner[a][b][c]; };
+          sumGrid += blockEuler(1, at, value, triangles);
+          float fine[3][3][3]; // the interpolant at the cell's 3^3 half-spacing nodes
           for (int c = 0; c < 3; ++c)
             for (int b = 0; b < 3; ++b)
               for (int a = 0; a < 3; ++a)
               {
-                float s = 0;
-                int count = 0;
-                for (int z = c / 2; z <= (c + 1) / 2; ++z)
-                  for (int y = b / 2; y <= (b + 1) / 2; ++y)
-                    for (int x = a / 2; x <= (a + 1) / 2; ++x)
-                    {
-                      s += corner[x][y][z];
-                      ++count;
-                    }
-                fine[a][b][c] = s / count;
+                fine[a][b][c] = DistanceGrid::halfSpacingValue(at, a, b, c);
               }
-          sum += blockEuler(2, [&](int a, int b, int c) { return fine[a][b][c]; }, value, triangles);
+          sumFine += blockEuler(2, [&](int a, int b, int c) { return fine[a][b][c]; }, value, triangles);
         }
       }
     }
-    twice += sum;
+    twiceGrid += sumGrid;
+    twiceFine += sumFine;
   });
-  return twice.load() / 2;
+  return { twiceGrid.load() / 2, twiceFine.load() / 2 };
 }
 
 } // namespace shrinkwrap

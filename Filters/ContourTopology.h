@@ -13,9 +13,15 @@ namespace shrinkwrap
 
 // V - F / 2 of the contour at `value` (V - E + F of a closed triangle surface, E = 3F / 2; 2 per
 // component less 2 per handle): a vertex per grid edge that crosses the value, the case table's
-// triangles per cell. With `halfSpacing`, of the contour of grid.refined(), from the cells that
-// cross the value only (a trilinear cell's values lie between its corners').
-long long contourEulerCharacteristic(const DistanceGrid& grid, double value, bool halfSpacing);
+// triangles per cell. `grid` of the grid's contour, `halfSpacing` of the contour of grid.refined(),
+// both in one pass over the cells that cross the value (a trilinear cell's values lie between its
+// corners').
+struct ContourEuler
+{
+  long long grid = 0;
+  long long halfSpacing = 0;
+};
+ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value);
 
 } // namespace shrinkwrap
 

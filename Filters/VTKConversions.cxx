@@ -355,8 +355,12 @@ TriangleSurface contour(const DistanceGrid& grid, double value, bool fewerJoins)
   // 1 where its closing has 0). Where the contour at half the spacing has fewer such joins (a higher
   // Euler characteristic), it is taken. (Not where it has more: at half the spacing the table joins
   // on ambiguous faces of its own.)
-  const bool finer =
-    fewerJoins && contourEulerCharacteristic(grid, value, true) > contourEulerCharacteristic(grid, value, false);
+  bool finer = false;
+  if (fewerJoins)
+  {
+    const ContourEuler euler = contourEulerCharacteristic(grid, value);
+    finer = euler.halfSpacing > euler.grid;
+  }
   vtkNew<vtkFlyingEdges3D> contour;
   contour->SetInputData(imageOf(finer ? grid.refined() : grid, "d"));
   contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "d");

@@ -52,25 +52,17 @@ DistanceGrid DistanceGrid::refined() const
     fine.dims[a] = 2 * (coarse.dims[a] - 1) + 1;
     fine.spacing[a] = coarse.spacing[a] / 2;
   }
-  // At half the spacing every new node lies midway between 2, 4 or 8 old ones: the trilinear
-  // interpolant there is their mean.
   std::vector<float> values(fine.nodeCount());
+  const auto at = [this](int i, int j, int k) { return this->Values[this->Lattice.index(i, j, k)]; };
   parallelFor(0, fine.dims[2], 1, [&](vtkIdType kb, vtkIdType ke) {
     for (int k = static_cast<int>(kb); k < ke; ++k)
     {
-      const int k0 = k / 2, k1 = k0 + k % 2;
       for (int j = 0; j < fine.dims[1]; ++j)
       {
-        const int j0 = j / 2, j1 = j0 + j % 2;
         float* row = values.data() + fine.index(0, j, k);
-        const float* r00 = this->Values.data() + coarse.index(0, j0, k0);
-        const float* r10 = this->Values.data() + coarse.index(0, j1, k0);
-        const float* r01 = this->Values.data() + coarse.index(0, j0, k1);
-        const float* r11 = this->Values.data() + coarse.index(0, j1, k1);
         for (int i = 0; i < fine.dims[0]; ++i)
         {
-          const int i0 = i / 2, i1 = i0 + i % 2;
-          row[i] = 0.125f * (r00[i0] + r00[i1] + r10[i0] + r10[i1] + r01[i0] + r01[i1] + r11[i0] + r11[i1]);
+          row[i] = halfSpacingValue(at, i, j, k);
         }
       }
     }

@@ -312,14 +312,14 @@ void followsTheInterpolantsTopology()
   // -1 and +2: the face's bilinear saddle is +0.5, so the interpolant keeps the two nodes below 0 apart
   // (two closed blobs, 4) where the table joins them (one, 2).
   const shrinkwrap::DistanceGrid apart = ambiguousFace(-1, 2);
-  SW_CHECK(contourEulerCharacteristic(apart, 0, false) == 2, "the table joins the corners below: one blob");
-  SW_CHECK(contourEulerCharacteristic(apart, 0, true) == 4, "at half the spacing they are apart: two blobs");
+  SW_CHECK(contourEulerCharacteristic(apart, 0).grid == 2, "the table joins the corners below: one blob");
+  SW_CHECK(contourEulerCharacteristic(apart, 0).halfSpacing == 4, "at half the spacing they are apart: two blobs");
   const shrinkwrap::TriangleSurface split = shrinkwrap::convert::contour(apart, 0, true);
   SW_CHECK(eulerOf(split) == 4, "the contour is the two blobs, not one (" << eulerOf(split) << ")");
   SW_CHECK(eulerOf(shrinkwrap::convert::contour(apart, 0)) == 2, "unless asked for: the table's one blob");
   // -2 and +1: the saddle is -0.5, the interpolant joins them too; the grid's own contour is kept.
   const shrinkwrap::DistanceGrid joined = ambiguousFace(-2, 1);
-  SW_CHECK(contourEulerCharacteristic(joined, 0, true) == 2 && contourEulerCharacteristic(joined, 0, false) == 2,
+  SW_CHECK(contourEulerCharacteristic(joined, 0).halfSpacing == 2 && contourEulerCharacteristic(joined, 0).grid == 2,
     "both join the corners below");
   const shrinkwrap::TriangleSurface one = shrinkwrap::convert::contour(joined, 0, true);
   const std::size_t finer = shrinkwrap::convert::contour(joined.refined(), 0).triangles.size();
@@ -339,9 +339,12 @@ void followsTheInterpolantsTopology()
   const shrinkwrap::DistanceGrid field(lattice, std::move(values));
   for (const double level : { 0.0, 0.1, 0.15 })
   {
-    SW_CHECK(contourEulerCharacteristic(field, level, false) == eulerOf(shrinkwrap::convert::contour(field, level)) &&
-        contourEulerCharacteristic(field, level, true) == 0,
-      "a torus's contour at " << level << ": the count is the contour's, 0");
+    const shrinkwrap::ContourEuler euler = contourEulerCharacteristic(field, level);
+    SW_CHECK(euler.grid == eulerOf(shrinkwrap::convert::contour(field, level)) && euler.halfSpacing == 0 &&
+        euler.halfSpacing == eulerOf(shrinkwrap::convert::contour(field.refined(), level)),
+      "a torus's contour at " << level << ": the count is the contour's, 0 (" << euler.grid << ", " << euler.halfSpacing
+                                << "; built " << eulerOf(shrinkwrap::convert::contour(field, level)) << ", "
+                                << eulerOf(shrinkwrap::convert::contour(field.refined(), level)) << ")");
   }
 }
 

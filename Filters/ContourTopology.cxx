@@ -4,8 +4,12 @@
 
 #include <vtkMarchingCubesTriangleCases.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
 
 namespace shrinkwrap
 {
@@ -106,6 +110,65 @@ ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value)
     twiceFine += sumFine;
   });
   return { twiceGrid.load() / 2, twiceFine.load() / 2 };
+}
+
+DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)
+{
+  const GridLattice& lattice = grid.lattice();
+  const std::vector<float>& v = grid.values();
+  constexpr int kPlanes[3][2] = { { 0, 1 }, { 1, 2 }, { 0, 2 } };
+  std::vector<std::int64_t> shallower;
+  std::mutex lock;
+  parallelFor(0, lattice.dims[2], 1, [&](vtkIdType kb, vtkIdType ke) {
+    std::vector<std::int64_t> found;
+    for (int k = static_cast<int>(kb); k < ke; ++k)
+      for (int j = 0; j < lattice.dims[1]; ++j)
+        for (int i = 0; i < lattice.dims[0]; ++i)
+        {
+          const int n[3] = { i, j, k };
+          for (const auto& plane : kPlanes)
+          {
+            int c[3] = { i, j, k };
+            if (++c[plane[0]] >= lattice.dims[plane[0]] || ++c[plane[1]] >= lattice.dims[plane[1]])
+            {
+              continue;
+            }
+            // The face's corners around it: f00, f10, f11, f01.
+            int a[3] = { i, j, k }, b[3] = { i, j, k };
+            ++a[plane[0]];
+            ++b[plane[1]];
+            const std::int64_t id[4] = { lattice.index(n[0], n[1], n[2]), lattice.index(a[0], a[1], a[2]),
+              lattice.index(c[0], c[1], c[2]), lattice.index(b[0], b[1], b[2]) };
+            const double f00 = v[id[0]], f10 = v[id[1]], f11 = v[id[2]], f01 = v[id[3]];
+            const bool below00 = f00 < value, below10 = f10 < value;
+            if (below00 != (f11 < value) || below10 != (f01 < value) || below00 == below10)
+            {
+              continue; // not two diagonal pairs
+            }
+            // The bilinear interpolant's saddle value: at or above the value, the corners below are apart.
+            const double saddle = (f00 * f11 - f10 * f01) / (f00 + f11 - f10 - f01);
+            if (saddle >= value)
+            {
+              found.push_back(below00 ? (f00 > f11 ? id[0] : id[2]) : (f10 > f01 ? id[1] : id[3]));
+            }
+          }
+        }
+    const std::lock_guard<std::mutex> guard(lock);
+    shallower.insert(shallower.end(), found.begin(), found.end());
+  });
+  std::vector<float> values = v;
+  float at = static_cast<float>(value);
+  while (at < value)
+  {
+    at = std::nextafter(at, std::numeric_limits<float>::infinity());
+  }
+  for (const std::int64_t n : shallower)
+  {
+    // Mirrored about the value rather than set to it: a corner at the value would put the contour's
+    // vertices of all its edges on one point, slivers the start's coarsening labours over.
+    values[n] = std::max(values[n], std::max(at, static_cast<float>(2 * value - values[n])));
+  }
+  return DistanceGrid(lattice, std::move(values));
 }
 
 } // namespace shrinkwrap

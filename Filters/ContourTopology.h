@@ -2,7 +2,8 @@
 // it, on the grid and on its trilinear interpolant at half the spacing (DistanceGrid::refined). The
 // case table settles a face whose corners alternate in sign by joining the corners below the value,
 // not as the interpolant may; where that adds handles or joins components, the count at half the
-// spacing is higher, and the start is taken from the finer contour (contour() in VTKConversions.h).
+// spacing is higher, and the start is taken from the grid with those faces separated when that
+// reaches the same count (contour() in VTKConversions.h).
 #ifndef ShrinkWrap_ContourTopology_h
 #define ShrinkWrap_ContourTopology_h
 
@@ -22,6 +23,13 @@ struct ContourEuler
   long long halfSpacing = 0;
 };
 ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value);
+
+// The grid with the case table's wrong joins undone on the faces: where two diagonal corners of a face
+// lie below `value` and the face's bilinear saddle does not (the interpolant keeps them apart, the
+// table joins them), the shallower of the two is raised to the value, so that it counts as above.
+// The contour moves by under a cell there and keeps the grid's triangle count, where refined() would
+// quadruple it.
+DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value);
 
 } // namespace shrinkwrap
 

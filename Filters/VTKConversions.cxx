@@ -351,18 +351,24 @@ TriangleSurface contour(const DistanceGrid& grid, double value, bool fewerJoins)
 {
   // The start keeps every handle of its contour. On an ambiguous face the case table joins the corners
   // below the value where the trilinear interpolant may keep them apart: a bridge a cell wide between
-  // two parts about twice the value apart, a handle the field has not (the hand's 200,000 points, genus
-  // 1 where its closing has 0). Where the contour at half the spacing has fewer such joins (a higher
-  // Euler characteristic), it is taken. (Not where it has more: at half the spacing the table joins
-  // on ambiguous faces of its own.)
-  bool finer = false;
+  // two parts about twice the value apart, a handle the field has not (the hand's mesh and its 200,000
+  // points, genus 1 where the truth has 0). Where the contour of the interpolant at half the spacing
+  // has fewer such joins (a higher Euler characteristic) and the grid with its faces separated reaches
+  // that count, the separated grid is contoured. (Not where it goes beyond: the face test alone also
+  // undoes joins the interpolant has inside cells, as the dragon's true handle.)
+  const DistanceGrid* chosen = &grid;
+  DistanceGrid separated;
   if (fewerJoins)
   {
     const ContourEuler euler = contourEulerCharacteristic(grid, value);
-    finer = euler.halfSpacing > euler.grid;
+    if (euler.halfSpacing > euler.grid)
+    {
+      separated = withFacesSeparated(grid, value);
+      chosen = contourEulerCharacteristic(separated, value).grid == euler.halfSpacing ? &separated : &grid;
+    }
   }
   vtkNew<vtkFlyingEdges3D> contour;
-  contour->SetInputData(imageOf(finer ? grid.refined() : grid, "d"));
+  contour->SetInputData(imageOf(*chosen, "d"));
   contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "d");
   contour->SetValue(0, value);
   contour->ComputeNormalsOff();

@@ -83,8 +83,9 @@ Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid);
 // A grid as an image whose point array `name` holds its values.
 vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name);
 
-// Marching cubes (vtkFlyingEdges3D) of a grid at one value; with `fewerJoins`, of the grid at half the
-// spacing where that has fewer handles or joined components (ContourTopology.h).
+// Marching cubes (vtkFlyingEdges3D) of a grid at one value; with `fewerJoins`, of the grid with its
+// faces separated (withFacesSeparated) where that has the fewer handles or joined components of the
+// interpolant at half the spacing (ContourTopology.h).
 TriangleSurface contour(const DistanceGrid& grid, double value, bool fewerJoins = false);
 
 // Points (as doubles) and triangles as `output`'s geometry.

@@ -565,12 +565,9 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
   }
   SurfaceMesh start;
   int specks = 0;
-  // Points: the start's contour at half the spacing where the case table's joins add handles (the
-  // hand's 200,000 points lose one). Not yet for meshes: there the finer start makes the hand's wrap
-  // 0.71 s instead of 0.38 s, though it would lose a handle too (RESULTS.md, 2026-11-27).
-  const Contour contour = [wrapsPoints](const DistanceGrid& grid, double value) {
-    return convert::contour(grid, value, wrapsPoints);
-  };
+  // The start's contour without the case table's joins where they add handles the field has not (the
+  // hand's mesh and its 200,000 points lose one; RESULTS.md, 2026-11-27).
+  const Contour contour = [](const DistanceGrid& grid, double value) { return convert::contour(grid, value, true); };
   Status status = startingSurface(fields.driving.grid(), targetBox, initial ? &given : nullptr, settings.start,
     settings.evolution.flips, contour, start, specks);
   if (specks > 0)

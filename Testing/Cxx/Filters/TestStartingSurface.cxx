@@ -7,9 +7,10 @@
 //   icosphere closes it over (2), and starts from the relaxed contour;
 // - the Offset Surface start (the default) does the same by itself, and closes the hole over when it is
 //   narrower than the Gap Size; with remeshing on, it begins coarsened to the Target Edge Length;
-// - asked for fewer joins, a contour is taken at half the spacing where the case table joins the
-//   corners below the value on an ambiguous face that the trilinear interpolant keeps apart, and
-//   nowhere else (ContourTopology.h).
+// - asked for fewer joins, a contour is taken of the grid with the shallower corner raised where the
+//   case table joins the corners below the value on an ambiguous face that the trilinear interpolant
+//   keeps apart (as many blobs as at half the spacing, the grid's number of triangles), and the grid is
+//   left alone elsewhere (ContourTopology.h).
 #include "ContourTopology.h"
 #include "Icosphere.h"
 #include "Relaxation.h"
@@ -289,15 +290,24 @@ void coarsensTheOffsetStart()
   }
 }
 
-// 4 x 4 x 3 nodes at `outside`, but on the middle layer the face (1..2, 1..2): `below` at (1, 1) and
-// (2, 2), `outside` at (2, 1) and (1, 2) -- its corners alternate about 0.
+// 7 x 7 x 3 nodes at `outside` but two blocks of 2 x 2 nodes at `below` on the middle layer, (1..2,
+// 1..2) and (3..4, 3..4), which meet only at the face (2..3, 2..3): `below` at (2, 2) and (3, 3),
+// `outside` at (3, 2) and (2, 3) -- its corners alternate about 0.
 shrinkwrap::DistanceGrid ambiguousFace(float below, float outside)
 {
   shrinkwrap::GridLattice lattice;
-  lattice.dims = { 4, 4, 3 };
+  lattice.dims = { 7, 7, 3 };
   std::vector<float> values(lattice.nodeCount(), outside);
-  values[lattice.index(1, 1, 1)] = below;
-  values[lattice.index(2, 2, 1)] = below;
+  for (const int corner : { 1, 3 })
+  {
+    for (int j = corner; j < corner + 2; ++j)
+    {
+      for (int i = corner; i < corner + 2; ++i)
+      {
+        values[lattice.index(i, j, 1)] = below;
+      }
+    }
+  }
   return shrinkwrap::DistanceGrid(lattice, std::move(values));
 }
 
@@ -315,12 +325,32 @@ void followsTheInterpolantsTopology()
   SW_CHECK(contourEulerCharacteristic(apart, 0).grid == 2, "the table joins the corners below: one blob");
   SW_CHECK(contourEulerCharacteristic(apart, 0).halfSpacing == 4, "at half the spacing they are apart: two blobs");
   const shrinkwrap::TriangleSurface split = shrinkwrap::convert::contour(apart, 0, true);
+  const shrinkwrap::TriangleSurface table = shrinkwrap::convert::contour(apart, 0);
   SW_CHECK(eulerOf(split) == 4, "the contour is the two blobs, not one (" << eulerOf(split) << ")");
-  SW_CHECK(eulerOf(shrinkwrap::convert::contour(apart, 0)) == 2, "unless asked for: the table's one blob");
+  SW_CHECK(eulerOf(table) == 2, "unless asked for: the table's one blob");
+  SW_CHECK(split.triangles.size() <= table.triangles.size(),
+    "from the grid, not at half the spacing: " << split.triangles.size() << " triangles (the table's " << table.triangles.size() << ")");
+  // Which corner is raised: the shallower of the two below (-0.5 against -1), and only that node.
+  const shrinkwrap::DistanceGrid uneven = [] {
+    shrinkwrap::DistanceGrid g = ambiguousFace(-1, 2);
+    std::vector<float> v = g.values();
+    v[g.lattice().index(3, 3, 1)] = -0.5f;
+    return shrinkwrap::DistanceGrid(g.lattice(), std::move(v));
+  }();
+  const shrinkwrap::DistanceGrid separated = shrinkwrap::withFacesSeparated(uneven, 0);
+  int changed = 0;
+  for (std::int64_t n = 0; n < uneven.lattice().nodeCount(); ++n)
+  {
+    changed += separated.values()[n] != uneven.values()[n];
+  }
+  SW_CHECK(changed == 1 && separated.values()[uneven.lattice().index(3, 3, 1)] > 0 &&
+      contourEulerCharacteristic(separated, 0).grid == 4,
+    "the shallower corner alone is raised above the value (" << changed << " changed): two blobs");
   // -2 and +1: the saddle is -0.5, the interpolant joins them too; the grid's own contour is kept.
   const shrinkwrap::DistanceGrid joined = ambiguousFace(-2, 1);
   SW_CHECK(contourEulerCharacteristic(joined, 0).halfSpacing == 2 && contourEulerCharacteristic(joined, 0).grid == 2,
     "both join the corners below");
+  SW_CHECK(shrinkwrap::withFacesSeparated(joined, 0).values() == joined.values(), "no corner raised");
   const shrinkwrap::TriangleSurface one = shrinkwrap::convert::contour(joined, 0, true);
   const std::size_t finer = shrinkwrap::convert::contour(joined.refined(), 0).triangles.size();
   SW_CHECK(eulerOf(one) == 2 && one.triangles.size() < finer,

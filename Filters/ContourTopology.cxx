@@ -64,55 +64,61 @@ long long blockEuler(int n, const At& at, double value, const std::array<int, 25
   }
   return 2 * vertices - faces; // twice V - F / 2
 }
-} // namespace
 
-ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value)
+const std::array<int, 256>& trianglesTable()
 {
   static const std::array<int, 256> triangles = trianglesPerCase(); // a constant table
-  const GridLattice& lattice = grid.lattice();
-  const std::vector<float>& v = grid.values();
-  std::atomic<long long> twiceGrid{ 0 }, twiceFine{ 0 };
-  parallelFor(0, lattice.dims[2] - 1, 1, [&](vtkIdType kb, vtkIdType ke) {
-    long long sumGrid = 0, sumFine = 0;
-    for (int k = static_cast<int>(kb); k < ke; ++k)
-    {
-      for (int j = 0; j + 1 < lattice.dims[1]; ++j)
-      {
-        for (int i = 0; i + 1 < lattice.dims[0]; ++i)
-        {
-          float corner[2][2][2];
-          bool below = false, above = false;
-          for (int c = 0; c < 2; ++c)
-            for (int b = 0; b < 2; ++b)
-              for (int a = 0; a < 2; ++a)
-              {
-                corner[a][b][c] = v[lattice.index(i + a, j + b, k + c)];
-                (corner[a][b][c] >= value ? above : below) = true;
-              }
-          if (!(above && below))
-          {
-            continue; // no contour in the cell, nor in its finer cells
-          }
-          const auto at = [&](int a, int b, int c) { return corner[a][b][c]; };
-          sumGrid += blockEuler(1, at, value, triangles);
-          float fine[3][3][3]; // the interpolant at the cell's 3^3 half-spacing nodes
-          for (int c = 0; c < 3; ++c)
-            for (int b = 0; b < 3; ++b)
-              for (int a = 0; a < 3; ++a)
-              {
-                fine[a][b][c] = DistanceGrid::halfSpacingValue(at, a, b, c);
-              }
-          sumFine += blockEuler(2, [&](int a, int b, int c) { return fine[a][b][c]; }, value, triangles);
-        }
-      }
-    }
-    twiceGrid += sumGrid;
-    twiceFine += sumFine;
-  });
-  return { twiceGrid.load() / 2, twiceFine.load() / 2 };
+  return triangles;
 }
 
-DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)
+// Twice the contributions of the cell with lowest corner (i, j, k) of values `v`: of the grid's
+// contour and of the half spacing's.
+ContourEuler cellEuler(const GridLattice& lattice, const std::vector<float>& v, int i, int j, int k, double value)
+{
+  float corner[2][2][2];
+  bool below = false, above = false;
+  for (int c = 0; c < 2; ++c)
+    for (int b = 0; b < 2; ++b)
+      for (int a = 0; a < 2; ++a)
+      {
+        corner[a][b][c] = v[lattice.index(i + a, j + b, k + c)];
+        (corner[a][b][c] >= value ? above : below) = true;
+      }
+  if (!(above && below))
+  {
+    return {}; // no contour in the cell, nor in its finer cells
+  }
+  const auto at = [&](int a, int b, int c) { return corner[a][b][c]; };
+  float fine[3][3][3]; // the interpolant at the cell's 3^3 half-spacing nodes
+  for (int c = 0; c < 3; ++c)
+    for (int b = 0; b < 3; ++b)
+      for (int a = 0; a < 3; ++a)
+      {
+        fine[a][b][c] = DistanceGrid::halfSpacingValue(at, a, b, c);
+      }
+  return { blockEuler(1, at, value, trianglesTable()),
+    blockEuler(2, [&](int a, int b, int c) { return fine[a][b][c]; }, value, trianglesTable()) };
+}
+
+// Twice the contributions of the cells around node n, the only ones its value enters.
+ContourEuler aroundNode(const GridLattice& lattice, const std::vector<float>& v, std::int64_t n, double value)
+{
+  const std::array<int, 3> c = lattice.coordinates(n);
+  ContourEuler sum;
+  for (int z = std::max(c[2] - 1, 0); z <= std::min(c[2], lattice.dims[2] - 2); ++z)
+    for (int y = std::max(c[1] - 1, 0); y <= std::min(c[1], lattice.dims[1] - 2); ++y)
+      for (int x = std::max(c[0] - 1, 0); x <= std::min(c[0], lattice.dims[0] - 2); ++x)
+      {
+        const ContourEuler cell = cellEuler(lattice, v, x, y, z, value);
+        sum.grid += cell.grid;
+        sum.halfSpacing += cell.halfSpacing;
+      }
+  return sum;
+}
+
+// The shallower below corner of each face whose two diagonal corners lie below `value` while its
+// bilinear saddle does not (sorted, each once).
+std::vector<std::int64_t> wronglyJoinedCorners(const DistanceGrid& grid, double value)
 {
   const GridLattice& lattice = grid.lattice();
   const std::vector<float>& v = grid.values();
@@ -125,19 +131,19 @@ DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)
       for (int j = 0; j < lattice.dims[1]; ++j)
         for (int i = 0; i < lattice.dims[0]; ++i)
         {
-          const int n[3] = { i, j, k };
           for (const auto& plane : kPlanes)
           {
-            int c[3] = { i, j, k };
-            if (++c[plane[0]] >= lattice.dims[plane[0]] || ++c[plane[1]] >= lattice.dims[plane[1]])
+            // The face's corners in turn: f00 at (i, j, k), f10, f11, f01 along the plane's axes.
+            int a[3] = { i, j, k }, b[3] = { i, j, k }, c[3] = { i, j, k };
+            ++a[plane[0]];
+            ++b[plane[1]];
+            ++c[plane[0]];
+            ++c[plane[1]];
+            if (c[plane[0]] >= lattice.dims[plane[0]] || c[plane[1]] >= lattice.dims[plane[1]])
             {
               continue;
             }
-            // The face's corners around it: f00, f10, f11, f01.
-            int a[3] = { i, j, k }, b[3] = { i, j, k };
-            ++a[plane[0]];
-            ++b[plane[1]];
-            const std::int64_t id[4] = { lattice.index(n[0], n[1], n[2]), lattice.index(a[0], a[1], a[2]),
+            const std::int64_t id[4] = { lattice.index(i, j, k), lattice.index(a[0], a[1], a[2]),
               lattice.index(c[0], c[1], c[2]), lattice.index(b[0], b[1], b[2]) };
             const double f00 = v[id[0]], f10 = v[id[1]], f11 = v[id[2]], f01 = v[id[3]];
             const bool below00 = f00 < value, below10 = f10 < value;
@@ -156,17 +162,58 @@ DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)
     const std::lock_guard<std::mutex> guard(lock);
     shallower.insert(shallower.end(), found.begin(), found.end());
   });
-  std::vector<float> values = v;
+  std::sort(shallower.begin(), shallower.end());
+  shallower.erase(std::unique(shallower.begin(), shallower.end()), shallower.end());
+  return shallower;
+}
+} // namespace
+
+ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value)
+{
+  const GridLattice& lattice = grid.lattice();
+  std::atomic<long long> twiceGrid{ 0 }, twiceFine{ 0 };
+  parallelFor(0, lattice.dims[2] - 1, 1, [&](vtkIdType kb, vtkIdType ke) {
+    ContourEuler sum;
+    for (int k = static_cast<int>(kb); k < ke; ++k)
+      for (int j = 0; j + 1 < lattice.dims[1]; ++j)
+        for (int i = 0; i + 1 < lattice.dims[0]; ++i)
+        {
+          const ContourEuler cell = cellEuler(lattice, grid.values(), i, j, k, value);
+          sum.grid += cell.grid;
+          sum.halfSpacing += cell.halfSpacing;
+        }
+    twiceGrid += sum.grid;
+    twiceFine += sum.halfSpacing;
+  });
+  return { twiceGrid.load() / 2, twiceFine.load() / 2 };
+}
+
+DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)
+{
+  const GridLattice& lattice = grid.lattice();
+  std::vector<float> values = grid.values();
   float at = static_cast<float>(value);
   while (at < value)
   {
     at = std::nextafter(at, std::numeric_limits<float>::infinity());
   }
-  for (const std::int64_t n : shallower)
+  for (const std::int64_t n : wronglyJoinedCorners(grid, value))
   {
+    // Raised where that leaves the interpolant's topology as it is (it had no such join) and does not
+    // lower the grid's count: a join undone raises it, or keeps it where the join spans several faces
+    // (the hand's thumb: six corners, the last one undoes it). A corner whose raise would cut a handle
+    // of the interpolant too, as inside the dragon's true handle, stays. Both counts change only in
+    // the node's cells.
+    const ContourEuler before = aroundNode(lattice, values, n, value);
+    const float old = values[n];
     // Mirrored about the value rather than set to it: a corner at the value would put the contour's
     // vertices of all its edges on one point, slivers the start's coarsening labours over.
-    values[n] = std::max(values[n], std::max(at, static_cast<float>(2 * value - values[n])));
+    values[n] = std::max(at, static_cast<float>(2 * value - old));
+    const ContourEuler after = aroundNode(lattice, values, n, value);
+    if (!(after.grid >= before.grid && after.halfSpacing == before.halfSpacing))
+    {
+      values[n] = old;
+    }
   }
   return DistanceGrid(lattice, std::move(values));
 }

@@ -26,9 +26,10 @@ ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value);
 
 // The grid with the case table's wrong joins undone on the faces: where two diagonal corners of a face
 // lie below `value` and the face's bilinear saddle does not (the interpolant keeps them apart, the
-// table joins them), the shallower of the two is raised to the value, so that it counts as above.
-// The contour moves by under a cell there and keeps the grid's triangle count, where refined() would
-// quadruple it.
+// table joins them), the shallower of the two is raised above the value, so that it counts as above,
+// unless that would change the Euler characteristic of the interpolant's contour at half the spacing
+// or lower the grid's. The contour moves by under a cell there and keeps the grid's triangle count,
+// where refined() would quadruple it.
 DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value);
 
 } // namespace shrinkwrap

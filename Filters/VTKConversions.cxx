@@ -353,22 +353,14 @@ TriangleSurface contour(const DistanceGrid& grid, double value, bool fewerJoins)
   // below the value where the trilinear interpolant may keep them apart: a bridge a cell wide between
   // two parts about twice the value apart, a handle the field has not (the hand's mesh and its 200,000
   // points, genus 1 where the truth has 0). Where the contour of the interpolant at half the spacing
-  // has fewer such joins (a higher Euler characteristic) and the grid with its faces separated reaches
-  // that count, the separated grid is contoured. (Not where it goes beyond: the face test alone also
-  // undoes joins the interpolant has inside cells, as the dragon's true handle.)
-  const DistanceGrid* chosen = &grid;
-  DistanceGrid separated;
-  if (fewerJoins)
-  {
+  // has fewer such joins (a higher Euler characteristic), the grid's faces are separated first. (Only
+  // there: elsewhere the corners raised would still move the start, and the wrap with it.)
+  const bool separate = fewerJoins && [&] {
     const ContourEuler euler = contourEulerCharacteristic(grid, value);
-    if (euler.halfSpacing > euler.grid)
-    {
-      separated = withFacesSeparated(grid, value);
-      chosen = contourEulerCharacteristic(separated, value).grid == euler.halfSpacing ? &separated : &grid;
-    }
-  }
+    return euler.halfSpacing > euler.grid;
+  }();
   vtkNew<vtkFlyingEdges3D> contour;
-  contour->SetInputData(imageOf(*chosen, "d"));
+  contour->SetInputData(imageOf(separate ? withFacesSeparated(grid, value) : grid, "d"));
   contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "d");
   contour->SetValue(0, value);
   contour->ComputeNormalsOff();

@@ -9,8 +9,9 @@
 //   narrower than the Gap Size; with remeshing on, it begins coarsened to the Target Edge Length;
 // - asked for fewer joins, a contour is taken of the grid with the shallower corner raised where the
 //   case table joins the corners below the value on an ambiguous face that the trilinear interpolant
-//   keeps apart (as many blobs as at half the spacing, the grid's number of triangles), and the grid is
-//   left alone elsewhere (ContourTopology.h).
+//   keeps apart (as many blobs as at half the spacing, the grid's number of triangles), not where the
+//   raise would change the interpolant's topology, and the grid is left alone elsewhere
+//   (ContourTopology.h).
 #include "ContourTopology.h"
 #include "Icosphere.h"
 #include "Relaxation.h"
@@ -346,6 +347,19 @@ void followsTheInterpolantsTopology()
   SW_CHECK(changed == 1 && separated.values()[uneven.lattice().index(3, 3, 1)] > 0 &&
       contourEulerCharacteristic(separated, 0).grid == 4,
     "the shallower corner alone is raised above the value (" << changed << " changed): two blobs");
+  // Not where the raise would change the interpolant's own topology: with the second block a single
+  // node, raising it would delete that blob, which the interpolant has.
+  const shrinkwrap::DistanceGrid lone = [&uneven] {
+    std::vector<float> v = uneven.values();
+    for (const auto& c : { std::array<int, 3>{ 4, 3, 1 }, std::array<int, 3>{ 3, 4, 1 }, std::array<int, 3>{ 4, 4, 1 } })
+    {
+      v[uneven.lattice().index(c[0], c[1], c[2])] = 2;
+    }
+    return shrinkwrap::DistanceGrid(uneven.lattice(), std::move(v));
+  }();
+  SW_CHECK(contourEulerCharacteristic(lone, 0).halfSpacing == 4 &&
+      shrinkwrap::withFacesSeparated(lone, 0).values() == lone.values(),
+    "a lone node below is kept: raising it would delete a blob of the interpolant");
   // -2 and +1: the saddle is -0.5, the interpolant joins them too; the grid's own contour is kept.
   const shrinkwrap::DistanceGrid joined = ambiguousFace(-2, 1);
   SW_CHECK(contourEulerCharacteristic(joined, 0).halfSpacing == 2 && contourEulerCharacteristic(joined, 0).grid == 2,

@@ -2,8 +2,8 @@
 // it, on the grid and on its trilinear interpolant at half the spacing (DistanceGrid::refined). The
 // case table settles a face whose corners alternate in sign by joining the corners below the value,
 // not as the interpolant may; where that adds handles or joins components, the count at half the
-// spacing is higher, and the start is taken from the grid with those faces separated when that
-// reaches the same count (contour() in VTKConversions.h).
+// spacing is higher, and the start is taken of the grid with those faces separated, corner by
+// corner (withFacesSeparated; contour() in VTKConversions.h).
 #ifndef ShrinkWrap_ContourTopology_h
 #define ShrinkWrap_ContourTopology_h
 

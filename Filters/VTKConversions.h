@@ -84,8 +84,8 @@ Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid);
 vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name);
 
 // Marching cubes (vtkFlyingEdges3D) of a grid at one value; with `fewerJoins`, of the grid with its
-// faces separated (withFacesSeparated) where that has the fewer handles or joined components of the
-// interpolant at half the spacing (ContourTopology.h).
+// faces separated (withFacesSeparated) where the interpolant at half the spacing has fewer handles or
+// joined components than the grid's contour (ContourTopology.h).
 TriangleSurface contour(const DistanceGrid& grid, double value, bool fewerJoins = false);
 
 // Points (as doubles) and triangles as `output`'s geometry.

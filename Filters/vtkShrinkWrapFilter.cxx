@@ -566,7 +566,8 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
   SurfaceMesh start;
   int specks = 0;
   // The start's contour without the case table's joins where they add handles the field has not (the
-  // hand's mesh and its 200,000 points lose one; RESULTS.md, 2026-11-27).
+  // hand's mesh and its 200,000 points lose one, the dragon's mesh keeps only its true one; RESULTS.md,
+  // 2026-11-27).
   const Contour contour = [](const DistanceGrid& grid, double value) { return convert::contour(grid, value, true); };
   Status status = startingSurface(fields.driving.grid(), targetBox, initial ? &given : nullptr, settings.start,
     settings.evolution.flips, contour, start, specks);

@@ -34,7 +34,8 @@ public:
 
   // The same trilinear interpolant sampled at half the spacing (the nodes kept): a contour of it
   // follows the interpolant's topology more closely where marching cubes on this grid resolves an
-  // ambiguous face the other way.
+  // ambiguous face the other way. ContourTopology counts that contour's Euler characteristic cell by
+  // cell without building the grid; the grid itself is for checking the count.
   DistanceGrid refined() const;
 
   // The interpolant at half-spacing node (i, j, k) of the values `at(i, j, k)` on this spacing: the

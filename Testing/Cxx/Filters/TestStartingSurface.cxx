@@ -10,7 +10,8 @@
 // - asked for fewer joins, a contour is taken of the grid with the shallower corner raised where the
 //   case table joins the corners below the value on an ambiguous face that the trilinear interpolant
 //   keeps apart (as many blobs as at half the spacing, the grid's number of triangles), not where the
-//   raise would change the interpolant's topology, and the grid is left alone elsewhere
+//   raise would change the interpolant's topology, also where the join takes two faces (each raise
+//   alone undoes nothing), and the grid is left alone elsewhere
 //   (ContourTopology.h).
 #include "ContourTopology.h"
 #include "Icosphere.h"
@@ -360,6 +361,26 @@ void followsTheInterpolantsTopology()
   SW_CHECK(contourEulerCharacteristic(lone, 0).halfSpacing == 4 &&
       shrinkwrap::withFacesSeparated(lone, 0).values() == lone.values(),
     "a lone node below is kept: raising it would delete a blob of the interpolant");
+  // Two blocks two layers thick meet along an edge, through two ambiguous faces: neither raise alone
+  // undoes the join (the other face still makes it), both together do (the hand's thumb took six).
+  const shrinkwrap::DistanceGrid edge = [] {
+    shrinkwrap::GridLattice lattice;
+    lattice.dims = { 7, 7, 4 };
+    std::vector<float> v(lattice.nodeCount(), 2);
+    for (int k = 1; k <= 2; ++k)
+      for (const int corner : { 1, 3 })
+        for (int j = corner; j < corner + 2; ++j)
+          for (int i = corner; i < corner + 2; ++i)
+          {
+            v[lattice.index(i, j, k)] = corner == 3 && i == 3 && j == 3 ? -0.5f : -1;
+          }
+    return shrinkwrap::DistanceGrid(lattice, std::move(v));
+  }();
+  const shrinkwrap::ContourEuler edgeEuler = contourEulerCharacteristic(edge, 0);
+  const shrinkwrap::ContourEuler edgeSeparated = contourEulerCharacteristic(shrinkwrap::withFacesSeparated(edge, 0), 0);
+  SW_CHECK(edgeEuler.grid == 2 && edgeEuler.halfSpacing == 4 && edgeSeparated.grid == 4 && edgeSeparated.halfSpacing == 4,
+    "blocks meeting along an edge: one blob, two at half the spacing; separated, two (" << edgeEuler.grid << ", "
+      << edgeEuler.halfSpacing << " -> " << edgeSeparated.grid << ", " << edgeSeparated.halfSpacing << ")");
   // -2 and +1: the saddle is -0.5, the interpolant joins them too; the grid's own contour is kept.
   const shrinkwrap::DistanceGrid joined = ambiguousFace(-2, 1);
   SW_CHECK(contourEulerCharacteristic(joined, 0).halfSpacing == 2 && contourEulerCharacteristic(joined, 0).grid == 2,

@@ -1,6 +1,7 @@
 #include "GapClosing.h"
 
 #include "ClosestPointSweep.h"
+#include "GridRegions.h"
 #include "DistanceSource.h"
 #include "Parallel.h"
 
@@ -17,21 +18,6 @@ std::array<int, 6> wholeGrid(const GridLattice& lattice)
   return { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
 }
 
-// Calls f(m) for each face neighbour m of node n.
-template <typename F>
-void forEachNeighbour(const GridLattice& lattice, std::int64_t n, F&& f)
-{
-  const std::array<int, 3> c = lattice.coordinates(n);
-  const std::int64_t step[3] = { 1, lattice.dims[0], static_cast<std::int64_t>(lattice.dims[0]) * lattice.dims[1] };
-  for (int a = 0; a < 3; ++a)
-  {
-    if (c[a] > 0)
-      f(n - step[a]);
-    if (c[a] < lattice.dims[a] - 1)
-      f(n + step[a]);
-  }
-}
-
 // The nodes of D, and with `fillCavities` those of the complement that the grid's border does not
 // reach through it.
 std::vector<char> dilationNodes(const DistanceGrid& field, double radius, bool fillCavities)
@@ -46,20 +32,7 @@ std::vector<char> dilationNodes(const DistanceGrid& field, double radius, bool f
   {
     return inside;
   }
-  std::vector<char> reached(d.size(), 0);
-  std::vector<std::int64_t> queue;
-  const auto visit = [&](std::int64_t n) {
-    if (!inside[n] && !reached[n])
-    {
-      reached[n] = 1;
-      queue.push_back(n);
-    }
-  };
-  forEachFaceNode(field.lattice(), wholeGrid(field.lattice()), visit);
-  for (std::size_t q = 0; q < queue.size(); ++q)
-  {
-    forEachNeighbour(field.lattice(), queue[q], visit);
-  }
+  const std::vector<char> reached = reachedFromBorder(field.lattice(), inside);
   for (std::size_t n = 0; n < d.size(); ++n)
   {
     inside[n] = !reached[n];

@@ -171,6 +171,56 @@ void fillsTheCavityOfSampledSphere()
   }
 }
 
+// A shell (the field |1 - |x||, its dilation by 0.15 a hollow ball) with a tunnel of nodes outside the
+// dilation through it, along each axis in turn: a cavity the border reaches through face neighbours
+// is not filled. A tunnel whose nodes meet only across a cell's diagonal is no face path: the cavity
+// is filled. (The fill joins runs of nodes along x across neighbouring rows: tunnels along y and z
+// cross rows, one along x stays in a row.)
+void fillsOnlyCavitiesTheBorderCannotReach()
+{
+  const GridLattice lattice = cube(1.5, 0.05);
+  const double radius = 0.15;
+  std::vector<float> shell(lattice.nodeCount());
+  std::int64_t centre = 0;
+  for (std::int64_t n = 0; n < lattice.nodeCount(); ++n)
+  {
+    const Vec3 x = nodeAt(lattice, n);
+    shell[n] = static_cast<float>(std::abs(1 - x.norm()));
+    centre = x.norm() < 1e-9 ? n : centre;
+  }
+  const int middle = lattice.dims[0] / 2;
+  enum Tunnel { None, AlongX, AlongY, AlongZ, Diagonal };
+  for (const Tunnel tunnel : { None, AlongX, AlongY, AlongZ, Diagonal })
+  {
+    std::vector<float> values = shell;
+    for (int t = middle; t < lattice.dims[0]; ++t) // from the centre out to the border
+    {
+      std::array<int, 3> c = { middle, middle, middle };
+      if (tunnel == Diagonal)
+      {
+        c = { t, t, middle }; // (t, t) and (t + 1, t + 1) share an edge, not a face
+      }
+      else if (tunnel != None)
+      {
+        c[tunnel - AlongX] = t;
+      }
+      if (tunnel != None && c[0] < lattice.dims[0] && c[1] < lattice.dims[1])
+      {
+        values[lattice.index(c[0], c[1], c[2])] = 1.0f;
+      }
+    }
+    DistanceGrid closed;
+    SW_CHECK(closingField(DistanceGrid(lattice, std::move(values)), radius, nullptr, true, closed),
+      "the closing of a shell with a tunnel");
+    const double atCentre = closed.values()[centre];
+    const bool open = tunnel == AlongX || tunnel == AlongY || tunnel == AlongZ;
+    std::cout << "shell, tunnel " << static_cast<int>(tunnel) << ": the centre at " << atCentre << std::endl;
+    SW_CHECK(open ? atCentre == 1.0 : atCentre < 0,
+      (open ? "a cavity that a face path joins to the border stays outside the closing"
+            : "a cavity without a face path to the border is filled"));
+  }
+}
+
 } // namespace
 
 int TestGapClosing(int, char*[])
@@ -178,6 +228,7 @@ int TestGapClosing(int, char*[])
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
     bridgesTheSlotBetweenTwoBalls();
     fillsTheCavityOfSampledSphere();
+    fillsOnlyCavitiesTheBorderCannotReach();
   });
   return testing::finish("TestGapClosing");
 }

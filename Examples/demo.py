@@ -14,6 +14,20 @@ from paraview import servermanager
 from paraview.vtk.vtkFiltersCore import vtkExtractEdges
 
 
+def save(path, proxy):
+    """Writes proxy's data to a VTK XML file with the data inline (base64), then reads it back. ParaView's
+    default, raw appended data, is not read back where Expat defers reparsing (2.6.0 on, and Debian 12's
+    security updates of 2.5.0: VTK issue 19258): a file ParaView cannot open would be no output."""
+    SaveData(path, proxy=proxy, DataMode="Binary")
+    written = OpenDataFile(path)
+    written.UpdatePipeline()
+    points = written.GetDataInformation().GetNumberOfPoints()
+    Delete(written)
+    if points != proxy.GetDataInformation().GetNumberOfPoints():
+        sys.exit("%s was written but reads back with %d points, not %d" % (
+            path, points, proxy.GetDataInformation().GetNumberOfPoints()))
+
+
 def show_distance_field(reader, sdf, view):
     """The picture of a signed distance field: its zero contour and a z slice coloured by distance."""
     surface = Contour(Input=sdf, ContourBy=["POINTS", "SignedDistance"], Isosurfaces=[0.0])
@@ -76,7 +90,7 @@ def shrink_wrap(reader, sdf, out, name, h):
     wrap.UpdatePipeline(steps * tau)
     seconds = time.time() - start
     final = servermanager.Fetch(wrap)
-    SaveData(os.path.join(out, name + "_wrap.vtp"), proxy=wrap)
+    save(os.path.join(out, name + "_wrap.vtp"), wrap)
 
     # A series of about 25 steps (every step at the default 25), for ParaView's animation.
     folder = os.path.join(out, name + "_wrap")
@@ -85,7 +99,7 @@ def shrink_wrap(reader, sdf, out, name, h):
     for k in range(0, steps + 1, max(1, steps // 25)):
         wrap.UpdatePipeline(k * tau)
         file = "step_%04d.vtp" % k
-        SaveData(os.path.join(folder, file), proxy=wrap)
+        save(os.path.join(folder, file), wrap)
         entries.append('    <DataSet timestep="%g" file="%s/%s"/>' % (k * tau, name + "_wrap", file))
     with open(os.path.join(out, name + "_wrap.pvd"), "w") as pvd:
         pvd.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n  <Collection>\n')
@@ -143,7 +157,7 @@ def main():
     if image.GetNumberOfPoints() == 0:
         sys.exit("Mesh Signed Distance produced no output (see the errors above)")
     vti = os.path.join(out, name + "_sdf.vti")
-    SaveData(vti, proxy=sdf)
+    save(vti, sdf)
 
     view = CreateView("RenderView")
     view.ViewSize = [1200, 800]

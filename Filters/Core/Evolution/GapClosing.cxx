@@ -1,8 +1,8 @@
 #include "GapClosing.h"
 
 #include "ClosestPointSweep.h"
-#include "GridRegions.h"
 #include "DistanceSource.h"
+#include "GridRegions.h"
 #include "Parallel.h"
 
 #include <algorithm>

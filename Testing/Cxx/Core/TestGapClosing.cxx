@@ -204,7 +204,7 @@ void fillsOnlyCavitiesTheBorderCannotReach()
       {
         c[tunnel - AlongX] = t;
       }
-      if (tunnel != None && c[0] < lattice.dims[0] && c[1] < lattice.dims[1])
+      if (tunnel != None)
       {
         values[lattice.index(c[0], c[1], c[2])] = 1.0f;
       }

@@ -219,7 +219,7 @@ public:
   ///@}
   ///@{
   /// The starting surface when no InitialSurface is connected: OFFSET_SURFACE (default), a contour at
-  /// StartOffset cells (default 3, at most GapSize / 2 and at least one cell) of the field outside the
+  /// StartOffset cells (default 3, at most 0.4 GapSize and at least one cell) of the field outside the
   /// target closed over gaps narrower than GapSize (the paper's Section 5), which starts close, wraps concave parts and keeps wider holes
   /// open (with Remeshing on, coarsened to TargetEdgeLength by collapses that do not make it cross
   /// itself, so the first steps do not carry the contour's fine vertices); or ICOSPHERE, a geodesic icosphere of SubdivisionLevel around the target (the paper's

@@ -39,6 +39,15 @@ constexpr double kMinPointGapCells = 1.5;
 // diagonal / 100.
 constexpr double kPointEdgePerNeighbourDistance = 10;
 constexpr double kMaxPointLengthDivisor = 200;
+// The offset start's farthest distance from the closed target, in Gap Sizes. Beyond half the gap the
+// start merges parts the closing keeps apart (handles the target has not, as between knot1's strands);
+// at half the gap a slot the closing just keeps open (as wide as the gap) touches itself in the start,
+// and the grid's interpolation decides. 0.4 leaves a fifth of the gap between the two: at 20,000
+// points the hand lost one of its two handles and the armadillo's largest distance fell 2.52% ->
+// 2.17%; the meshes and the 200,000-point clouds, whose start lies 3 cells or 1 cell out, wrap as
+// before (RESULTS.md, 2026-11-27). Below 0.4 the start nears the contour's sub-cell handles (0.3: the
+// mech part's 20,000 points wrapped at genus 5, not 3).
+constexpr double kMaxStartOffsetPerGap = 0.4;
 } // namespace
 
 Status WrapSettings::validate() const
@@ -97,9 +106,7 @@ WrapSettings WrapSettings::resolved(const Box& targetBox) const
   s.evolution.remeshing.shortest = s.edgeRange[0];
   s.evolution.remeshing.longest = s.edgeRange[1];
   s.evolution.remeshing.chordError = kChordError;
-  // A start farther out than half the gap would merge parts the closing keeps apart (and give the
-  // wrap handles the target does not have, as between knot1's strands).
-  s.start.maxOffset = 0.5 * s.gapSize;
+  s.start.maxOffset = kMaxStartOffsetPerGap * s.gapSize;
   return s;
 }
 

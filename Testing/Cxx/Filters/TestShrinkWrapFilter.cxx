@@ -360,7 +360,7 @@ void badInputAndStarts(vtkPolyData* box)
   bad->SetD(0);
   bad->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
   bad->SetStartOffset(1000);
-  bad->SetGapSize(1000); // the offset is at most half the gap
+  bad->SetGapSize(1000); // the offset is at most 0.4 of the gap
   SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
     "an offset surface beyond the distance field: error");
   bad->SetStartOffset(3);

@@ -233,8 +233,8 @@ public:
   /// The narrowest gap or hole that stays open, in the target's units: narrower ones are bridged (the
   /// wrap moves on the distance to the target's morphological closing by a ball of GapSize / 2).
   /// Default 0: automatic, the target's bounding-box diagonal / 50; for points, 8 median
-  /// nearest-neighbour distances and at least 1.5 cells of the field. A value below half a cell of the
-  /// distance field bridges nothing.
+  /// nearest-neighbour distances and at least 1.5 cells of the field (for a dense cloud the field is
+  /// made finer, see Resolution). A value below half a cell of the distance field bridges nothing.
   vtkSetClampMacro(GapSize, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(GapSize, double);
   ///@}
@@ -289,6 +289,9 @@ public:
   ///@}
   ///@{
   /// Cells along the longest axis of the internal distance field (no DistanceField input). Default 80.
+  /// For a point cloud with the automatic GapSize, up to 1.5 times more where 1.5 cells would exceed
+  /// 11 median nearest-neighbour distances (about 200,000 points on a CGAL mesh), so that the grid
+  /// does not bridge what the points keep apart (FieldCellSize reports the cell used).
   vtkSetMacro(Resolution, int);
   vtkGetMacro(Resolution, int);
   ///@}

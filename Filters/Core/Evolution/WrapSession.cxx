@@ -32,6 +32,13 @@ constexpr double kPointGapPerNeighbourDistance = 8;
 // between the camel's legs and the dragon's handle; 1.5 kept them open and added no handle on the
 // five clouds of the benchmark, clean or noisy (RESULTS.md, 2026-11-27).
 constexpr double kMinPointGapCells = 1.5;
+// ... and a dense cloud's field is made fine enough (up to 1.5 times Resolution) that the floor is
+// at most 11 of them. At 200,000 points the floor at Resolution 80 spans 11-21 spacings and bridged
+// the camel's tail to its legs and the dragon's claws (largest distances 1.57 and 1.62 times alpha
+// wrap's); 1.06-1.5 times finer brought them within it. 10 spacings and up to twice finer gave the
+// camel's clean points genus 4 (not 2), the noisy ones genus 3 (not 1): RESULTS.md, 2026-11-27 (night).
+constexpr double kDensePointGapPerNeighbourDistance = 11;
+constexpr double kMaxPointResolutionFactor = 1.5;
 // The automatic Target Edge Length of a point cloud, in median neighbour distances: a triangle then
 // spans a few dozen points, the detail their fitted surface holds; never coarser than a mesh's
 // automatic length (diagonal / kLengthDivisor), nor finer than diagonal / kMaxPointLengthDivisor.
@@ -198,6 +205,16 @@ WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacin
   }
   const double spacingGap = kPointGapPerNeighbourDistance * spacing;
   settings.gapSize = spacingGap;
+  // A dense cloud's spacing gap lies under the grid's floor: a finer field lowers the floor.
+  if (GridLattice lattice; placeGrid(box, settings.resolved(box).fieldPlacement(box, givenStart), lattice))
+  {
+    const double finer = kMinPointGapCells * lattice.spacing.maxCoeff() / (kDensePointGapPerNeighbourDistance * spacing);
+    if (finer > 1)
+    {
+      const double resolution = std::ceil(std::min(finer, kMaxPointResolutionFactor) * settings.resolution);
+      settings.resolution = static_cast<int>(std::min(resolution, double(std::numeric_limits<int>::max())));
+    }
+  }
   // The cell depends on the gap (the box holds the closing): twice round settles it.
   for (int pass = 0; pass < 2; ++pass)
   {

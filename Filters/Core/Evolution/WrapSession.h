@@ -84,7 +84,8 @@ Status checkPointsEnclose(const std::vector<Vec3>& points);
 // Settings for a wrap onto points within `box` whose median neighbour distance is `spacing`
 // (medianNeighbourDistance): the automatic sizes (0) from the spacing: the Target Edge Length, and the
 // Gap Size, at least a few cells of the field computed for them (placed with `givenStart`) so that the
-// grid resolves the closing.
+// grid resolves the closing; for a dense cloud with the automatic gap, a finer field (Resolution up to
+// 1.5 times) so that those cells do not widen the gap far beyond the spacing's.
 WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacing, bool givenStart);
 // The fields of a wrap onto points (issue #13) from their unsigned grid: the wrap is driven by the
 // distance to the points closed by a ball of half the gap size (the union of balls around them,

@@ -1,6 +1,7 @@
 // The evolver (issue #3, besides the shrinking-sphere tables): redistribution does its job, advection
 // onto a target, failures reported, scale covariance, the domain, refused settings, and edits between
-// steps (issue #9: a split surface evolves as the same surface given from the start).
+// steps (issue #9: a split surface evolves as the same surface given from the start); a point cloud's
+// automatic sizes (issue #13).
 #include "Evolver.h"
 #include "EdgeSplits.h"
 #include "Icosphere.h"
@@ -289,6 +290,39 @@ void splitsBetweenSteps()
     "resuming after an edit from the cache is bit for bit");
 }
 
+// Issue #13: a point cloud's automatic Gap Size is 8 spacings, at least 1.5 cells of the field; where
+// those cells would exceed 11 spacings (a dense cloud) the field is made finer, up to 1.5 times.
+void pointSizes()
+{
+  const Box box{ Vec3::Zero(), Vec3::Ones() };
+  const WrapSettings defaults;
+  const auto cellOf = [&](const WrapSettings& s) {
+    GridLattice lattice;
+    placeGrid(box, s.resolved(box).fieldPlacement(box, false), lattice);
+    return lattice.spacing.maxCoeff();
+  };
+  const double cell = cellOf(withPointSizes(defaults, box, 1.0 / defaults.resolution, false));
+  const WrapSettings sparse = withPointSizes(defaults, box, cell, false);
+  SW_CHECK(sparse.resolution == defaults.resolution && std::abs(sparse.gapSize - 8 * cell) < 1e-12,
+    "a sparse cloud: Resolution " << sparse.resolution << ", gap " << sparse.gapSize / cell << " spacings (8)");
+  // 1.5 cells at 80 are about 1.25 times 11 spacings: a finer field, the gap at its floor of 1.5 cells
+  // and within 11 spacings.
+  const double spacing = 1.5 * cell / (11 * 1.25);
+  const WrapSettings dense = withPointSizes(defaults, box, spacing, false);
+  const double floor = 1.5 * cellOf(dense);
+  SW_CHECK(dense.resolution > 80 && dense.resolution < 120 && dense.gapSize <= 11 * spacing * 1.01 &&
+      std::abs(dense.gapSize - floor) < 0.01 * floor,
+    "a dense cloud: Resolution " << dense.resolution << " (80 to 120), gap " << dense.gapSize / spacing
+                                 << " spacings (at most 11), " << dense.gapSize / floor << " times 1.5 cells");
+  const WrapSettings denser = withPointSizes(defaults, box, cell / 100, false);
+  SW_CHECK(denser.resolution == 120, "a denser cloud: Resolution " << denser.resolution << " (at most 1.5 times 80)");
+  WrapSettings given = defaults;
+  given.gapSize = 0.01;
+  const WrapSettings kept = withPointSizes(given, box, cell / 100, false);
+  SW_CHECK(kept.resolution == defaults.resolution && kept.gapSize == 0.01,
+    "a given Gap Size: Resolution " << kept.resolution << " and the gap " << kept.gapSize << " kept");
+}
+
 } // namespace
 
 int TestEvolver(int, char*[])
@@ -301,6 +335,7 @@ int TestEvolver(int, char*[])
     leavingTheDomain();
     refusedSettings();
     splitsBetweenSteps();
+    pointSizes();
   });
   return testing::finish("TestEvolver");
 }

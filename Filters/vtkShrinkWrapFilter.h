@@ -221,7 +221,8 @@ public:
   /// The starting surface when no InitialSurface is connected: OFFSET_SURFACE (default), a contour at
   /// StartOffset cells (default 3, at most 0.4 GapSize and at least one cell) of the field outside the
   /// target closed over gaps narrower than GapSize (the paper's Section 5), which starts close, wraps concave parts and keeps wider holes
-  /// open (with Remeshing on, coarsened to TargetEdgeLength by collapses that do not make it cross
+  /// open (where that contour joins two parts across a slot the closing keeps, a handle, the highest
+  /// lower offset, to half a cell, without the join is taken) (with Remeshing on, coarsened to TargetEdgeLength by collapses that do not make it cross
   /// itself, so the first steps do not carry the contour's fine vertices); or ICOSPHERE, a geodesic icosphere of SubdivisionLevel around the target (the paper's
   /// Algorithm 3 and Fig. 11), which spans concave parts and holes like a membrane.
   vtkSetClampMacro(StartingShape, int, ICOSPHERE, OFFSET_SURFACE);

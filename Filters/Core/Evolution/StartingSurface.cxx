@@ -1,6 +1,7 @@
 #include "StartingSurface.h"
 
 #include "CheckedEdits.h"
+#include "ContourTopology.h"
 #include "Components.h"
 #include "Icosphere.h"
 #include "Relaxation.h"
@@ -29,6 +30,57 @@ Status offsetSurface(const DistanceGrid& field, double offset, const Contour& co
   }
   return {};
 }
+
+namespace
+{
+// Specks smaller than two cells are noise the field cannot hold (curvature shrinks them away).
+constexpr double kSpeckCells = 2;
+// Offsets below the start's, down to half a cell, in steps of a quarter cell, are tried for fewer
+// handles.
+constexpr double kLowestOffsetCells = 0.5;
+constexpr double kOffsetStepCells = 0.25;
+
+// `start`, the contour at `offset`, replaced by the contour at the highest lower offset with fewer
+// handles, if one has. Where two parts lie a little more than twice the offset apart, the grid's
+// contour may join them across the slot: a handle the closed field has not, which the Lagrangian wrap
+// can never open again (the hand's 20,000 points: thumb and index finger at 1 cell, apart at half a
+// cell; RESULTS.md, 2026-11-27 (night)). A lower offset cannot close a hole a higher one keeps open,
+// so fewer handles there are such joins undone. The Euler characteristics of the contours, counted
+// without building them (ContourTopology.h), pick the offsets worth building.
+void fewestHandles(const DistanceGrid& field, double offset, const Contour& contour, TriangleSurface& start)
+{
+  const double h = field.lattice().spacing.maxCoeff();
+  const auto euler = [&](double d) {
+    const ContourEuler e = contourEulerCharacteristic(field, d);
+    return std::max(e.grid, e.halfSpacing);
+  };
+  long long bestEuler = euler(offset);
+  int handles = -1;
+  for (double d = offset - kOffsetStepCells * h; d >= (kLowestOffsetCells - 1e-9) * h; d -= kOffsetStepCells * h)
+  {
+    // A contour with fewer handles has a higher Euler characteristic (or more components as well).
+    const long long e = euler(d);
+    TriangleSurface candidate;
+    if (e <= bestEuler || !offsetSurface(field, d, contour, candidate))
+    {
+      continue;
+    }
+    removeSpecks(candidate, kSpeckCells * h);
+    if (handles < 0)
+    {
+      TriangleSurface current = start;
+      removeSpecks(current, kSpeckCells * h);
+      handles = handleCount(current);
+    }
+    if (const int fewer = handleCount(candidate); fewer < handles)
+    {
+      start = std::move(candidate);
+      handles = fewer;
+      bestEuler = e;
+    }
+  }
+}
+} // namespace
 
 Status orientOutwards(SurfaceMesh& mesh)
 {
@@ -62,13 +114,13 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
     {
       return Status::failure("cannot start from the offset surface: " + status.message());
     }
+    fewestHandles(field, offset, contour, start);
   }
   else
   {
     start = icosphere(settings.subdivision, targetBox.center(), 0.5 * 1.05 * targetBox.diagonal());
   }
-  // Specks smaller than two cells are noise the field cannot hold (curvature shrinks them away).
-  specks = removeSpecks(start, 2 * h);
+  specks = removeSpecks(start, kSpeckCells * h);
   Status status = SurfaceMesh::build(start.points, start.triangles, mesh);
   if (status)
   {

@@ -100,4 +100,22 @@ int removeCavities(TriangleSurface& surface)
   return removeComponents(surface, root, [&](int r) { return volume[r] * outer < 0; });
 }
 
+int handleCount(const TriangleSurface& surface)
+{
+  const std::vector<int> root = componentRoots(surface);
+  std::vector<char> used(surface.points.size(), 0), isRoot(surface.points.size(), 0);
+  for (const auto& t : surface.triangles)
+  {
+    for (int v : t)
+    {
+      used[v] = 1;
+      isRoot[root[v]] = 1;
+    }
+  }
+  const long long vertices = std::count(used.begin(), used.end(), 1);
+  const long long components = std::count(isRoot.begin(), isRoot.end(), 1);
+  const long long euler = vertices - static_cast<long long>(surface.triangles.size()) / 2;
+  return static_cast<int>(components - euler / 2);
+}
+
 } // namespace shrinkwrap

@@ -17,6 +17,10 @@ int removeSpecks(TriangleSurface& surface, double size);
 // a contour of an unsigned field has inside the target. Returns how many were removed.
 int removeCavities(TriangleSurface& surface);
 
+// The handles of a closed surface, summed over its components: C - (V - F / 2) / 2 for C components
+// (V - F / 2 is V - E + F when every edge has two triangles).
+int handleCount(const TriangleSurface& surface);
+
 } // namespace shrinkwrap
 
 #endif

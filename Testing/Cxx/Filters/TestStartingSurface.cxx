@@ -12,7 +12,10 @@
 //   keeps apart (as many blobs as at half the spacing, the grid's number of triangles), not where the
 //   raise would change the interpolant's topology, also where the join takes two faces (each raise
 //   alone undoes nothing), and the grid is left alone elsewhere
-//   (ContourTopology.h).
+//   (ContourTopology.h);
+// - where the offset start joins two parts across a slit the field keeps open (a handle), a lower
+//   offset without that handle is taken.
+#include "Components.h"
 #include "ContourTopology.h"
 #include "Icosphere.h"
 #include "Relaxation.h"
@@ -413,6 +416,54 @@ void followsTheInterpolantsTopology()
   }
 }
 
+// A ring cut open (a tube of radius 0.2 round three quarters and more of a circle of radius 1, cut by
+// a slit whose caps lie `slit` apart), sampled on a grid of spacing h: the offset start at a cell
+// joins the caps across a slit of 1.8 cells -- a handle the ring has not; the start takes the highest
+// offset below it (to half a cell) with fewer handles (StartingSurface.cxx, fewestHandles).
+void startsWithoutTheSlitsBridge()
+{
+  const double h = 0.05, tube = 0.2, slit = 1.8 * h;
+  // The caps' centres lie slit + 2 tube apart on the circle: half that angle each side of the x axis.
+  const double half = std::asin(0.5 * (slit + 2 * tube));
+  shrinkwrap::GridLattice lattice;
+  lattice.spacing = Vec3::Constant(h);
+  lattice.dims = { 57, 57, 17 };
+  lattice.origin = -0.5 * h * Vec3(56, 56, 16);
+  std::vector<float> values(lattice.nodeCount());
+  for (std::int64_t n = 0; n < lattice.nodeCount(); ++n)
+  {
+    const Vec3 p = lattice.position(lattice.coordinates(n));
+    const double angle = std::atan2(p.y(), p.x());
+    double d = std::hypot(std::hypot(p.x(), p.y()) - 1, p.z()); // to the circle
+    if (std::abs(angle) < half) // the slit's side: to the nearer cap's centre
+    {
+      d = (p - Vec3(std::cos(half), angle < 0 ? -std::sin(half) : std::sin(half), 0)).norm();
+    }
+    values[n] = static_cast<float>(d - tube);
+  }
+  const shrinkwrap::DistanceGrid field(lattice, std::move(values));
+  const shrinkwrap::Contour contour = [](const shrinkwrap::DistanceGrid& grid, double value) {
+    return shrinkwrap::convert::contour(grid, value, true);
+  };
+  SW_CHECK(shrinkwrap::handleCount(contour(field, h)) == 1, "the contour a cell out joins the caps: one handle");
+  shrinkwrap::StartSettings settings;
+  settings.offset = 1;
+  settings.relaxation = 0;
+  shrinkwrap::SurfaceMesh start;
+  int specks = 0;
+  const shrinkwrap::Status status = shrinkwrap::startingSurface(
+    field, lattice.bounds(), nullptr, settings, shrinkwrap::FlipSettings(), contour, start, specks);
+  shrinkwrap::TriangleSurface surface{ start.points(), start.triangles() };
+  double nearest = INFINITY; // the start's distance from the ring, at its vertices
+  for (const Vec3& p : surface.points)
+  {
+    nearest = std::min(nearest, field.sample(p).value);
+  }
+  SW_CHECK(status && shrinkwrap::handleCount(surface) == 0 && nearest > 0.4 * h,
+    "the start keeps the slit open: " << shrinkwrap::handleCount(surface) << " handles, at least "
+                                      << nearest / h << " cells from the ring");
+}
+
 } // namespace
 
 int TestStartingSurface(int, char*[])
@@ -422,5 +473,6 @@ int TestStartingSurface(int, char*[])
   wrapsATorusFromAContour();
   wrapsATorusFromItsOffset();
   coarsensTheOffsetStart();
+  startsWithoutTheSlitsBridge();
   return testing::finish("TestStartingSurface");
 }

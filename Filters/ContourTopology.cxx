@@ -168,24 +168,52 @@ std::vector<std::int64_t> wronglyJoinedCorners(const DistanceGrid& grid, double 
 }
 } // namespace
 
-ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value)
+std::vector<ContourEuler> contourEulerCharacteristics(const DistanceGrid& grid, const std::vector<double>& values)
 {
   const GridLattice& lattice = grid.lattice();
-  std::atomic<long long> twiceGrid{ 0 }, twiceFine{ 0 };
+  const std::vector<float>& v = grid.values();
+  std::vector<ContourEuler> twice(values.size());
+  std::mutex lock;
   parallelFor(0, lattice.dims[2] - 1, 1, [&](vtkIdType kb, vtkIdType ke) {
-    ContourEuler sum;
+    std::vector<ContourEuler> sum(values.size());
     for (int k = static_cast<int>(kb); k < ke; ++k)
       for (int j = 0; j + 1 < lattice.dims[1]; ++j)
         for (int i = 0; i + 1 < lattice.dims[0]; ++i)
         {
-          const ContourEuler cell = cellEuler(lattice, grid.values(), i, j, k, value);
-          sum.grid += cell.grid;
-          sum.halfSpacing += cell.halfSpacing;
+          float low = std::numeric_limits<float>::infinity(), high = -low;
+          for (const auto& corner : kCorner)
+          {
+            const float f = v[lattice.index(i + corner[0], j + corner[1], k + corner[2])];
+            low = std::min(low, f);
+            high = std::max(high, f);
+          }
+          for (std::size_t l = 0; l < values.size(); ++l)
+          {
+            if (low < values[l] && high >= values[l]) // the cell crosses this value (cellEuler)
+            {
+              const ContourEuler cell = cellEuler(lattice, v, i, j, k, values[l]);
+              sum[l].grid += cell.grid;
+              sum[l].halfSpacing += cell.halfSpacing;
+            }
+          }
         }
-    twiceGrid += sum.grid;
-    twiceFine += sum.halfSpacing;
+    const std::lock_guard<std::mutex> guard(lock);
+    for (std::size_t l = 0; l < values.size(); ++l)
+    {
+      twice[l].grid += sum[l].grid;
+      twice[l].halfSpacing += sum[l].halfSpacing;
+    }
   });
-  return { twiceGrid.load() / 2, twiceFine.load() / 2 };
+  for (ContourEuler& e : twice)
+  {
+    e = { e.grid / 2, e.halfSpacing / 2 };
+  }
+  return twice;
+}
+
+ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value)
+{
+  return contourEulerCharacteristics(grid, { value }).front();
 }
 
 DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)

@@ -9,6 +9,8 @@
 
 #include "DistanceGrid.h"
 
+#include <vector>
+
 namespace shrinkwrap
 {
 
@@ -23,6 +25,8 @@ struct ContourEuler
   long long halfSpacing = 0;
 };
 ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value);
+// The same for several values in one pass over the cells.
+std::vector<ContourEuler> contourEulerCharacteristics(const DistanceGrid& grid, const std::vector<double>& values);
 
 // The grid with the case table's wrong joins undone on the faces: where two diagonal corners of a face
 // lie below `value` and the face's bilinear saddle does not (the interpolant keeps them apart, the

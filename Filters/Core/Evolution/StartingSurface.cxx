@@ -50,18 +50,24 @@ constexpr double kOffsetStepCells = 0.25;
 void fewestHandles(const DistanceGrid& field, double offset, const Contour& contour, TriangleSurface& start)
 {
   const double h = field.lattice().spacing.maxCoeff();
-  const auto euler = [&](double d) {
-    const ContourEuler e = contourEulerCharacteristic(field, d);
-    return std::max(e.grid, e.halfSpacing);
-  };
-  long long bestEuler = euler(offset);
-  int handles = -1;
+  std::vector<double> offsets{ offset }; // the start's, then lower ones
   for (double d = offset - kOffsetStepCells * h; d >= (kLowestOffsetCells - 1e-9) * h; d -= kOffsetStepCells * h)
   {
+    offsets.push_back(d);
+  }
+  if (offsets.size() < 2)
+  {
+    return;
+  }
+  const std::vector<ContourEuler> counts = contourEulerCharacteristics(field, offsets);
+  const auto euler = [&](std::size_t i) { return std::max(counts[i].grid, counts[i].halfSpacing); };
+  long long bestEuler = euler(0);
+  int handles = -1;
+  for (std::size_t i = 1; i < offsets.size(); ++i)
+  {
     // A contour with fewer handles has a higher Euler characteristic (or more components as well).
-    const long long e = euler(d);
     TriangleSurface candidate;
-    if (e <= bestEuler || !offsetSurface(field, d, contour, candidate))
+    if (euler(i) <= bestEuler || !offsetSurface(field, offsets[i], contour, candidate))
     {
       continue;
     }
@@ -76,7 +82,7 @@ void fewestHandles(const DistanceGrid& field, double offset, const Contour& cont
     {
       start = std::move(candidate);
       handles = fewer;
-      bestEuler = e;
+      bestEuler = euler(i);
     }
   }
 }

@@ -416,8 +416,8 @@ void followsTheInterpolantsTopology()
   }
 }
 
-// A ring cut open (a tube of radius 0.2 round three quarters and more of a circle of radius 1, cut by
-// a slit whose caps lie `slit` apart), sampled on a grid of spacing h: the offset start at a cell
+// A ring cut open (a tube of radius 0.2 round a circle of radius 1, cut by a slit whose caps lie
+// `slit` apart), sampled on a grid of spacing h: the offset start at a cell
 // joins the caps across a slit of 1.8 cells -- a handle the ring has not; the start takes the highest
 // offset below it (to half a cell) with fewer handles (StartingSurface.cxx, fewestHandles).
 void startsWithoutTheSlitsBridge()
@@ -446,6 +446,9 @@ void startsWithoutTheSlitsBridge()
     return shrinkwrap::convert::contour(grid, value, true);
   };
   SW_CHECK(shrinkwrap::handleCount(contour(field, h)) == 1, "the contour a cell out joins the caps: one handle");
+  const std::vector<shrinkwrap::ContourEuler> counts = shrinkwrap::contourEulerCharacteristics(field, { h, 0.5 * h });
+  SW_CHECK(counts.size() == 2 && counts[0].grid == 0 && counts[1].grid == 2,
+    "Euler characteristics in one pass: 0 a cell out (a handle), 2 half a cell out");
   shrinkwrap::StartSettings settings;
   settings.offset = 1;
   settings.relaxation = 0;

@@ -40,6 +40,14 @@ constexpr double kSpeckCells = 2;
 constexpr double kLowestOffsetCells = 0.5;
 constexpr double kOffsetStepCells = 0.25;
 
+// The handles a contour keeps once its specks are gone (a speck may be a tiny ring); the contour itself
+// stays whole, so that the start's specks are counted where they are removed.
+int handlesWithoutSpecks(TriangleSurface surface, double speck)
+{
+  removeSpecks(surface, speck);
+  return handleCount(surface);
+}
+
 // `start`, the contour at `offset`, replaced by the contour at the highest lower offset with fewer
 // handles, if one has. Where two parts lie a little more than twice the offset apart, the grid's
 // contour may join them across the slot: a handle the closed field has not, which the Lagrangian wrap
@@ -71,14 +79,11 @@ void fewestHandles(const DistanceGrid& field, double offset, const Contour& cont
     {
       continue;
     }
-    removeSpecks(candidate, kSpeckCells * h);
     if (handles < 0)
     {
-      TriangleSurface current = start;
-      removeSpecks(current, kSpeckCells * h);
-      handles = handleCount(current);
+      handles = handlesWithoutSpecks(start, kSpeckCells * h);
     }
-    if (const int fewer = handleCount(candidate); fewer < handles)
+    if (const int fewer = handlesWithoutSpecks(candidate, kSpeckCells * h); fewer < handles)
     {
       start = std::move(candidate);
       handles = fewer;

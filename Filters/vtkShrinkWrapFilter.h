@@ -197,8 +197,9 @@ public:
   /// Keep the rims of an open target (a hole's edge, an open sheet's edge, a fin) inside the wrap: after
   /// each step, rim points outside the surface pull the nearest triangle onto them. The wrap folds
   /// around such a rim, and without this the fold creeps back along the sheet (nothing in eq. (4) pulls
-  /// it out), so the rim pokes out. Needs Remeshing and the exact near field; a closed target has no
-  /// rims. Default on.
+  /// it out), so the rim pokes out. On points, the rims are the points whose neighbours lie to one
+  /// side (a sheet's edge, a thin part's tip). Needs Remeshing and the exact near field; a closed
+  /// target has no rims. Default on.
   vtkSetMacro(CoverRims, bool);
   vtkGetMacro(CoverRims, bool);
   vtkBooleanMacro(CoverRims, bool);

@@ -39,6 +39,10 @@ public:
   // The surface point under x; side 0 (points have no sides: the caller orients the plane), not sure,
   // and trusted less as the points around it lie to one side.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
+  // The points on a rim (a sheet's edge, a thin part's tip) as rim edges of no length, for the wrap to
+  // cover (RimCoverage.h): their neighbours at the finest width lean to one side beyond an even
+  // sample's lean and leave a rim's angular gap. Points have no creases: `creaseAngle` is not used.
+  std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override;
 
 private:
   struct Plane
@@ -79,6 +83,7 @@ private:
   // The patch around `centre` at one scale; false where no plane fits.
   bool fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const;
   Patch fitPatch(int id) const; // around point id, at the finest scale that fits
+  bool onRim(const Vec3& centre, const Scale& scale) const; // see rims()
   // How far x's surface point on the patch may be trusted, 0 to 1; 0 also where x's foot lies too far
   // from the patch's centre for the patch to speak for it.
   static double trustAt(const Vec3& x, const Patch& patch);

@@ -333,13 +333,19 @@ int Evolver::coverRims()
   // A move the hold-back refuses (it would cross the surface: near a rim both layers lie on the sheet)
   // is tried again at half its length, twice.
   std::vector<char> pending(moves.size());
+  int left = 0;
   for (std::size_t v = 0; v < moves.size(); ++v)
   {
     pending[v] = moves[v] != Vec3::Zero();
+    left += pending[v];
   }
   int moved = 0;
   for (double share : { 1.0, 0.5, 0.25 })
   {
+    if (left == 0)
+    {
+      break; // every sample covered (mostly so, once the wrap has landed): nothing to check
+    }
     std::vector<Vec3> next = this->Mesh.points();
     for (std::size_t v = 0; v < moves.size(); ++v)
     {
@@ -349,7 +355,7 @@ int Evolver::coverRims()
     {
       this->holdBack(next);
     }
-    int left = 0;
+    left = 0;
     for (std::size_t v = 0; v < moves.size(); ++v)
     {
       const bool done = pending[v] && next[v] != this->Mesh.points()[v];
@@ -358,10 +364,6 @@ int Evolver::coverRims()
       left += pending[v];
     }
     this->Mesh.points().swap(next);
-    if (left == 0)
-    {
-      break;
-    }
   }
   return moved;
 }

@@ -2,11 +2,16 @@
 // plane it is exact; on a randomly sampled unit sphere the surface point under a query lies on the
 // sphere to a small fraction of the sampling's spacing, holes of the random sample included (the plane
 // alone is biased inwards by about h^2 / 2, the quadric removes that); with Gaussian noise of sigma
-// it lies well inside the noise band; over a hole far wider than h it finds nothing (the grid decides).
+// it lies well inside the noise band; over a hole far wider than h it finds nothing (the grid decides),
+// and the points along the hole's rim are the cloud's rims.
 // (The point queries under it: TestPointTree.)
 #include "PointSurface.h"
 #include "TestUtilities.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
 #include <random>
 
 namespace
@@ -128,6 +133,38 @@ int TestPointSurface(int, char*[])
     SW_CHECK(!centre.found, "holed plane: nothing over the hole's centre");
     SW_CHECK(beyond.found && beyond.trust == 1 && std::abs(beyond.point.z()) < 1e-9,
       "holed plane: the plane beyond the rim (z " << beyond.point.z() << ")");
+    // Its rims (for the wrap to cover, RimCoverage.h): points along the hole's rim all round it (measured
+    // 3 to 9 in each eighth) and along the square's border; inside the sheet only where the random
+    // sample leaves a hole wide and lopsided enough to look like a rim (measured 25 of the 4,000 points;
+    // harmless to a wrap, which lies on such points already).
+    const double h = 3 * medianNeighbourDistance(points);
+    int onHole = 0, inside = 0;
+    std::array<int, 8> sectors{};
+    for (const auto& rim : surface.rims(180))
+    {
+      const Vec3& p = rim[0];
+      const bool hole = p.norm() < 0.4 + h, border = std::max(std::abs(p.x()), std::abs(p.y())) > 1 - h;
+      onHole += hole;
+      inside += !hole && !border;
+      if (hole)
+      {
+        ++sectors[static_cast<int>(std::floor((std::atan2(p.y(), p.x()) + M_PI) / (M_PI / 4))) % 8];
+      }
+    }
+    std::cout << "holed plane: " << onHole << " rim points on the hole's rim, " << inside << " inside; per eighth:";
+    for (int n : sectors)
+      std::cout << " " << n;
+    std::cout << std::endl;
+    SW_CHECK(inside < 0.01 * points.size() && *std::min_element(sectors.begin(), sectors.end()) >= 2,
+      "holed plane: rim points all round the hole (fewest in an eighth " << *std::min_element(sectors.begin(), sectors.end())
+                                                                         << "), " << inside << " inside the sheet");
+  }
+  // A closed surface has no rims but the random sample's look-alikes: the sphere's 4,000 points (measured 1).
+  {
+    const std::vector<Vec3> points = spherePoints(4000, 0, 7);
+    const PointSurface surface(std::make_shared<const PointSource>(points), 3 * medianNeighbourDistance(points));
+    const std::size_t rims = surface.rims(180).size();
+    SW_CHECK(rims < 0.005 * points.size(), "sphere: hardly any rim points (" << rims << ")");
   }
   return testing::finish("TestPointSurface");
 }

@@ -41,7 +41,8 @@ public:
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   // The points on a rim (a sheet's edge, a thin part's tip) as rim edges of no length, for the wrap to
   // cover (RimCoverage.h): their neighbours at the finest width lean to one side beyond an even
-  // sample's lean and leave a rim's angular gap. Points have no creases: `creaseAngle` is not used.
+  // sample's lean, leave a rim's angular gap, and lie on their plane (noisy points have no rims).
+  // Points have no creases: `creaseAngle` is not used.
   std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override;
 
 private:

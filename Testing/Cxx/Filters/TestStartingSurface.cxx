@@ -416,12 +416,9 @@ void followsTheInterpolantsTopology()
   }
 }
 
-// A ring cut open (a tube of radius 0.2 round a circle of radius 1, cut by a slit whose caps lie
-// `slit` apart), sampled on a grid of spacing h: the offset start at a cell
-// joins the caps across a slit of 1.8 cells -- a handle the ring has not; the start takes the highest
-// offset below it (to half a cell) with fewer handles (StartingSurface.cxx, fewestHandles).
-// A ring cut by a slit of 1.8 cells (a little more than twice the offset start's floor of one cell), on
-// a grid of h = 0.05; with `speck`, a blob at its centre that a contour half a cell out leaves as a speck.
+// A ring cut open (a tube of radius 0.2 round a circle of radius 1, cut by a slit of 1.8 cells whose
+// caps lie `slit` apart), sampled on a grid of spacing h; with `speck`, a blob at its centre that a
+// contour half a cell out leaves as a speck.
 shrinkwrap::DistanceGrid slitRing(double h, bool speck)
 {
   const double tube = 0.2, slit = 1.8 * h;
@@ -450,6 +447,9 @@ shrinkwrap::DistanceGrid slitRing(double h, bool speck)
   return shrinkwrap::DistanceGrid(lattice, std::move(values));
 }
 
+// The offset start at a cell joins the ring's caps across the slit -- a handle the ring has not; the
+// start takes the highest offset below it (to half a cell) with fewer handles (StartingSurface.cxx,
+// fewestHandles), and the specks of the contour it takes are counted where they are left out.
 void startsWithoutTheSlitsBridge()
 {
   const double h = 0.05;

@@ -209,9 +209,8 @@ bool PointSurface::surrounds(const Neighbourhood& around, const Patch& patch)
   return gap < kMaxAngularGap;
 }
 
-bool PointSurface::fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const
+bool PointSurface::fitPlaneAround(const Vec3& centre, const Scale& scale, Neighbourhood& around, Patch& patch) const
 {
-  thread_local Neighbourhood around;
   this->gather(centre, scale, around);
   if (!fit(around, patch.plane))
   {
@@ -219,11 +218,25 @@ bool PointSurface::fitAround(const Vec3& centre, const Scale& scale, Patch& patc
   }
   patch.centre = centre;
   patch.width = scale.width;
+  return true;
+}
+
+bool PointSurface::leans(const Patch& patch)
+{
+  return leanInPlane(patch.plane.centroid, patch.centre, patch.plane.normal).norm() > kEvenLean * patch.width;
+}
+
+bool PointSurface::fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const
+{
+  thread_local Neighbourhood around;
+  if (!this->fitPlaneAround(centre, scale, around, patch))
+  {
+    return false;
+  }
   fitQuadric(around, patch);
   // Only a lean beyond an even sample's fades the trust (trustAt); only then is it asked whether the
   // points lie all around.
-  patch.surrounded = leanInPlane(patch.plane.centroid, centre, patch.plane.normal).norm() > kEvenLean * scale.width &&
-    surrounds(around, patch);
+  patch.surrounded = leans(patch) && surrounds(around, patch);
   return true;
 }
 
@@ -341,15 +354,8 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
 bool PointSurface::onRim(const Vec3& centre, const Scale& scale) const
 {
   thread_local Neighbourhood around;
-  this->gather(centre, scale, around);
-  Patch patch;
-  if (!fit(around, patch.plane))
-  {
-    return false;
-  }
-  patch.centre = centre;
-  patch.width = scale.width;
-  if (!(leanInPlane(patch.plane.centroid, centre, patch.plane.normal).norm() > kEvenLean * scale.width))
+  Patch patch; // its plane only: a rim needs no quadric
+  if (!this->fitPlaneAround(centre, scale, around, patch) || !leans(patch))
   {
     return false;
   }
@@ -384,7 +390,7 @@ std::vector<std::array<Vec3, 2>> PointSurface::rims(double /*creaseAngle: points
   std::vector<int> asking;
   for (std::size_t i = 0; i < all.size(); ++i)
   {
-    if (this->Scales.size() < 2 || inSample(i, 1))
+    if (inSample(i, 1))
     {
       asking.push_back(static_cast<int>(i));
     }

@@ -81,6 +81,10 @@ private:
   // Whether the neighbourhood's points, seen from its centre along the patch's plane, leave no angular
   // gap wider than a rim would: a sampling hole, however lopsided, is surrounded; a rim is not.
   static bool surrounds(const Neighbourhood& around, const Patch& patch);
+  // The neighbourhood of `centre` at one scale and the patch's plane; false where no plane fits.
+  bool fitPlaneAround(const Vec3& centre, const Scale& scale, Neighbourhood& around, Patch& patch) const;
+  // Whether the patch's points lean to one side of its centre beyond an even sample's lean.
+  static bool leans(const Patch& patch);
   // The patch around `centre` at one scale; false where no plane fits.
   bool fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const;
   Patch fitPatch(int id) const; // around point id, at the finest scale that fits

@@ -198,8 +198,8 @@ public:
   /// each step, rim points outside the surface pull the nearest triangle onto them. The wrap folds
   /// around such a rim, and without this the fold creeps back along the sheet (nothing in eq. (4) pulls
   /// it out), so the rim pokes out. On points, the rims are the points whose neighbours lie to one
-  /// side (a sheet's edge, a thin part's tip). Needs Remeshing and the exact near field; a closed
-  /// target has no rims. Default on.
+  /// side (a sheet's edge, a thin part's tip), taken on the plane fitted through them (so noisy points
+  /// have rims too). Needs Remeshing and the exact near field; a closed target has no rims. Default on.
   vtkSetMacro(CoverRims, bool);
   vtkGetMacro(CoverRims, bool);
   vtkBooleanMacro(CoverRims, bool);

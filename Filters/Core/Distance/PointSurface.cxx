@@ -38,9 +38,13 @@ constexpr double kMaxAngularGap = 2 * M_PI / 3;
 // points lie up to a few widths apart: the sawtooth rims of mech-holes-shark at 200,000 points, whose
 // teeth one width missed; RESULTS.md, 2026-11-28).
 constexpr double kRimReach = 3;
-// In widths: the largest RMS height of the points over a rim point's plane (mech-holes-shark's 20,000
-// points: 0.005-0.05 for nine in ten clean ones, 0.11-0.19 with noise of 0.25% of the diagonal).
-constexpr double kMaxRimSpread = 0.08;
+// In widths (of the finest scale at which the points around a rim point look flat): the largest RMS
+// height of the points over its plane. Clean points measure 0.005-0.05 at h (nine in ten on
+// mech-holes-shark's 20,000); noise of 0.25% of the diagonal hides the plane at h, and at the width
+// where it shows, its points lie within about a sixth of it. 0.2 finds the noisy mech part's rims
+// (0.08 at the finest fitting width: none), 0.5 also finds rims in the noisy armadillo's creases
+// (RESULTS.md, 2026-11-28, later).
+constexpr double kMaxRimSpread = 0.2;
 constexpr double kMaxFlatness = 0.25;  // smallest over middle eigenvalue: above it, no plane
 constexpr double kMinPivot = 1e-6;     // of the quadric's normal equations, relative to the largest
 constexpr double kMaxLift = 0.2;       // in widths: the most a quadric may move the plane's surface point
@@ -226,6 +230,26 @@ bool PointSurface::leans(const Patch& patch)
   return leanInPlane(patch.plane.centroid, patch.centre, patch.plane.normal).norm() > kEvenLean * patch.width;
 }
 
+const PointSurface::Scale* PointSurface::flatScale(const Vec3& centre, Neighbourhood& around, Patch& patch) const
+{
+  for (const auto& s : this->Scales)
+  {
+    if (this->fitPlaneAround(centre, *s, around, patch))
+    {
+      return s.get();
+    }
+  }
+  return nullptr;
+}
+
+void PointSurface::finishPatch(const Neighbourhood& around, Patch& patch)
+{
+  fitQuadric(around, patch);
+  // Only a lean beyond an even sample's fades the trust (trustAt); only then is it asked whether the
+  // points lie all around.
+  patch.surrounded = leans(patch) && surrounds(around, patch);
+}
+
 bool PointSurface::fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const
 {
   thread_local Neighbourhood around;
@@ -233,26 +257,20 @@ bool PointSurface::fitAround(const Vec3& centre, const Scale& scale, Patch& patc
   {
     return false;
   }
-  fitQuadric(around, patch);
-  // Only a lean beyond an even sample's fades the trust (trustAt); only then is it asked whether the
-  // points lie all around.
-  patch.surrounded = leans(patch) && surrounds(around, patch);
+  finishPatch(around, patch);
   return true;
 }
 
 PointSurface::Patch PointSurface::fitPatch(int id) const
 {
-  // The finest scale at which the points around this one look flat: noise thicker than a fraction of
-  // the width hides the plane until the width outgrows it.
+  thread_local Neighbourhood around;
   Patch patch;
-  for (const auto& s : this->Scales)
+  if (!this->flatScale(this->Points->points()[id], around, patch))
   {
-    if (this->fitAround(this->Points->points()[id], *s, patch))
-    {
-      return patch;
-    }
+    return Patch();
   }
-  return Patch();
+  finishPatch(around, patch);
+  return patch;
 }
 
 PointSurface::Patch PointSurface::patchAt(int id) const
@@ -351,16 +369,17 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
   return p;
 }
 
-bool PointSurface::onRim(const Vec3& centre, const Scale& scale) const
+bool PointSurface::onRim(const Vec3& centre, Vec3& onPlane) const
 {
   thread_local Neighbourhood around;
   Patch patch; // its plane only: a rim needs no quadric
-  if (!this->fitPlaneAround(centre, scale, around, patch) || !leans(patch))
+  const Scale* scale = this->flatScale(centre, around, patch);
+  if (!scale || !leans(patch))
   {
     return false;
   }
-  // Noisy points off the plane (a rim among them is no line to hold the wrap to, and the wrap lies
-  // inside their band) are no rim.
+  // Points spread off their plane even at the width where it shows (a crease, a thin part's end) are
+  // no rim.
   double total = 0, squares = 0;
   for (std::size_t i = 0; i < around.offsets.size(); ++i)
   {
@@ -368,19 +387,23 @@ bool PointSurface::onRim(const Vec3& centre, const Scale& scale) const
     total += around.weights[i];
     squares += around.weights[i] * height * height;
   }
-  return squares <= kMaxRimSpread * kMaxRimSpread * scale.width * scale.width * total && !surrounds(around, patch);
+  // A noisy rim point lies off the sheet by its noise; its plane's point does not.
+  onPlane = centre - (centre - patch.plane.centroid).dot(patch.plane.normal) * patch.plane.normal;
+  return squares <= kMaxRimSpread * kMaxRimSpread * scale->width * scale->width * total && !surrounds(around, patch);
 }
 
 std::vector<std::array<Vec3, 2>> PointSurface::rims(double /*creaseAngle: points have no creases*/) const
 {
   const Scale& finest = *this->Scales.front();
   const std::vector<Vec3>& all = finest.points;
+  std::vector<Vec3> onPlane;
   auto test = [&](const std::vector<int>& ids) {
     std::vector<char> rim(ids.size(), 0);
+    onPlane.resize(ids.size());
     parallelFor(0, static_cast<long long>(ids.size()), 0, [&](long long b, long long e) {
       for (long long k = b; k < e; ++k)
       {
-        rim[k] = this->onRim(all[ids[k]], finest);
+        rim[k] = this->onRim(all[ids[k]], onPlane[k]);
       }
     });
     return rim;
@@ -411,8 +434,8 @@ std::vector<std::array<Vec3, 2>> PointSurface::rims(double /*creaseAngle: points
       {
         continue;
       }
+      rims.push_back({ onPlane[k], onPlane[k] });
       const Vec3& p = all[asking[k]];
-      rims.push_back({ p, p });
       finest.grid.forEachWithin(p, kRimReach * finest.width, [&](int id) {
         if (!asked[id])
         {

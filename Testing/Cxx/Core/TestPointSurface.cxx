@@ -160,8 +160,9 @@ int TestPointSurface(int, char*[])
                                                                          << "), " << inside << " inside the sheet");
   }
   // The same holed plane with Gaussian noise of 0.01 (about a sixth of h, as 0.25% of the diagonal on
-  // mech-holes-shark's 20,000 points): a rim among noisy points is no line to hold a wrap to (which lies
-  // inside their band), so none is reported.
+  // mech-holes-shark's 20,000 points): its rims lie all round the hole (measured 3 in the fewest
+  // eighth), none inside the sheet, and are given on their fitted planes, not at the noisy points
+  // (RMS height measured 0.0053; the points' own, 0.01).
   {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(-1, 1);
@@ -175,15 +176,39 @@ int TestPointSurface(int, char*[])
     }
     const double h = 3 * medianNeighbourDistance(points);
     const PointSurface surface(std::make_shared<const PointSource>(points), h);
-    const std::size_t rims = surface.rims(180).size();
-    SW_CHECK(rims == 0, "noisy holed plane (h " << h << "): no rim points (" << rims << ")");
+    int onHole = 0, inside = 0;
+    double squares = 0;
+    std::array<int, 8> sectors{};
+    const auto rims = surface.rims(180);
+    for (const auto& rim : rims)
+    {
+      const Vec3& p = rim[0];
+      const bool hole = p.norm() < 0.4 + 2 * h, border = std::max(std::abs(p.x()), std::abs(p.y())) > 1 - 2 * h;
+      onHole += hole;
+      inside += !hole && !border;
+      squares += p.z() * p.z();
+      if (hole)
+      {
+        ++sectors[static_cast<int>(std::floor((std::atan2(p.y(), p.x()) + M_PI) / (M_PI / 4))) % 8];
+      }
+    }
+    const int fewest = *std::min_element(sectors.begin(), sectors.end());
+    const double height = std::sqrt(squares / std::max<std::size_t>(rims.size(), 1));
+    std::cout << "noisy holed plane (h " << h << "): " << onHole << " rim points on the hole's rim, " << inside
+              << " inside, fewest in an eighth " << fewest << ", RMS height " << height << std::endl;
+    SW_CHECK(inside < 0.01 * points.size() && fewest >= 2 && height < 0.007,
+      "noisy holed plane: rim points all round the hole (fewest in an eighth "
+        << fewest << "), " << inside << " inside the sheet, near the plane (RMS height " << height << ", bar 0.007)");
   }
-  // A closed surface has no rims but the random sample's look-alikes: the sphere's 4,000 points (measured 1).
+  // A closed surface has no rims but the random sample's look-alikes: the sphere's 4,000 points, clean
+  // (measured 1) and with the noise above (measured 1).
+  for (const double sigma : { 0.0, 0.005 })
   {
-    const std::vector<Vec3> points = spherePoints(4000, 0, 7);
+    const std::vector<Vec3> points = spherePoints(4000, sigma, 7);
     const PointSurface surface(std::make_shared<const PointSource>(points), 3 * medianNeighbourDistance(points));
     const std::size_t rims = surface.rims(180).size();
-    SW_CHECK(rims < 0.005 * points.size(), "sphere: hardly any rim points (" << rims << ")");
+    std::cout << "sphere (noise " << sigma << "): " << rims << " rim points" << std::endl;
+    SW_CHECK(rims < 0.005 * points.size(), "sphere (noise " << sigma << "): hardly any rim points (" << rims << ")");
   }
   return testing::finish("TestPointSurface");
 }

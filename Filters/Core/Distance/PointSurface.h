@@ -40,10 +40,10 @@ public:
   // and trusted less as the points around it lie to one side.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   // The points on a rim (a sheet's edge, a thin part's tip) as rim edges of no length, for the wrap to
-  // cover (RimCoverage.h): at the finest width where their neighbours look flat, these lean to one
-  // side beyond an even sample's lean, leave a rim's angular gap, and lie close to their plane; each
-  // is given as its foot on that plane (a noisy point's noise left out). Points have no creases:
-  // `creaseAngle` is not used.
+  // cover (RimCoverage.h): at the finest width where their neighbours look flat (from the one where
+  // most of the cloud's points do), these lean to one side beyond an even sample's lean, leave a
+  // rim's angular gap, and lie close to their plane; each is given as its foot on that plane (a noisy
+  // point's noise left out). Points have no creases: `creaseAngle` is not used.
   std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override;
 
 private:
@@ -86,16 +86,18 @@ private:
   bool fitPlaneAround(const Vec3& centre, const Scale& scale, Neighbourhood& around, Patch& patch) const;
   // Whether the patch's points lean to one side of its centre beyond an even sample's lean.
   static bool leans(const Patch& patch);
-  // The finest scale at which a plane fits around `centre` (noise thicker than a fraction of the
-  // width hides the plane until the width outgrows it), with its neighbourhood and plane; nullptr
-  // where none does.
-  const Scale* flatScale(const Vec3& centre, Neighbourhood& around, Patch& patch) const;
+  // The index of the finest scale, from `from` on, at which a plane fits around `centre` (noise
+  // thicker than a fraction of the width hides the plane until the width outgrows it), with its
+  // neighbourhood and plane; -1 where none does.
+  int flatScale(const Vec3& centre, Neighbourhood& around, Patch& patch, int from = 0) const;
+  // The index of the finest scale at which most of a sample of the points look flat.
+  int typicalFlatScale() const;
   // The quadric and the surrounded flag of a patch whose plane is fitted to `around`.
   static void finishPatch(const Neighbourhood& around, Patch& patch);
   // The patch around `centre` at one scale; false where no plane fits.
   bool fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const;
   Patch fitPatch(int id) const; // around point id, at the finest scale that fits
-  bool onRim(const Vec3& centre, Vec3& onPlane) const; // see rims()
+  bool onRim(const Vec3& centre, int from, Vec3& onPlane) const; // see rims(); scales from `from` on
   // How far x's surface point on the patch may be trusted, 0 to 1; 0 also where x's foot lies too far
   // from the patch's centre for the patch to speak for it.
   static double trustAt(const Vec3& x, const Patch& patch);

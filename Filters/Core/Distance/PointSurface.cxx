@@ -249,11 +249,11 @@ int PointSurface::typicalFlatScale() const
   const std::vector<Vec3>& all = this->Scales.front()->points;
   const int none = static_cast<int>(this->Scales.size());
   std::vector<int> found;
+  Neighbourhood around;
   for (std::size_t i = 0; i < all.size(); ++i)
   {
     if (inSample(i, kTypicalSample))
     {
-      thread_local Neighbourhood around;
       Patch patch;
       const int s = this->flatScale(all[i], around, patch);
       found.push_back(s >= 0 ? s : none);

@@ -159,14 +159,16 @@ int TestPointSurface(int, char*[])
       "holed plane: rim points all round the hole (fewest in an eighth " << *std::min_element(sectors.begin(), sectors.end())
                                                                          << "), " << inside << " inside the sheet");
   }
-  // The same holed plane with Gaussian noise of 0.01 (about a sixth of h, as 0.25% of the diagonal on
-  // mech-holes-shark's 20,000 points): its rims lie all round the hole (measured 3 in the fewest
-  // eighth), none inside the sheet, and are given on their fitted planes, not at the noisy points
-  // (RMS height measured 0.0053; the points' own, 0.01).
+  // The same holed plane with Gaussian noise of 0.01, 0.02 and 0.03 (a sixth to nearly a half of h: the
+  // plane shows at h, at 2 h or 4 h; 0.01 is 0.25% of the diagonal on mech-holes-shark's 20,000
+  // points): its rims lie all round the hole (measured 3, 1 and 2 in the fewest eighth), none inside
+  // the sheet, and are given on their fitted planes, not at the noisy points (RMS height measured
+  // 0.53, 0.50 and 0.45 sigma; the points' own, sigma).
+  for (const double sigma : { 0.01, 0.02, 0.03 })
   {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(-1, 1);
-    std::normal_distribution<double> g(0, 0.01);
+    std::normal_distribution<double> g(0, sigma);
     std::vector<Vec3> points;
     while (points.size() < 4000)
     {
@@ -194,11 +196,12 @@ int TestPointSurface(int, char*[])
     }
     const int fewest = *std::min_element(sectors.begin(), sectors.end());
     const double height = std::sqrt(squares / std::max<std::size_t>(rims.size(), 1));
-    std::cout << "noisy holed plane (h " << h << "): " << onHole << " rim points on the hole's rim, " << inside
+    std::cout << "noisy holed plane (sigma " << sigma << ", h " << h << "): " << onHole << " rim points on the hole's rim, " << inside
               << " inside, fewest in an eighth " << fewest << ", RMS height " << height << std::endl;
-    SW_CHECK(inside < 0.01 * points.size() && fewest >= 2 && height < 0.007,
-      "noisy holed plane: rim points all round the hole (fewest in an eighth "
-        << fewest << "), " << inside << " inside the sheet, near the plane (RMS height " << height << ", bar 0.007)");
+    SW_CHECK(inside < 0.01 * points.size() && fewest >= 1 && height < 0.7 * sigma,
+      "noisy holed plane (sigma " << sigma << "): rim points all round the hole (fewest in an eighth " << fewest
+                                  << "), " << inside << " inside the sheet, near the plane (RMS height " << height
+                                  << ", bar 0.7 sigma)");
   }
   // A closed surface has no rims but the random sample's look-alikes: the sphere's 4,000 points, clean
   // (measured 1) and with the noise above (measured 1).

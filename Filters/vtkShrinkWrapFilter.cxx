@@ -99,10 +99,11 @@ int targetAndField(
 
 // The unsigned field of the points (and of the polygons beside them, if given), computed here, and the
 // fields of a wrap onto them.
-Status pointFields(const std::shared_ptr<const PointSource>& points, const std::shared_ptr<const TriangleSource>& polygons,
-  double spacing, bool givenStart, const WrapSettings& settings, WrapFields& fields)
+Status pointFields(const PointCloud& cloud, const std::shared_ptr<const TriangleSource>& polygons, bool givenStart,
+  const WrapSettings& settings, WrapFields& fields)
 {
-  Box box = points->bounds();
+  const PointSource& points = *cloud.points;
+  Box box = points.bounds();
   if (polygons)
   {
     box.extend(polygons->bounds());
@@ -122,13 +123,13 @@ Status pointFields(const std::shared_ptr<const PointSource>& points, const std::
   {
     SignedDistanceSettings unsignedDistance;
     unsignedDistance.computeSign = false;
-    computeSignedDistance(UnionSource({ polygons, points }), lattice, unsignedDistance, values.data());
+    computeSignedDistance(UnionSource({ polygons, cloud.points }), lattice, unsignedDistance, values.data());
   }
   else
   {
-    computePointDistance(*points, lattice, SignedDistanceSettings(), values.data());
+    computePointDistance(points, lattice, SignedDistanceSettings(), values.data());
   }
-  return pointWrapFields(DistanceGrid(lattice, std::move(values)), points, spacing, settings, fields, polygons);
+  return pointWrapFields(DistanceGrid(lattice, std::move(values)), cloud, settings, fields, polygons);
 }
 
 // The points a wrap takes of its target: beside its polygons, the points none of them uses; else all.
@@ -355,8 +356,8 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
     {
       box = use.polygons ? box : Box();
       box.extend(Box::around(points));
-      const double spacing = this->PointSpacing(target, points.size(), [&] { return medianNeighbourDistance(points); });
-      chosen = withPointSizes(chosen, box, spacing, givenStart);
+      const PointCloud& cloud = this->MeasuredCloud(target, points.size(), [&] { return measureCloud(points); });
+      chosen = withPointSizes(chosen, box, cloud, givenStart);
     }
     else if (!use.polygons) // no points: no field (StartSession says why); beside polygons: the polygons'
     {
@@ -385,16 +386,16 @@ int vtkShrinkWrapFilter::RequestUpdateExtent(
   return 1;
 }
 
-double vtkShrinkWrapFilter::PointSpacing(
-  const vtkDataObject* target, std::size_t points, const std::function<double()>& measure)
+const PointCloud& vtkShrinkWrapFilter::MeasuredCloud(
+  const vtkDataObject* target, std::size_t points, const std::function<PointCloud()>& measure)
 {
   const vtkMTimeType key = this->SessionKey();
-  SpacingCache& c = this->Spacing;
-  if (c.target != target || c.key != key || c.points != points)
+  CloudCache& c = this->Cloud;
+  if (!c.cloud || c.target != target || c.key != key || c.points != points)
   {
-    c = { target, key, points, measure() };
+    c = { target, key, points, std::make_unique<PointCloud>(measure()) };
   }
-  return c.spacing;
+  return *c.cloud;
 }
 
 vtkMTimeType vtkShrinkWrapFilter::SessionKey()
@@ -515,9 +516,9 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
     vtkErrorMacro("The target has NaN or infinite coordinates.");
     return false;
   }
-  const double spacing =
-    wrapsPoints ? this->PointSpacing(target, points.size(), [&] { return medianNeighbourDistance(points); }) : 0.0;
-  const WrapSettings settings = (wrapsPoints ? withPointSizes(this->CoreSettings(), targetBox, spacing, initial != nullptr)
+  const PointCloud cloud =
+    wrapsPoints ? this->MeasuredCloud(target, points.size(), [&] { return measureCloud(points); }) : PointCloud();
+  const WrapSettings settings = (wrapsPoints ? withPointSizes(this->CoreSettings(), targetBox, cloud, initial != nullptr)
                                              : this->CoreSettings())
                                   .resolved(targetBox);
   if (const Status fits = settings.fits(targetBox); !fits)
@@ -547,7 +548,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
       polygons = std::make_shared<const TriangleSource>(soup);
     }
     if (const Status made =
-          pointFields(std::make_shared<const PointSource>(points), polygons, spacing, initial != nullptr, settings, fields);
+          pointFields(cloud, polygons, initial != nullptr, settings, fields);
         !made)
     {
       vtkErrorMacro("Cannot wrap: " << made.message() << ".");

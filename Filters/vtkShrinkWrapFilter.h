@@ -81,6 +81,7 @@ namespace convert
 {
 struct GatheredInput;
 }
+struct PointCloud;
 class WrapSession;
 struct WrapFields;
 struct WrapSettings;
@@ -259,7 +260,9 @@ public:
   vtkGetMacro(Remeshing, bool);
   vtkBooleanMacro(Remeshing, bool);
   /// L in the target's units. Default 0: automatic, the target's bounding-box diagonal / 50; for
-  /// points, 10 median nearest-neighbour distances, between diagonal / 200 and diagonal / 50.
+  /// points, 10 median nearest-neighbour distances, between diagonal / 200 and diagonal / 50, or on a
+  /// noisy cloud up to 16 times its noise (the RMS height of the points over their fitted surface),
+  /// at most diagonal / 30.
   vtkSetClampMacro(TargetEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(TargetEdgeLength, double);
   /// Adaptive edge length, in units of TargetEdgeLength L: the edges may shorten to
@@ -406,8 +409,10 @@ private:
   vtkTimeStamp RunAgainTime;
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
-  // The spacing of a target's `points` wrapped points as `measure` gives it, measured once (Spacing).
-  double PointSpacing(const vtkDataObject* target, std::size_t points, const std::function<double()>& measure);
+  // A target's `points` wrapped points as `measure` gives them (spacing, fitted surface), measured once
+  // (Cloud).
+  const shrinkwrap::PointCloud& MeasuredCloud(
+    const vtkDataObject* target, std::size_t points, const std::function<shrinkwrap::PointCloud()>& measure);
   bool TargetAndField(vtkInformationVector** inputVector, vtkDataObject*& target, vtkImageData*& field);
   // One surface: of the target, or of all a composite target's blocks together.
   void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
@@ -438,15 +443,15 @@ private:
   vtkMTimeType BlocksKey = 0;
   std::vector<int> BlockPieces; // the piece that wraps each block of a composite every rank holds
   int BlockPiecesOf = 0;        // among so many pieces
-  // The wrapped points' spacing, kept while the filter and its inputs stay as they were when it was
-  // measured: RequestInformation and RequestData both need it.
-  struct SpacingCache
+  // The wrapped points as measured, kept while the filter and its inputs stay as they were then:
+  // RequestInformation and RequestData both need their spacing, and the wrap their fitted surface.
+  struct CloudCache
   {
     const vtkDataObject* target = nullptr;
     vtkMTimeType key = 0;
     std::size_t points = 0;
-    double spacing = 0;
-  } Spacing;
+    std::unique_ptr<shrinkwrap::PointCloud> cloud;
+  } Cloud;
 
 };
 

@@ -99,6 +99,7 @@ PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double wid
     this->Scales.push_back(std::make_unique<const Scale>(std::move(sample), width * (1 << s)));
   }
   this->Blocks = std::vector<std::atomic<Block*>>(all.size() / Block::kSize + 1);
+  this->measureTypical();
 }
 
 PointSurface::~PointSurface()
@@ -244,11 +245,12 @@ int PointSurface::flatScale(const Vec3& centre, Neighbourhood& around, Patch& pa
   return -1;
 }
 
-int PointSurface::typicalFlatScale() const
+void PointSurface::measureTypical()
 {
   const std::vector<Vec3>& all = this->Scales.front()->points;
   const int none = static_cast<int>(this->Scales.size());
-  std::vector<int> found;
+  std::vector<int> scales;
+  std::vector<double> noise;
   Neighbourhood around;
   for (std::size_t i = 0; i < all.size(); ++i)
   {
@@ -256,15 +258,38 @@ int PointSurface::typicalFlatScale() const
     {
       Patch patch;
       const int s = this->flatScale(all[i], around, patch);
-      found.push_back(s >= 0 ? s : none);
+      scales.push_back(s >= 0 ? s : none);
+      if (s >= 0)
+      {
+        fitQuadric(around, patch);
+        noise.push_back(roughness(around, patch));
+      }
     }
   }
-  if (found.empty())
+  const auto lowerMedian = [](auto& values) {
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+  };
+  this->TypicalScale = scales.empty() ? 0 : std::min(lowerMedian(scales), none - 1);
+  this->TypicalNoise = noise.empty() ? 0.0 : lowerMedian(noise);
+}
+
+double PointSurface::roughness(const Neighbourhood& around, const Patch& patch)
+{
+  const Vec3 shift = around.centre - patch.plane.centroid;
+  const auto [t1, t2] = tangents(patch.plane.normal);
+  double total = 0, squares = 0;
+  for (std::size_t i = 0; i < around.offsets.size(); ++i)
   {
-    return 0;
+    const Vec3 d = around.offsets[i] + shift;
+    const double u = d.dot(t1) / patch.width, v = d.dot(t2) / patch.width;
+    Eigen::Matrix<double, 6, 1> basis;
+    basis << 1, u, v, u * u, u * v, v * v;
+    const double height = d.dot(patch.plane.normal) - patch.quadric.dot(basis) * patch.width;
+    total += around.weights[i];
+    squares += around.weights[i] * height * height;
   }
-  std::nth_element(found.begin(), found.begin() + found.size() / 2, found.end());
-  return std::min(found[found.size() / 2], none - 1);
+  return total > 0 ? std::sqrt(squares / total) : 0.0;
 }
 
 void PointSurface::finishPatch(const Neighbourhood& around, Patch& patch)

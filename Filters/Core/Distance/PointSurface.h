@@ -45,6 +45,14 @@ public:
   // rim's angular gap, and lie close to their plane; each is given as its foot on that plane (a noisy
   // point's noise left out). Points have no creases: `creaseAngle` is not used.
   std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override;
+  // The index of the finest width (h, 2 h, 4 h) at which most of the points look flat (measured on one
+  // point in 256 when made): above 0, noise hides the plane at h on most of the cloud.
+  int typicalFlatScale() const { return this->TypicalScale; }
+  // The noise of the points, as the median over that sample of the RMS height of a point's neighbours
+  // over the surface fitted around it (at its flat width, weighted as in the fit): about the noise's
+  // sigma; on clean points a small fraction of their spacing, curved or not (the quadric takes the
+  // curvature).
+  double typicalNoise() const { return this->TypicalNoise; }
 
 private:
   struct Plane
@@ -90,8 +98,9 @@ private:
   // thicker than a fraction of the width hides the plane until the width outgrows it), with its
   // neighbourhood and plane; -1 where none does.
   int flatScale(const Vec3& centre, Neighbourhood& around, Patch& patch, int from = 0) const;
-  // The index of the finest scale at which most of a sample of the points look flat.
-  int typicalFlatScale() const;
+  void measureTypical(); // typicalFlatScale() and typicalNoise()
+  // The RMS height of the neighbourhood's points over the patch's quadric, weighted as in the fit.
+  static double roughness(const Neighbourhood& around, const Patch& patch);
   // The quadric and the surrounded flag of a patch whose plane is fitted to `around`.
   static void finishPatch(const Neighbourhood& around, Patch& patch);
   // The patch around `centre` at one scale; false where no plane fits.
@@ -105,6 +114,8 @@ private:
 
   std::shared_ptr<const PointSource> Points;
   std::vector<std::unique_ptr<const Scale>> Scales; // finest first
+  int TypicalScale = 0;
+  double TypicalNoise = 0;
   // Per input point, in blocks made when a query first lands in them (a wrap touches a fraction of a
   // large cloud): its patch, and whether that is empty, being stored or ready.
   struct Block

@@ -144,16 +144,26 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   if (!given && settings.shape == StartShape::OffsetSurface && settings.coarsenTo > 0)
   {
     // The evolution's thresholds. Collapses chain over a dozen passes here, so the ones behind a
-    // crossing lie farther from it than a step's do.
+    // crossing lie farther from it than a step's do. In stages from two cells, the length doubling: a
+    // contour coarsened at once to several cells crossed itself where its walls lie a few cells apart,
+    // and each redo with guards cost three times the collapses (the noisy mech part's 20,000 points at
+    // diagonal / 30, 3.5 cells: 0.94 s; in two stages, none crossing, 0.20 s).
     const RemeshSettings remeshing;
-    editCheckedOnce(mesh, 4 * settings.coarsenTo, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
-      CollapseSettings collapses;
-      collapses.avoidCrossings = guarded;
-      collapses.orientDegenerate = true;
-      collapses.guardOnlyIn = only;
-      return collapseShortEdges(m, remeshing.collapseBelow * settings.coarsenTo,
-               remeshing.splitAbove * settings.coarsenTo, collapses) > 0;
-    });
+    const double first = 2 * h > 0 ? std::min(2 * h, settings.coarsenTo) : settings.coarsenTo;
+    for (double length = first;; length = std::min(2 * length, settings.coarsenTo))
+    {
+      editCheckedOnce(mesh, 4 * length, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
+        CollapseSettings collapses;
+        collapses.avoidCrossings = guarded;
+        collapses.orientDegenerate = true;
+        collapses.guardOnlyIn = only;
+        return collapseShortEdges(m, remeshing.collapseBelow * length, remeshing.splitAbove * length, collapses) > 0;
+      });
+      if (length >= settings.coarsenTo)
+      {
+        break;
+      }
+    }
   }
   // A contour's slivers would fail the first step (the icosphere needs no relaxation). Where two parts
   // of a contour nearly touch, relaxing can make them cross: then fewer iterations, down to none (a

@@ -41,11 +41,21 @@ constexpr double kDensePointGapPerNeighbourDistance = 11;
 constexpr double kMaxPointResolutionFactor = 1.5;
 // The automatic Target Edge Length of a point cloud, in median neighbour distances: a triangle then
 // spans a few dozen points, the detail their fitted surface holds; never coarser than a mesh's
-// automatic length (diagonal / kLengthDivisor), nor finer than diagonal / kMaxPointLengthDivisor.
+// automatic length (diagonal / kLengthDivisor) unless noisy (below), nor finer than diagonal /
+// kMaxPointLengthDivisor.
 // Measured on CGAL meshes sampled with 20,000 and 200,000 points (RESULTS.md): diagonal / 50 and about
 // diagonal / 100.
 constexpr double kPointEdgePerNeighbourDistance = 10;
 constexpr double kMaxPointLengthDivisor = 200;
+// ... and on a noisy cloud up to kEdgePerNoise times its noise (PointSurface::typicalNoise), at most
+// diagonal / kNoisyPointLengthDivisor: its fitted surface holds no detail the noise has not blurred,
+// and finer triangles only cost time. At 20,000 points with noise of 0.25% of the diagonal (measured
+// 0.22-0.30%; clean CGAL clouds 0.005-0.07%, below diagonal / 50 / 16), diagonal / 50 took 1.0-1.9
+// times alpha wrap's time at diag/50, diagonal / 30 0.69-1.00 times, with means at most 0.74 times
+// and largest distances 1.29 times alpha wrap's (RESULTS.md, 2026-11-28, evening). At 200,000 noisy
+// points 10 spacings (diagonal / 61 to / 45) decide.
+constexpr double kEdgePerNoise = 16;
+constexpr double kNoisyPointLengthDivisor = 30;
 // The offset start's farthest distance from the closed target, in Gap Sizes. Beyond half the gap the
 // start merges parts the closing keeps apart (handles the target has not, as between knot1's strands);
 // at half the gap a slot the closing just keeps open (as wide as the gap) touches itself in the start,
@@ -191,13 +201,33 @@ Status checkPointsEnclose(const std::vector<Vec3>& points)
   return {};
 }
 
-WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacing, bool givenStart)
+double PointCloud::noise() const
 {
+  return this->surface ? this->surface->typicalNoise() : 0.0;
+}
+
+PointCloud measureCloud(const std::vector<Vec3>& points)
+{
+  PointCloud cloud;
+  cloud.points = std::make_shared<const PointSource>(points);
+  cloud.spacing = medianNeighbourDistance(points);
+  if (cloud.spacing > 0)
+  {
+    cloud.surface = std::make_shared<const PointSurface>(cloud.points, kFitWidthPerSpacing * cloud.spacing);
+  }
+  return cloud;
+}
+
+WrapSettings withPointSizes(WrapSettings settings, const Box& box, const PointCloud& cloud, bool givenStart)
+{
+  const double spacing = cloud.spacing;
   if (settings.targetLength <= 0 && spacing > 0)
   {
     const double diagonal = box.diagonal();
+    const double coarsest = std::clamp(
+      kEdgePerNoise * cloud.noise(), diagonal / WrapSettings::kLengthDivisor, diagonal / kNoisyPointLengthDivisor);
     settings.targetLength =
-      std::clamp(kPointEdgePerNeighbourDistance * spacing, diagonal / kMaxPointLengthDivisor, diagonal / WrapSettings::kLengthDivisor);
+      std::clamp(kPointEdgePerNeighbourDistance * spacing, diagonal / kMaxPointLengthDivisor, coarsest);
   }
   if (settings.gapSize > 0)
   {
@@ -228,14 +258,14 @@ WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacin
   return settings;
 }
 
-Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> points, double spacing,
-  const WrapSettings& settings, WrapFields& fields, std::shared_ptr<const DistanceSource> polygons)
+Status pointWrapFields(DistanceGrid grid, const PointCloud& cloud, const WrapSettings& settings, WrapFields& fields,
+  std::shared_ptr<const DistanceSource> polygons)
 {
   // The grid is the distance to the points and the polygons: the closing's sites come from the nearer.
-  std::shared_ptr<const DistanceSource> nearest = points;
+  std::shared_ptr<const DistanceSource> nearest = cloud.points;
   if (polygons)
   {
-    nearest = std::make_shared<const UnionSource>(std::vector<std::shared_ptr<const DistanceSource>>{ polygons, points });
+    nearest = std::make_shared<const UnionSource>(std::vector<std::shared_ptr<const DistanceSource>>{ polygons, cloud.points });
   }
   // Cavities filled: the union of balls around points that sample a sheet is a shell.
   DistanceGrid closed;
@@ -245,11 +275,7 @@ Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> poi
   }
   // The near field of the driving distance: the points' fitted surface, not the nearest point (which
   // would pull the closing's membranes between the points into dimples).
-  std::shared_ptr<const DistanceSource> surface;
-  if (settings.exactNearTarget && spacing > 0)
-  {
-    surface = std::make_shared<const PointSurface>(points, kFitWidthPerSpacing * spacing);
-  }
+  std::shared_ptr<const DistanceSource> surface = cloud.surface;
   if (polygons)
   {
     surface = surface ? std::make_shared<const UnionSource>(std::vector<std::shared_ptr<const DistanceSource>>{ polygons, surface })

@@ -6,6 +6,7 @@
 
 #include "Evolver.h"
 #include "PointSource.h"
+#include "PointSurface.h"
 #include "StartingSurface.h"
 #include "StepCache.h"
 
@@ -81,20 +82,31 @@ Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const Distan
 // Why points cannot be wrapped, if they cannot: they coincide, or lie on a line or in a plane (within
 // 1e-6 of their extent), so they enclose nothing. (checkPoints first: finite, not empty.)
 Status checkPointsEnclose(const std::vector<Vec3>& points);
-// Settings for a wrap onto points within `box` whose median neighbour distance is `spacing`
-// (medianNeighbourDistance): the automatic sizes (0) from the spacing: the Target Edge Length, and the
-// Gap Size, at least a few cells of the field computed for them (placed with `givenStart`) so that the
-// grid resolves the closing; for a dense cloud with the automatic gap, a finer field (Resolution up to
-// 1.5 times) so that those cells do not widen the gap far beyond the spacing's.
-WrapSettings withPointSizes(WrapSettings settings, const Box& box, double spacing, bool givenStart);
+// A point cloud as a wrap takes it, measured once: the nearest point, the median neighbour distance
+// (medianNeighbourDistance) and the surface the points sample (PointSurface, fitted at a few spacings;
+// none where the spacing is 0), which also measures their noise.
+struct PointCloud
+{
+  std::shared_ptr<const PointSource> points;
+  std::shared_ptr<const PointSurface> surface;
+  double spacing = 0;
+  double noise() const; // PointSurface::typicalNoise, 0 without a surface
+};
+PointCloud measureCloud(const std::vector<Vec3>& points);
+// Settings for a wrap onto `cloud` within `box`: the automatic sizes (0) from its spacing: the Target
+// Edge Length (coarser on a noisy cloud), and the Gap Size, at least a few cells of the field computed
+// for them (placed with `givenStart`) so that the grid resolves the closing; for a dense cloud with the
+// automatic gap, a finer field (Resolution up to 1.5 times) so that those cells do not widen the gap
+// far beyond the spacing's.
+WrapSettings withPointSizes(WrapSettings settings, const Box& box, const PointCloud& cloud, bool givenStart);
 // The fields of a wrap onto points (issue #13) from their unsigned grid: the wrap is driven by the
 // distance to the points closed by a ball of half the gap size (the union of balls around them,
 // eroded: a surface through the outer points that spans the gaps between them), and its closeness
 // is measured to the points themselves. `polygons`, if given, are wrapped with the points (Input
 // Geometry "Polygons and Points"): `grid` is then the distance to both, and near them the wrap lands
 // on the nearer of the polygons and the points' fitted surface.
-Status pointWrapFields(DistanceGrid grid, std::shared_ptr<const PointSource> points, double spacing,
-  const WrapSettings& settings, WrapFields& fields, std::shared_ptr<const DistanceSource> polygons = nullptr);
+Status pointWrapFields(DistanceGrid grid, const PointCloud& cloud, const WrapSettings& settings, WrapFields& fields,
+  std::shared_ptr<const DistanceSource> polygons = nullptr);
 
 class WrapSession
 {

@@ -10,6 +10,7 @@
 #include "TestUtilities.h"
 
 #include <functional>
+#include <random>
 
 #include <vtkSMPTools.h>
 
@@ -301,26 +302,58 @@ void pointSizes()
     placeGrid(box, s.resolved(box).fieldPlacement(box, false), lattice);
     return lattice.spacing.maxCoeff();
   };
-  const double cell = cellOf(withPointSizes(defaults, box, 1.0 / defaults.resolution, false));
-  const WrapSettings sparse = withPointSizes(defaults, box, cell, false);
+  const auto spaced = [](double spacing) { // a cloud known by its spacing alone (no fitted surface)
+    PointCloud cloud;
+    cloud.spacing = spacing;
+    return cloud;
+  };
+  const double cell = cellOf(withPointSizes(defaults, box, spaced(1.0 / defaults.resolution), false));
+  const WrapSettings sparse = withPointSizes(defaults, box, spaced(cell), false);
   SW_CHECK(sparse.resolution == defaults.resolution && std::abs(sparse.gapSize - 8 * cell) < 1e-12,
     "a sparse cloud: Resolution " << sparse.resolution << ", gap " << sparse.gapSize / cell << " spacings (8)");
   // 1.5 cells at 80 are about 1.25 times 11 spacings: a finer field, the gap at its floor of 1.5 cells
   // and within 11 spacings.
   const double spacing = 1.5 * cell / (11 * 1.25);
-  const WrapSettings dense = withPointSizes(defaults, box, spacing, false);
+  const WrapSettings dense = withPointSizes(defaults, box, spaced(spacing), false);
   const double floor = 1.5 * cellOf(dense);
   SW_CHECK(dense.resolution > 80 && dense.resolution < 120 && dense.gapSize <= 11 * spacing * 1.01 &&
       std::abs(dense.gapSize - floor) < 0.01 * floor,
     "a dense cloud: Resolution " << dense.resolution << " (80 to 120), gap " << dense.gapSize / spacing
                                  << " spacings (at most 11), " << dense.gapSize / floor << " times 1.5 cells");
-  const WrapSettings denser = withPointSizes(defaults, box, cell / 100, false);
+  const WrapSettings denser = withPointSizes(defaults, box, spaced(cell / 100), false);
   SW_CHECK(denser.resolution == 120, "a denser cloud: Resolution " << denser.resolution << " (at most 1.5 times 80)");
   WrapSettings given = defaults;
   given.gapSize = 0.01;
-  const WrapSettings kept = withPointSizes(given, box, cell / 100, false);
+  const WrapSettings kept = withPointSizes(given, box, spaced(cell / 100), false);
   SW_CHECK(kept.resolution == defaults.resolution && kept.gapSize == 0.01,
     "a given Gap Size: Resolution " << kept.resolution << " and the gap " << kept.gapSize << " kept");
+}
+
+// A noisy cloud's automatic Target Edge Length may be coarser than a clean one's: 16 times its noise,
+// between diagonal / 50 and diagonal / 30 (its fitted surface holds no finer detail than the noise
+// leaves). 20,000 points on a unit sphere, clean (diagonal / 50, as 10 spacings exceed it) and with
+// noise of 0.25% of the box's diagonal, as the benchmark's noisy clouds (about diagonal / 30).
+void noisyPointLength()
+{
+  std::mt19937 rng(3);
+  std::normal_distribution<double> g(0, 1);
+  for (const double sigma : { 0.0, 0.0025 * 2 * std::sqrt(3.0) })
+  {
+    std::vector<Vec3> points(20000);
+    for (Vec3& p : points)
+    {
+      p = Vec3(g(rng), g(rng), g(rng)).normalized();
+      p += sigma * Vec3(g(rng), g(rng), g(rng));
+    }
+    const PointCloud cloud = measureCloud(points);
+    const Box box = Box::around(points);
+    const double divisor = box.diagonal() / withPointSizes(WrapSettings(), box, cloud, false).targetLength;
+    std::cout << "sphere, noise " << sigma << ": spacing " << cloud.spacing << ", noise " << cloud.noise()
+              << ", Target Edge Length diagonal / " << divisor << std::endl;
+    SW_CHECK(sigma > 0 ? divisor >= 30 * (1 - 1e-9) && divisor < 35 : std::abs(divisor - 50) < 1e-6,
+      "sphere, noise " << sigma << ": Target Edge Length diagonal / " << divisor
+                       << (sigma > 0 ? " (30 to 35)" : " (50)"));
+  }
 }
 
 } // namespace
@@ -329,6 +362,7 @@ int TestEvolver(int, char*[])
 {
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
     redistributionDoesItsJob();
+    noisyPointLength();
     advection();
     failureIsReported();
     scaledEvolution();

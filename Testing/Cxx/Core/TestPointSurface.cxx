@@ -99,6 +99,8 @@ int TestPointSurface(int, char*[])
     std::cout << "sphere: spacing " << spacing << ", found " << l.found << " of " << l.queries << ", mean "
               << l.mean << ", largest " << l.largest << ", bias " << l.bias << std::endl;
     SW_CHECK(l.found >= 0.95 * l.queries, "sphere: the surface is found for 95% of the queries");
+    SW_CHECK(surface.typicalNoise() < 0.01 * spacing,
+      "sphere: its noise measured below 0.01 spacings (" << surface.typicalNoise() / spacing << ")");
     SW_CHECK(l.mean < 0.02 * spacing && l.largest < 0.25 * spacing && std::abs(l.bias) < 0.01 * spacing,
       "sphere: surface points on the sphere (mean " << l.mean << ", largest " << l.largest << ", bias " << l.bias
                                                     << "; bars 0.02, 0.25, 0.01 spacings)");
@@ -112,6 +114,9 @@ int TestPointSurface(int, char*[])
     const Landing l = onSphere(surface, 4000);
     std::cout << "noisy sphere: found " << l.found << ", mean " << l.mean << ", largest " << l.largest << ", bias "
               << l.bias << std::endl;
+    // The noise as the fit sees it (the RMS height over the quadrics; measured 0.89 sigma).
+    SW_CHECK(surface.typicalNoise() > 0.7 * sigma && surface.typicalNoise() < 1.2 * sigma,
+      "noisy sphere: noise measured " << surface.typicalNoise() / sigma << " sigma (0.7 to 1.2)");
     SW_CHECK(l.found >= 0.95 * l.queries && l.mean < 0.4 * sigma && l.largest < 2.5 * sigma,
       "noisy sphere: inside the noise band (mean " << l.mean << ", largest " << l.largest << "; bars 0.4, 2.5 sigma)");
   }
@@ -195,6 +200,9 @@ int TestPointSurface(int, char*[])
       }
     }
     const int fewest = *std::min_element(sectors.begin(), sectors.end());
+    SW_CHECK(surface.typicalNoise() > 0.7 * sigma && surface.typicalNoise() < 1.2 * sigma,
+      "noisy holed plane (sigma " << sigma << "): noise measured " << surface.typicalNoise() / sigma
+                                  << " sigma (0.7 to 1.2)");
     const double height = std::sqrt(squares / std::max<std::size_t>(rims.size(), 1));
     std::cout << "noisy holed plane (sigma " << sigma << ", h " << h << "): " << onHole << " rim points on the hole's rim, " << inside
               << " inside, fewest in an eighth " << fewest << ", RMS height " << height << std::endl;

@@ -387,13 +387,13 @@ int vtkShrinkWrapFilter::RequestUpdateExtent(
 }
 
 const PointCloud& vtkShrinkWrapFilter::MeasuredCloud(
-  const vtkDataObject* target, std::size_t points, const std::function<PointCloud()>& measure)
+  vtkDataObject* target, std::size_t points, const std::function<PointCloud()>& measure)
 {
-  const vtkMTimeType key = this->SessionKey();
+  const vtkMTimeType key = target ? target->GetMTime() : 0;
   CloudCache& c = this->Cloud;
-  if (!c.cloud || c.target != target || c.key != key || c.points != points)
+  if (!c.cloud || c.target != target || c.key != key || c.geometry != this->InputGeometry || c.points != points)
   {
-    c = { target, key, points, std::make_unique<PointCloud>(measure()) };
+    c = { target, key, this->InputGeometry, points, std::make_unique<PointCloud>(measure()) };
   }
   return *c.cloud;
 }

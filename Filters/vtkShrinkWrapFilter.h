@@ -410,9 +410,9 @@ private:
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
   // A target's `points` wrapped points as `measure` gives them (spacing, fitted surface), measured once
-  // (Cloud).
+  // for the target as it is (Cloud).
   const shrinkwrap::PointCloud& MeasuredCloud(
-    const vtkDataObject* target, std::size_t points, const std::function<shrinkwrap::PointCloud()>& measure);
+    vtkDataObject* target, std::size_t points, const std::function<shrinkwrap::PointCloud()>& measure);
   bool TargetAndField(vtkInformationVector** inputVector, vtkDataObject*& target, vtkImageData*& field);
   // One surface: of the target, or of all a composite target's blocks together.
   void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
@@ -443,12 +443,14 @@ private:
   vtkMTimeType BlocksKey = 0;
   std::vector<int> BlockPieces; // the piece that wraps each block of a composite every rank holds
   int BlockPiecesOf = 0;        // among so many pieces
-  // The wrapped points as measured, kept while the filter and its inputs stay as they were then:
-  // RequestInformation and RequestData both need their spacing, and the wrap their fitted surface.
+  // The wrapped points as measured, kept while the target and the Input Geometry stay as they were
+  // then: RequestInformation and RequestData both need their spacing, the wrap their fitted surface,
+  // and a run after a change of the other properties finds them measured and its patches fitted.
   struct CloudCache
   {
     const vtkDataObject* target = nullptr;
-    vtkMTimeType key = 0;
+    vtkMTimeType key = 0; // the target's
+    int geometry = 0;     // InputGeometry
     std::size_t points = 0;
     std::unique_ptr<shrinkwrap::PointCloud> cloud;
   } Cloud;

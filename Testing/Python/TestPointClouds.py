@@ -175,6 +175,34 @@ planned.UpdatePipeline(planned.NumberOfSteps * planned.TimeStep)
 ran = servermanager.Fetch(planned).GetFieldData().GetArray("FieldCellSize").GetValue(0)
 check(shown > 0 and shown == ran, "Field Cell Size of points before the run: %.6g, the run's: %.6g" % (shown, ran))
 
+# The cloud is measured once (spacing, fitted surface and its patches) while its points stay: a run after
+# another property changed gives what a new filter gives, and points that change are measured anew
+# (their wrap is a new filter's on them).
+def fetched_points(wrap):
+    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+    return vtk_to_numpy(servermanager.Fetch(wrap).GetPoints().GetData()).astype(float)
+
+
+first, second = sphere_points(2000), 0.7 * sphere_points(2000) + np.array([0.2, 0, 0])  # as many points
+changing = cloud(first)
+kept = ShrinkWrap(Input=changing)
+fetched_points(kept)
+kept.C = 10.0
+again = fetched_points(kept)
+anew = fetched_points(ShrinkWrap(Input=cloud(first), C=10.0))
+points = vtkPoints()
+points.SetData(numpy_to_vtk(np.ascontiguousarray(second, dtype=np.float64), deep=1))
+changing.GetClientSideObject().GetOutputDataObject(0).SetPoints(points)
+changing.GetClientSideObject().Modified()
+moved = fetched_points(kept)
+moved_anew = fetched_points(ShrinkWrap(Input=cloud(second), C=10.0))
+check(again.shape == anew.shape and np.array_equal(again, anew) and moved.shape == moved_anew.shape and
+      np.array_equal(moved, moved_anew),
+      "a cloud measured once: after C changed, %d vertices as a new filter's %d (same: %s); after the points "
+      "changed, %d as a new filter's %d (same: %s)" % (len(again), len(anew), again.shape == anew.shape and
+                                                        np.array_equal(again, anew), len(moved), len(moved_anew),
+                                                        moved.shape == moved_anew.shape and np.array_equal(moved, moved_anew)))
+
 # Mesh Signed Distance on the sphere's points: unsigned, and the distance to the nearest point.
 points = sphere_points(500)
 field = servermanager.Fetch(MeshSignedDistance(Input=cloud(points), Resolution=24))

@@ -47,12 +47,18 @@ bool PointSource::outline(const GridLattice& lattice, const Progress& progress, 
 
 double medianNeighbourDistance(const std::vector<Vec3>& points)
 {
+  return points.size() < 2 ? 0.0 : PointSource(points).medianNeighbourDistance();
+}
+
+double PointSource::medianNeighbourDistance() const
+{
+  const std::vector<Vec3>& points = this->Points;
+  const PointTree& tree = this->Tree;
   const std::size_t n = points.size();
   if (n < 2)
   {
     return 0;
   }
-  const PointTree tree(points);
   const std::size_t stride = std::max<std::size_t>(1, n / 20000);
   std::vector<double> nearest((n + stride - 1) / stride);
   parallelFor(0, static_cast<vtkIdType>(nearest.size()), [&](vtkIdType b, vtkIdType e) {

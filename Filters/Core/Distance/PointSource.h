@@ -22,6 +22,8 @@ public:
   // The nearest input point; side 0 and not sure: a point has no inside.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   const std::vector<Vec3>& points() const { return this->Points; }
+  // See medianNeighbourDistance below (from this source's tree).
+  double medianNeighbourDistance() const;
 
 private:
   std::vector<Vec3> Points;

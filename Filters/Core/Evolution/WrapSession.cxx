@@ -210,7 +210,7 @@ PointCloud measureCloud(const std::vector<Vec3>& points)
 {
   PointCloud cloud;
   cloud.points = std::make_shared<const PointSource>(points);
-  cloud.spacing = medianNeighbourDistance(points);
+  cloud.spacing = cloud.points->medianNeighbourDistance();
   if (cloud.spacing > 0)
   {
     cloud.surface = std::make_shared<const PointSurface>(cloud.points, kFitWidthPerSpacing * cloud.spacing);

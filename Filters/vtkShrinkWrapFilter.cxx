@@ -391,7 +391,8 @@ const PointCloud& vtkShrinkWrapFilter::MeasuredCloud(
 {
   const vtkMTimeType key = target ? target->GetMTime() : 0;
   CloudCache& c = this->Cloud;
-  if (!c.cloud || c.target != target || c.key != key || c.geometry != this->InputGeometry || c.points != points)
+  if (!target || !c.cloud || c.target != target || c.key != key || c.geometry != this->InputGeometry ||
+    c.points != points)
   {
     c = { target, key, this->InputGeometry, points, std::make_unique<PointCloud>(measure()) };
   }
@@ -517,7 +518,7 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
     return false;
   }
   const PointCloud cloud =
-    wrapsPoints ? this->MeasuredCloud(target, points.size(), [&] { return measureCloud(points); }) : PointCloud();
+    wrapsPoints ? this->MeasuredCloud(targetData, points.size(), [&] { return measureCloud(points); }) : PointCloud();
   const WrapSettings settings = (wrapsPoints ? withPointSizes(this->CoreSettings(), targetBox, cloud, initial != nullptr)
                                              : this->CoreSettings())
                                   .resolved(targetBox);

@@ -410,7 +410,8 @@ private:
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
   // A target's `points` wrapped points as `measure` gives them (spacing, fitted surface), measured once
-  // for the target as it is (Cloud).
+  // for the target as it is (Cloud); the target is the input dataset the points come from (none: no
+  // cache).
   const shrinkwrap::PointCloud& MeasuredCloud(
     vtkDataObject* target, std::size_t points, const std::function<shrinkwrap::PointCloud()>& measure);
   bool TargetAndField(vtkInformationVector** inputVector, vtkDataObject*& target, vtkImageData*& field);

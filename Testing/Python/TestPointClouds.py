@@ -19,7 +19,7 @@ from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import reference, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkStaticCellLocator
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkStaticCellLocator, vtkUnstructuredGrid
 
 from checks import check, finish
 
@@ -203,6 +203,24 @@ check(same_after_c and same_after_points,
       "a cloud measured once: after C changed, %d vertices as a new filter's %d (same: %s); after the points "
       "changed, %d as a new filter's %d (same: %s)"
       % (len(again), len(anew), same_after_c, len(moved), len(moved_anew), same_after_points))
+# The same for an unstructured grid's points (no cells: no surface is extracted from it), its input
+# switched to another such grid with as many points.
+def grid_of(points):
+    p = vtkPoints()
+    p.SetData(numpy_to_vtk(np.ascontiguousarray(points, dtype=np.float64), deep=1))
+    data = vtkUnstructuredGrid()
+    data.SetPoints(p)
+    return producer(data)
+
+
+on_grid = ShrinkWrap(Input=grid_of(first))
+fetched_points(on_grid)
+on_grid.Input = grid_of(second)
+switched = fetched_points(on_grid)
+switched_anew = fetched_points(ShrinkWrap(Input=grid_of(second)))
+check(switched.shape == switched_anew.shape and np.array_equal(switched, switched_anew),
+      "an unstructured grid's points, the input switched to other points: %d vertices as a new filter's %d"
+      % (len(switched), len(switched_anew)))
 
 # Mesh Signed Distance on the sphere's points: unsigned, and the distance to the nearest point.
 points = sphere_points(500)

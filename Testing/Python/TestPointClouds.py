@@ -34,12 +34,16 @@ def producer(data):
     return source
 
 
-def cloud(points):
-    """A points-only polydata (no cells) as a pipeline source."""
+def vtk_points(points):
     p = vtkPoints()
     p.SetData(numpy_to_vtk(np.ascontiguousarray(points, dtype=np.float64), deep=1))
-    data = vtkPolyData()
-    data.SetPoints(p)
+    return p
+
+
+def cloud(points, kind=vtkPolyData):
+    """A points-only dataset (no cells; a polydata unless `kind` says otherwise) as a pipeline source."""
+    data = kind()
+    data.SetPoints(vtk_points(points))
     return producer(data)
 
 
@@ -191,9 +195,7 @@ fetched_points(kept)
 kept.C = 10.0
 again = fetched_points(kept)
 anew = fetched_points(ShrinkWrap(Input=cloud(first), C=10.0))
-points = vtkPoints()
-points.SetData(numpy_to_vtk(np.ascontiguousarray(second, dtype=np.float64), deep=1))
-changing.GetClientSideObject().GetOutputDataObject(0).SetPoints(points)
+changing.GetClientSideObject().GetOutputDataObject(0).SetPoints(vtk_points(second))
 changing.GetClientSideObject().Modified()
 moved = fetched_points(kept)
 moved_anew = fetched_points(ShrinkWrap(Input=cloud(second), C=10.0))
@@ -205,19 +207,11 @@ check(same_after_c and same_after_points,
       % (len(again), len(anew), same_after_c, len(moved), len(moved_anew), same_after_points))
 # The same for an unstructured grid's points (no cells: no surface is extracted from it), its input
 # switched to another such grid with as many points.
-def grid_of(points):
-    p = vtkPoints()
-    p.SetData(numpy_to_vtk(np.ascontiguousarray(points, dtype=np.float64), deep=1))
-    data = vtkUnstructuredGrid()
-    data.SetPoints(p)
-    return producer(data)
-
-
-on_grid = ShrinkWrap(Input=grid_of(first))
+on_grid = ShrinkWrap(Input=cloud(first, vtkUnstructuredGrid))
 fetched_points(on_grid)
-on_grid.Input = grid_of(second)
+on_grid.Input = cloud(second, vtkUnstructuredGrid)
 switched = fetched_points(on_grid)
-switched_anew = fetched_points(ShrinkWrap(Input=grid_of(second)))
+switched_anew = fetched_points(ShrinkWrap(Input=cloud(second, vtkUnstructuredGrid)))
 check(switched.shape == switched_anew.shape and np.array_equal(switched, switched_anew),
       "an unstructured grid's points, the input switched to other points: %d vertices as a new filter's %d"
       % (len(switched), len(switched_anew)))

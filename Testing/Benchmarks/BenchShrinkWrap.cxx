@@ -129,8 +129,8 @@ const std::map<std::string, Setter>& setters();
 // Points sampled uniformly by area on the target (seeded), with Gaussian noise of `noise` % of the
 // diagonal, wrapped by ours at its defaults, alpha_wrap_3 on the same points (alpha = diagonal / 20,
 // / 50, / 100, offset alpha / 30) and VTK's vtkSurfaceReconstructionFilter + contour at 0; every wrap
-// judged against the original mesh (the truth). With `out`, the cloud and the wraps (ours, alpha
-// diag/50) are written as <out>_target.vtp, <out>_shrinkwrap.vtp, <out>_alphawrap_50.vtp.
+// judged against the original mesh (the truth). With `out`, the cloud and the wraps are written as
+// <out>_target.vtp, <out>_shrinkwrap.vtp, <out>_alphawrap_<divisor>.vtp.
 void cloudRows(const TriangleSoup& target, int count, double noise, const std::vector<std::pair<std::string, double>>& sets,
   const std::string& out, bool peers, bool withReconstruction)
 {
@@ -202,9 +202,9 @@ void cloudRows(const TriangleSoup& target, int count, double noise, const std::v
     CGAL::alpha_wrap_3(cgalPoints, alpha, offset, wrapped);
     const double total = seconds(start);
     row("alpha_wrap_3 diag/" + std::to_string(divisor), total, soupOf(wrapped), target, "ok");
-    if (!out.empty() && divisor == 50)
+    if (!out.empty())
     {
-      write(soupOf(wrapped), out + "_alphawrap_50.vtp");
+      write(soupOf(wrapped), out + "_alphawrap_" + std::to_string(divisor) + ".vtp");
     }
   }
   if (withReconstruction)
@@ -405,9 +405,9 @@ int main(int argc, char* argv[])
       const double total = seconds(start);
       const TriangleSoup soup = soupOf(wrapped);
       row("alpha_wrap_3 diag/" + std::to_string(divisor), total, soup, target, "ok");
-      if (!out.empty() && divisor == 50)
+      if (!out.empty())
       {
-        write(soup, out + "/" + name + "_alphawrap_50.vtp");
+        write(soup, out + "/" + name + "_alphawrap_" + std::to_string(divisor) + ".vtp");
       }
     }
   }

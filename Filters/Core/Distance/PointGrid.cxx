@@ -7,8 +7,7 @@ namespace shrinkwrap
 {
 
 PointGrid::PointGrid(const std::vector<Vec3>& points, double cell)
-  : Points(points)
-  , Origin(Box::around(points).min)
+  : Origin(Box::around(points).min)
   , Cell(cell)
 {
   std::vector<std::pair<std::int64_t, int>> keyed(points.size());
@@ -25,10 +24,12 @@ PointGrid::PointGrid(const std::vector<Vec3>& points, double cell)
   this->Bins.assign(size, Slot());
   this->Mask = size - 1;
   this->Order.resize(keyed.size());
+  this->Sorted.resize(keyed.size());
   std::size_t last = 0; // the slot of the bin being filled
   for (std::size_t s = 0; s < keyed.size(); ++s)
   {
     this->Order[s] = keyed[s].second;
+    this->Sorted[s] = points[keyed[s].second];
     if (s == 0 || keyed[s].first != keyed[s - 1].first)
     {
       std::size_t slot = this->slotOf(keyed[s].first);

@@ -19,7 +19,7 @@ public:
   // `cell` > 0: the bin size; radius queries are fastest with a cell about the radius.
   PointGrid(const std::vector<Vec3>& points, double cell);
 
-  // Calls f(index) for every point within `radius` of x.
+  // Calls f(index, point) for every point within `radius` of x.
   template <typename F>
   void forEachWithin(const Vec3& x, double radius, F&& f) const
   {
@@ -35,9 +35,8 @@ public:
             continue;
           for (std::uint32_t s = bin->begin; s < bin->end; ++s)
           {
-            const int id = this->Order[s];
-            if ((this->Points[id] - x).squaredNorm() <= r2)
-              f(id);
+            if ((this->Sorted[s] - x).squaredNorm() <= r2)
+              f(this->Order[s], this->Sorted[s]);
           }
         }
   }
@@ -72,10 +71,10 @@ private:
     }
   }
 
-  const std::vector<Vec3>& Points;
   Vec3 Origin;
   double Cell;
-  std::vector<int> Order; // point indices sorted by bin
+  std::vector<int> Order;   // point indices sorted by bin
+  std::vector<Vec3> Sorted; // the points in that order: a bin's lie side by side in memory
   std::vector<Slot> Bins; // at most half full
   std::size_t Mask = 0;
 };

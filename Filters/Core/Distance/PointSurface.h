@@ -55,6 +55,7 @@ public:
   double typicalNoise() const { return this->TypicalNoise; }
 
 private:
+  static constexpr int kScales = 3; // widths h, 2 h, 4 h
   struct Plane
   {
     Vec3 centroid;
@@ -94,10 +95,10 @@ private:
   bool fitPlaneAround(const Vec3& centre, const Scale& scale, Neighbourhood& around, Patch& patch) const;
   // Whether the patch's points lean to one side of its centre beyond an even sample's lean.
   static bool leans(const Patch& patch);
-  // The index of the finest scale, from `from` on, at which a plane fits around `centre` (noise
-  // thicker than a fraction of the width hides the plane until the width outgrows it), with its
-  // neighbourhood and plane; -1 where none does.
-  int flatScale(const Vec3& centre, Neighbourhood& around, Patch& patch, int from = 0) const;
+  // The index of the finest scale, from `from` on and before `to`, at which a plane fits around
+  // `centre` (noise thicker than a fraction of the width hides the plane until the width outgrows
+  // it), with its neighbourhood and plane; -1 where none does.
+  int flatScale(const Vec3& centre, Neighbourhood& around, Patch& patch, int from = 0, int to = kScales) const;
   void measureTypical(); // typicalFlatScale() and typicalNoise()
   // The RMS height of the neighbourhood's points over the patch's quadric, weighted as in the fit.
   static double roughness(const Neighbourhood& around, const Patch& patch);
@@ -105,7 +106,7 @@ private:
   static void finishPatch(const Neighbourhood& around, Patch& patch);
   // The patch around `centre` at one scale; false where no plane fits.
   bool fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const;
-  Patch fitPatch(int id) const; // around point id, at the finest scale that fits
+  Patch fitPatch(int id) const; // around point id, at the finest scale that fits from the typical one
   bool onRim(const Vec3& centre, int from, Vec3& onPlane) const; // see rims(); scales from `from` on
   // How far x's surface point on the patch may be trusted, 0 to 1; 0 also where x's foot lies too far
   // from the patch's centre for the patch to speak for it.

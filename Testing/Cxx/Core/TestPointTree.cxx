@@ -1,7 +1,7 @@
 // The point queries behind a wrap onto points (issue #13) against brute force: the k-d tree's nearest
 // point (with and without a search radius, and the nearest at another position, which the spacing
 // uses) on clouds in a cube, on a sphere, on a line, in a plane, all at one position, with duplicates
-// and with NaN points (left out); the hash grid's points within a radius (the fitted surface's
+// and with NaN points (left out), and on a few points (the tree built without its halves apart); the hash grid's points within a radius (the fitted surface's
 // neighbourhoods); and medianNeighbourDistance, duplicates aside.
 #include "PointGrid.h"
 #include "PointSource.h"
@@ -89,7 +89,7 @@ void withinAgrees()
     const Vec3 x(u(rng), u(rng), 0.2 * u(rng));
     const double radius = q % 2 ? 0.1 : 0.25; // within one bin and over several
     std::vector<int> got, exact;
-    grid.forEachWithin(x, radius, [&](int id) { got.push_back(id); });
+    grid.forEachWithin(x, radius, [&](int id, const Vec3&) { got.push_back(id); });
     for (std::size_t i = 0; i < points.size(); ++i)
     {
       if ((points[i] - x).norm() <= radius)
@@ -147,6 +147,7 @@ int TestPointTree(int, char*[])
   dirty[20] = Vec3(0, kInfinity, 0);
   nearestAgrees("duplicates and NaN", dirty, 16);
   nearestAgrees("no points", {}, 17);
+  nearestAgrees("a few points (one subtree, no split built apart)", randomPoints(20, 4, Vec3(1, 1, 1)), 18);
   withinAgrees();
   medianAgrees();
   return testing::finish("TestPointTree");

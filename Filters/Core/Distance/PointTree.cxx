@@ -16,8 +16,28 @@ struct Entry // a point with its input index, moved together while the tree spli
   int id;
 };
 
-// The subtree over entries [begin, end) as nodes appended to `nodes`, its root first, median splits
-// along the longest side of each node's box.
+Box boxOf(const std::vector<Entry>& entries, int begin, int end)
+{
+  Box box;
+  for (int k = begin; k < end; ++k)
+  {
+    box.extend(entries[k].point);
+  }
+  return box;
+}
+
+// Splits entries [begin, end) at their median along the longest side of their box; the middle.
+int splitAtMedian(std::vector<Entry>& entries, int begin, int end, const Box& box)
+{
+  int axis = 0;
+  box.size().maxCoeff(&axis);
+  const int middle = begin + (end - begin) / 2;
+  std::nth_element(entries.begin() + begin, entries.begin() + middle, entries.begin() + end,
+    [axis](const Entry& a, const Entry& b) { return a.point[axis] < b.point[axis]; });
+  return middle;
+}
+
+// The subtree over entries [begin, end) as nodes appended to `nodes`, its root first.
 void buildSubtree(std::vector<Entry>& entries, int begin, int end, int depth, int leafSize,
   std::vector<HierarchyNode>& nodes)
 {
@@ -31,11 +51,7 @@ void buildSubtree(std::vector<Entry>& entries, int begin, int end, int depth, in
   {
     const Range r = pending.back();
     pending.pop_back();
-    Box box;
-    for (int k = r.begin; k < r.end; ++k)
-    {
-      box.extend(entries[k].point);
-    }
+    const Box box = boxOf(entries, r.begin, r.end);
     nodes[r.node].box = box;
     if (r.end - r.begin <= leafSize || r.depth + 1 >= kMaxHierarchyDepth)
     {
@@ -43,11 +59,7 @@ void buildSubtree(std::vector<Entry>& entries, int begin, int end, int depth, in
       nodes[r.node].count = r.end - r.begin;
       continue;
     }
-    int axis = 0;
-    box.size().maxCoeff(&axis);
-    const int middle = r.begin + (r.end - r.begin) / 2;
-    std::nth_element(entries.begin() + r.begin, entries.begin() + middle, entries.begin() + r.end,
-      [axis](const Entry& a, const Entry& b) { return a.point[axis] < b.point[axis]; });
+    const int middle = splitAtMedian(entries, r.begin, r.end, box);
     const int left = static_cast<int>(nodes.size());
     nodes[r.node].first = left;
     nodes[r.node].count = 0;
@@ -76,23 +88,15 @@ PointTree::PointTree(const std::vector<Vec3>& points, int leafSize)
   // The root's split, then its two halves built side by side (the build is a tenth of a wrap's time
   // at 200,000 points): each into nodes of its own, appended after the root's children.
   const int n = static_cast<int>(entries.size());
-  std::vector<HierarchyNode> halves[2];
   if (n <= 4 * leafSize)
   {
     buildSubtree(entries, 0, n, 0, leafSize, this->Nodes);
   }
   else
   {
-    Box box;
-    for (const Entry& e : entries)
-    {
-      box.extend(e.point);
-    }
-    int axis = 0;
-    box.size().maxCoeff(&axis);
-    const int middle = n / 2;
-    std::nth_element(entries.begin(), entries.begin() + middle, entries.end(),
-      [axis](const Entry& a, const Entry& b) { return a.point[axis] < b.point[axis]; });
+    const Box box = boxOf(entries, 0, n);
+    const int middle = splitAtMedian(entries, 0, n, box);
+    std::vector<HierarchyNode> halves[2];
     parallelFor(0, 2, 1, [&](vtkIdType b, vtkIdType e) {
       for (vtkIdType h = b; h < e; ++h)
       {

@@ -7,7 +7,8 @@
 // wrap dimples towards every point; driven by this it lands between them on the sampled surface, and
 // averages noise over a neighbourhood instead of following it; where noise hides the plane at h, at
 // 2 h or 4 h (over a quarter or a sixteenth of the points: a wider fit averages as many points, not
-// more). Where no plane fits, nothing is found and the caller's grid decides: no points or no flat
+// more), from the width at which most of the cloud's points look flat (finer only where none from it
+// fits). Where no plane fits, nothing is found and the caller's grid decides: no points or no flat
 // neighbourhood (a part thinner than h), or x's foot beyond the points on one side of it (a gap's
 // rim), which fades the answer's trust out.
 #ifndef ShrinkWrap_PointSurface_h

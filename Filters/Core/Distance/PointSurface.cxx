@@ -447,17 +447,10 @@ bool PointSurface::onRim(const Vec3& centre, int from, Vec3& onPlane) const
     return false;
   }
   // Points spread off their plane even at the width where it shows (a crease, a thin part's end) are
-  // no rim.
-  double total = 0, squares = 0;
-  for (std::size_t i = 0; i < around.offsets.size(); ++i)
-  {
-    const double height = (around.centre + around.offsets[i] - patch.plane.centroid).dot(patch.plane.normal);
-    total += around.weights[i];
-    squares += around.weights[i] * height * height;
-  }
+  // no rim: their RMS height over it (the patch's quadric is zero).
   // A noisy rim point lies off the sheet by its noise; its plane's point does not.
   onPlane = centre - (centre - patch.plane.centroid).dot(patch.plane.normal) * patch.plane.normal;
-  return squares <= kMaxRimSpread * kMaxRimSpread * patch.width * patch.width * total && !surrounds(around, patch);
+  return roughness(around, patch) <= kMaxRimSpread * patch.width && !surrounds(around, patch);
 }
 
 std::vector<std::array<Vec3, 2>> PointSurface::rims(double /*creaseAngle: points have no creases*/) const

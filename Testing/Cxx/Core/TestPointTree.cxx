@@ -1,8 +1,9 @@
 // The point queries behind a wrap onto points (issue #13) against brute force: the k-d tree's nearest
 // point (with and without a search radius, and the nearest at another position, which the spacing
 // uses) on clouds in a cube, on a sphere, on a line, in a plane, all at one position, with duplicates
-// and with NaN points (left out), and on a few points (the tree built without its halves apart); the hash grid's points within a radius (the fitted surface's
-// neighbourhoods); and medianNeighbourDistance, duplicates aside.
+// and with NaN points (left out), and on a few points (the tree built without its halves apart); the
+// hash grid's points within a radius (the fitted surface's neighbourhoods); and
+// medianNeighbourDistance, duplicates aside.
 #include "PointGrid.h"
 #include "PointSource.h"
 #include "PointTree.h"

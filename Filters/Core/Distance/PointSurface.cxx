@@ -391,9 +391,32 @@ double PointSurface::trustAt(const Vec3& x, const Patch& patch)
     : std::clamp(2 - offCentre / (0.5 * kMaxOffCentre * width), 0.0, 1.0);
 }
 
+SourcePoint PointSurface::nearestPoint(const Vec3& x, double maxSquaredDistance) const
+{
+  // A wrap's vertices mostly lie within a width of a point: the finest scale's bins (all points, side
+  // by side) hold every point that near, read in a few runs of memory, where the k-d tree's descent
+  // waits on memory at every level. Nearer than the radius, the nearest found is the nearest.
+  const Scale& finest = *this->Scales.front();
+  const double radius = std::min(finest.width, std::sqrt(maxSquaredDistance));
+  SourcePoint p;
+  p.sure = false; // a point has no sides
+  p.squaredDistance = radius * radius;
+  finest.grid.forEachWithin(x, radius, [&](int id, const Vec3& point) {
+    const double d2 = (point - x).squaredNorm();
+    if (d2 < p.squaredDistance || (d2 == p.squaredDistance && !p.found))
+    {
+      p.found = true;
+      p.squaredDistance = d2;
+      p.point = point;
+      p.element = id;
+    }
+  });
+  return p.found ? p : this->Points->closestPoint(x, maxSquaredDistance);
+}
+
 SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance) const
 {
-  const SourcePoint nearest = this->Points->closestPoint(x, maxSquaredDistance);
+  const SourcePoint nearest = this->nearestPoint(x, maxSquaredDistance);
   if (!nearest.found)
   {
     return nearest;

@@ -113,6 +113,9 @@ private:
   // from the patch's centre for the patch to speak for it.
   static double trustAt(const Vec3& x, const Patch& patch);
   Patch patchAt(int id) const; // fitted once, then kept
+  // The input point nearest x (as PointSource::closestPoint), from the finest scale's bins where one
+  // lies within a width of x.
+  SourcePoint nearestPoint(const Vec3& x, double maxSquaredDistance) const;
 
   std::shared_ptr<const PointSource> Points;
   std::vector<std::unique_ptr<const Scale>> Scales; // finest first

@@ -3,7 +3,7 @@
 // sphere to a small fraction of the sampling's spacing, holes of the random sample included (the plane
 // alone is biased inwards by about h^2 / 2, the quadric removes that); with Gaussian noise of sigma
 // it lies well inside the noise band; over a hole far wider than h it finds nothing (the grid decides),
-// and the points along the hole's rim are the cloud's rims.
+// and the points along the hole's rim are the cloud's rims. Its patches are the nearest points'.
 // (The point queries under it: TestPointTree.)
 #include "PointSurface.h"
 #include "TestUtilities.h"
@@ -119,6 +119,32 @@ int TestPointSurface(int, char*[])
       "noisy sphere: noise measured " << surface.typicalNoise() / sigma << " sigma (0.7 to 1.2)");
     SW_CHECK(l.found >= 0.95 * l.queries && l.mean < 0.4 * sigma && l.largest < 2.5 * sigma,
       "noisy sphere: inside the noise band (mean " << l.mean << ", largest " << l.largest << "; bars 0.4, 2.5 sigma)");
+  }
+  // A query's patch is its nearest point's, found in the finest width's bins when one lies within a
+  // width and by the k-d tree beyond: the same point as the tree's, near and far (queries 0 to 10
+  // widths off the noisy sphere).
+  {
+    const std::vector<Vec3> points = spherePoints(20000, 0.005, 13);
+    const auto source = std::make_shared<const PointSource>(points);
+    const double h = 3 * medianNeighbourDistance(points);
+    const PointSurface surface(source, h);
+    std::mt19937 rng(17);
+    std::normal_distribution<double> g(0, 1);
+    std::uniform_real_distribution<double> off(-10 * h, 10 * h);
+    int compared = 0, differ = 0;
+    for (int q = 0; q < 4000; ++q)
+    {
+      const Vec3 x = Vec3(g(rng), g(rng), g(rng)).normalized() * (1 + (q % 2 ? off(rng) : 0.1 * off(rng)));
+      const SourcePoint p = surface.closestPoint(x, 1.0);
+      if (p.found)
+      {
+        ++compared;
+        differ += p.element != source->closestPoint(x, 1.0).element;
+      }
+    }
+    std::cout << "noisy sphere: " << compared << " queries compared with the k-d tree's nearest, " << differ << " differ" << std::endl;
+    SW_CHECK(compared > 1000 && differ == 0,
+      "noisy sphere: every patch is the nearest point's (" << differ << " of " << compared << " not)");
   }
   // A plane with a hole of radius 0.4 (h about 0.06): nothing is found over the hole's centre, the
   // grid decides there; beside the rim and beyond, the plane.

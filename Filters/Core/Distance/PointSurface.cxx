@@ -400,10 +400,9 @@ SourcePoint PointSurface::nearestPoint(const Vec3& x, double maxSquaredDistance)
   const double radius = std::min(finest.width, std::sqrt(maxSquaredDistance));
   SourcePoint p;
   p.sure = false; // a point has no sides
-  p.squaredDistance = radius * radius;
   finest.grid.forEachWithin(x, radius, [&](int id, const Vec3& point) {
     const double d2 = (point - x).squaredNorm();
-    if (d2 < p.squaredDistance || (d2 == p.squaredDistance && !p.found))
+    if (!p.found || d2 < p.squaredDistance)
     {
       p.found = true;
       p.squaredDistance = d2;

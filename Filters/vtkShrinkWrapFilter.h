@@ -135,7 +135,8 @@ public:
   vtkGetMacro(TimeStep, double);
   ///@}
   ///@{
-  /// N_t, the number of time steps. Default 200, at most kMaxSteps: far more than the paper's
+  /// N_t, the number of time steps. Default 25 (the paper's Fig. 11: 200 from an icosphere), which
+  /// land the default offset start on the target. At most kMaxSteps: far more than the paper's
   /// 200-600, and 10,001 frames are still an animation a timeline can hold.
   static constexpr int kMaxSteps = 10000;
   vtkSetClampMacro(NumberOfSteps, int, 0, kMaxSteps);

@@ -296,7 +296,8 @@ public:
   ///@{
   /// Cells along the longest axis of the internal distance field (no DistanceField input). Default 80.
   /// For a point cloud with the automatic GapSize, up to 1.5 times more where 1.5 cells would exceed
-  /// 11 median nearest-neighbour distances (about 200,000 points on a CGAL mesh), so that the grid
+  /// 11 median nearest-neighbour distances (about 200,000 points on a CGAL mesh), or, on a clean
+  /// cloud, where 8 of them would span under 2.5 cells (the camel's 20,000 points), so that the grid
   /// does not bridge what the points keep apart (FieldCellSize reports the cell used).
   vtkSetMacro(Resolution, int);
   vtkGetMacro(Resolution, int);

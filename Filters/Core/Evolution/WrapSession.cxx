@@ -39,6 +39,13 @@ constexpr double kMinPointGapCells = 1.5;
 // camel's clean points genus 4 (not 2), the noisy ones genus 3 (not 1): RESULTS.md, 2026-11-27 (night).
 constexpr double kDensePointGapPerNeighbourDistance = 11;
 constexpr double kMaxPointResolutionFactor = 1.5;
+// ... and a sparser clean cloud's field fine enough (up to the same 1.5 times) that its spacing gap
+// spans kSparsePointGapCells: a closing over fewer cells joins what lies a gap and a cell apart. At
+// 20,000 points the camel's gap spans 1.77 cells at Resolution 80, and its legs stayed joined from the
+// knees to the chest and from the hocks up; 1.41 times finer parted them. Not on a noisy cloud, whose
+// noise blurs what a finer field would keep apart: the mech part's 200,000 noisy points took 1.5 times
+// as long, and their largest distance rose to 1.59 times alpha wrap's (RESULTS.md, 2026-11-28, night).
+constexpr double kSparsePointGapCells = 2.5;
 // The automatic Target Edge Length of a point cloud, in median neighbour distances: a triangle then
 // spans a few dozen points, the detail their fitted surface holds; never coarser than a mesh's
 // automatic length (diagonal / kLengthDivisor) unless noisy (below), nor finer than diagonal /
@@ -221,9 +228,11 @@ PointCloud measureCloud(const std::vector<Vec3>& points)
 WrapSettings withPointSizes(WrapSettings settings, const Box& box, const PointCloud& cloud, bool givenStart)
 {
   const double spacing = cloud.spacing;
+  const double diagonal = box.diagonal();
+  // Noise above what an edge of the mesh's automatic length (diagonal / kLengthDivisor) would show.
+  const bool noisy = kEdgePerNoise * cloud.noise() > diagonal / WrapSettings::kLengthDivisor;
   if (settings.targetLength <= 0 && spacing > 0)
   {
-    const double diagonal = box.diagonal();
     const double coarsest = std::clamp(
       kEdgePerNoise * cloud.noise(), diagonal / WrapSettings::kLengthDivisor, diagonal / kNoisyPointLengthDivisor);
     settings.targetLength =
@@ -235,10 +244,14 @@ WrapSettings withPointSizes(WrapSettings settings, const Box& box, const PointCl
   }
   const double spacingGap = kPointGapPerNeighbourDistance * spacing;
   settings.gapSize = spacingGap;
-  // A dense cloud's spacing gap lies under the grid's floor: a finer field lowers the floor.
+  // A dense cloud's spacing gap lies under the grid's floor: a finer field lowers the floor. A sparser
+  // clean one's may span too few cells for the closing: a finer field resolves it.
   if (GridLattice lattice; placeGrid(box, settings.resolved(box).fieldPlacement(box, givenStart), lattice))
   {
-    const double finer = kMinPointGapCells * lattice.spacing.maxCoeff() / (kDensePointGapPerNeighbourDistance * spacing);
+    const double cell = lattice.spacing.maxCoeff();
+    const double dense = kMinPointGapCells * cell / (kDensePointGapPerNeighbourDistance * spacing);
+    const bool sparse = !noisy && spacingGap >= kMinPointGapCells * cell;
+    const double finer = std::max(dense, sparse ? kSparsePointGapCells * cell / spacingGap : 0.0);
     if (finer > 1)
     {
       const double resolution = std::ceil(std::min(finer, kMaxPointResolutionFactor) * settings.resolution);

@@ -95,9 +95,9 @@ struct PointCloud
 PointCloud measureCloud(const std::vector<Vec3>& points);
 // Settings for a wrap onto `cloud` within `box`: the automatic sizes (0) from its spacing: the Target
 // Edge Length (coarser on a noisy cloud), and the Gap Size, at least a few cells of the field computed
-// for them (placed with `givenStart`) so that the grid resolves the closing; for a dense cloud with the
-// automatic gap, a finer field (Resolution up to 1.5 times) so that those cells do not widen the gap
-// far beyond the spacing's.
+// for them (placed with `givenStart`) so that the grid resolves the closing; with the automatic gap, a
+// finer field (Resolution up to 1.5 times) for a dense cloud, so that those cells do not widen the gap
+// far beyond the spacing's, and for a clean one whose gap spans few cells, so that they resolve it.
 WrapSettings withPointSizes(WrapSettings settings, const Box& box, const PointCloud& cloud, bool givenStart);
 // The fields of a wrap onto points (issue #13) from their unsigned grid: the wrap is driven by the
 // distance to the points closed by a ball of half the gap size (the union of balls around them,

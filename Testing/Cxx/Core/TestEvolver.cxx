@@ -291,6 +291,27 @@ void splitsBetweenSteps()
     "resuming after an edit from the cache is bit for bit");
 }
 
+// The cell of the field that a wrap with `settings` places around `box` (no given start).
+double fieldCellOf(const Box& box, const WrapSettings& settings)
+{
+  GridLattice lattice;
+  placeGrid(box, settings.resolved(box).fieldPlacement(box, false), lattice);
+  return lattice.spacing.maxCoeff();
+}
+
+// n points on a unit sphere, each then moved by Gaussian noise of sigma.
+std::vector<Vec3> noisySphere(int n, double sigma, std::mt19937& rng)
+{
+  std::normal_distribution<double> g(0, 1);
+  std::vector<Vec3> points(n);
+  for (Vec3& p : points)
+  {
+    p = Vec3(g(rng), g(rng), g(rng)).normalized();
+    p += sigma * Vec3(g(rng), g(rng), g(rng));
+  }
+  return points;
+}
+
 // Issue #13: a point cloud's automatic Gap Size is 8 spacings, at least 1.5 cells of the field; where
 // those cells would exceed 11 spacings (a dense cloud) the field is made finer, up to 1.5 times, and
 // where 8 spacings span between 1.5 and 2.5 cells (a sparser clean cloud), finer too (up to 1.5 times),
@@ -299,11 +320,7 @@ void pointSizes()
 {
   const Box box{ Vec3::Zero(), Vec3::Ones() };
   const WrapSettings defaults;
-  const auto cellOf = [&](const WrapSettings& s) {
-    GridLattice lattice;
-    placeGrid(box, s.resolved(box).fieldPlacement(box, false), lattice);
-    return lattice.spacing.maxCoeff();
-  };
+  const auto cellOf = [&](const WrapSettings& s) { return fieldCellOf(box, s); };
   const auto spaced = [](double spacing) { // a cloud known by its spacing alone (no fitted surface)
     PointCloud cloud;
     cloud.spacing = spacing;
@@ -342,15 +359,9 @@ void pointSizes()
 void noisyPointLength()
 {
   std::mt19937 rng(3);
-  std::normal_distribution<double> g(0, 1);
   for (const double sigma : { 0.0, 0.0025 * 2 * std::sqrt(3.0) })
   {
-    std::vector<Vec3> points(20000);
-    for (Vec3& p : points)
-    {
-      p = Vec3(g(rng), g(rng), g(rng)).normalized();
-      p += sigma * Vec3(g(rng), g(rng), g(rng));
-    }
+    const std::vector<Vec3> points = noisySphere(20000, sigma, rng);
     const PointCloud cloud = measureCloud(points);
     const Box box = Box::around(points);
     const double divisor = box.diagonal() / withPointSizes(WrapSettings(), box, cloud, false).targetLength;
@@ -369,28 +380,17 @@ void noisyPointLength()
 void sparseCloudResolution()
 {
   std::mt19937 rng(5);
-  std::normal_distribution<double> g(0, 1);
   for (const double sigma : { 0.0, 0.0025 * 2 * std::sqrt(3.0) })
   {
-    std::vector<Vec3> points(sigma > 0 ? 100000 : 50000);
-    for (Vec3& p : points)
-    {
-      p = Vec3(g(rng), g(rng), g(rng)).normalized();
-      p += sigma * Vec3(g(rng), g(rng), g(rng));
-    }
+    const std::vector<Vec3> points = noisySphere(sigma > 0 ? 100000 : 50000, sigma, rng);
     const PointCloud cloud = measureCloud(points);
     const Box box = Box::around(points);
     const WrapSettings defaults;
     const WrapSettings s = withPointSizes(defaults, box, cloud, false);
-    const auto cellOf = [&](const WrapSettings& settings) {
-      GridLattice lattice;
-      placeGrid(box, settings.resolved(box).fieldPlacement(box, false), lattice);
-      return lattice.spacing.maxCoeff();
-    };
     WrapSettings at80 = s;
     at80.resolution = defaults.resolution;
-    const double cells = s.gapSize / cellOf(s);
-    const double unrefined = 8 * cloud.spacing / cellOf(at80);
+    const double cells = s.gapSize / fieldCellOf(box, s);
+    const double unrefined = 8 * cloud.spacing / fieldCellOf(box, at80);
     std::cout << "sphere of " << points.size() << " points, noise " << sigma << ": Resolution " << s.resolution
               << ", gap " << s.gapSize << " = " << cells << " cells, 8 spacings " << unrefined << " cells at 80"
               << std::endl;

@@ -53,6 +53,20 @@ inline int& failures()
     }                                                                                                        \
   } while (false)
 
+// n points on a unit sphere (uniform directions), each then moved by Gaussian noise of sigma.
+inline std::vector<Vec3> spherePoints(int n, double sigma, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0, 1);
+  std::vector<Vec3> points(n);
+  for (Vec3& p : points)
+  {
+    p = Vec3(g(rng), g(rng), g(rng)).normalized();
+    p += sigma * Vec3(g(rng), g(rng), g(rng));
+  }
+  return points;
+}
+
 inline int finish(const char* name)
 {
   std::cout << name << ": " << (failures() ? "FAILED" : "passed") << " (" << failures() << " failed checks)"

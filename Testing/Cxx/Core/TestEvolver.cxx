@@ -299,19 +299,6 @@ double fieldCellOf(const Box& box, const WrapSettings& settings)
   return lattice.spacing.maxCoeff();
 }
 
-// n points on a unit sphere, each then moved by Gaussian noise of sigma.
-std::vector<Vec3> noisySphere(int n, double sigma, std::mt19937& rng)
-{
-  std::normal_distribution<double> g(0, 1);
-  std::vector<Vec3> points(n);
-  for (Vec3& p : points)
-  {
-    p = Vec3(g(rng), g(rng), g(rng)).normalized();
-    p += sigma * Vec3(g(rng), g(rng), g(rng));
-  }
-  return points;
-}
-
 // Issue #13: a point cloud's automatic Gap Size is 8 spacings, at least 1.5 cells of the field; where
 // those cells would exceed 11 spacings (a dense cloud) the field is made finer, up to 1.5 times, and
 // where 8 spacings span between 1.5 and 2.5 cells (a sparser clean cloud), finer too (up to 1.5 times),
@@ -358,10 +345,9 @@ void pointSizes()
 // noise of 0.25% of the box's diagonal, as the benchmark's noisy clouds (about diagonal / 30).
 void noisyPointLength()
 {
-  std::mt19937 rng(3);
   for (const double sigma : { 0.0, 0.0025 * 2 * std::sqrt(3.0) })
   {
-    const std::vector<Vec3> points = noisySphere(20000, sigma, rng);
+    const std::vector<Vec3> points = testing::spherePoints(20000, sigma, sigma > 0 ? 4 : 3);
     const PointCloud cloud = measureCloud(points);
     const Box box = Box::around(points);
     const double divisor = box.diagonal() / withPointSizes(WrapSettings(), box, cloud, false).targetLength;
@@ -379,10 +365,9 @@ void noisyPointLength()
 // (noise spreads the points apart).
 void sparseCloudResolution()
 {
-  std::mt19937 rng(5);
   for (const double sigma : { 0.0, 0.0025 * 2 * std::sqrt(3.0) })
   {
-    const std::vector<Vec3> points = noisySphere(sigma > 0 ? 100000 : 50000, sigma, rng);
+    const std::vector<Vec3> points = testing::spherePoints(sigma > 0 ? 100000 : 50000, sigma, sigma > 0 ? 6 : 5);
     const PointCloud cloud = measureCloud(points);
     const Box box = Box::around(points);
     const WrapSettings defaults;

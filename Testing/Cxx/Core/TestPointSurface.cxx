@@ -18,18 +18,7 @@ namespace
 {
 using namespace shrinkwrap;
 
-std::vector<Vec3> spherePoints(int n, double sigma, unsigned seed)
-{
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> g(0, 1);
-  std::vector<Vec3> points(n);
-  for (Vec3& p : points)
-  {
-    p = Vec3(g(rng), g(rng), g(rng)).normalized();
-    p += sigma * Vec3(g(rng), g(rng), g(rng));
-  }
-  return points;
-}
+using testing::spherePoints;
 
 struct Landing
 {

@@ -27,6 +27,20 @@ bool flipKeepsShape(const std::vector<Vec3>& x, int i, int j, int c, int d, doub
   return !(n1.dot(n2) < cosMax || n3.dot(n4) < cosMax || n3.dot(n1 + n2) <= 0 || n4.dot(n1 + n2) <= 0);
 }
 
+bool flipGainsAngle(const std::vector<Vec3>& x, int i, int j, int c, int d, double minGain)
+{
+  // Only non-Delaunay edges (angles at c and d summing past pi) can gain; this test is cheap.
+  const Vec3 ci = x[i] - x[c], cj = x[j] - x[c], di = x[i] - x[d], dj = x[j] - x[d];
+  const double sinC = ci.cross(cj).norm(), sinD = di.cross(dj).norm();
+  if (ci.dot(cj) * sinD + di.dot(dj) * sinC >= 0) // sin(C + D) >= 0: Delaunay already
+  {
+    return false;
+  }
+  const double before = std::min(smallestAngle(x[i], x[j], x[c]), smallestAngle(x[i], x[d], x[j]));
+  const double after = std::min(smallestAngle(x[i], x[d], x[c]), smallestAngle(x[d], x[j], x[c]));
+  return after >= before + minGain;
+}
+
 // Over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j). The rings describe the
 // connectivity before the pass, hence one flip per vertex.
 int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
@@ -48,17 +62,8 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
       {
         continue;
       }
-      // Only non-Delaunay edges (angles at c and d summing past pi) can gain; this test is cheap.
-      const Vec3 ci = x[i] - x[c], cj = x[j] - x[c], di = x[i] - x[d], dj = x[j] - x[d];
-      const double sinC = ci.cross(cj).norm(), sinD = di.cross(dj).norm();
-      // sin(C + D) >= 0: Delaunay already; (c, d) already an edge: the flip would pinch the surface.
-      if (ci.dot(cj) * sinD + di.dot(dj) * sinC >= 0 || mesh.ringEntry(c, d) >= 0)
-      {
-        continue;
-      }
-      const double before = std::min(smallestAngle(x[i], x[j], x[c]), smallestAngle(x[i], x[d], x[j]));
-      const double after = std::min(smallestAngle(x[i], x[d], x[c]), smallestAngle(x[d], x[j], x[c]));
-      if (after < before + settings.minGain)
+      // (c, d) already an edge: the flip would pinch the surface.
+      if (!flipGainsAngle(x, i, j, c, d, settings.minGain) || mesh.ringEntry(c, d) >= 0)
       {
         continue;
       }

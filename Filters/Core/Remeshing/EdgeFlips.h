@@ -29,6 +29,10 @@ struct FlipSettings
 // triangles facing the way the old ones did.
 bool flipKeepsShape(const std::vector<Vec3>& x, int i, int j, int c, int d, double cosMax);
 
+// Whether flipping edge (i, j) of triangles (i, j, c) and (i, d, j) to (c, d) raises the pair's smallest
+// angle by at least minGain (radians): the test of flipEdges, before its checks of shape and crossings.
+bool flipGainsAngle(const std::vector<Vec3>& x, int i, int j, int c, int d, double minGain);
+
 // One pass of flips over the edges of `mesh` (a vertex takes part in at most one flip; the evolver
 // runs a pass after every step), committed. Returns the number of flips.
 int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings);

@@ -52,7 +52,7 @@ int splitLongEdges(SurfaceMesh& mesh, double maxLength);
 // and collapseInPass allows it, in passes until none is left (at most 16).
 int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings);
 // One pass of flips that bring the four valences of an edge's triangles closer to 6, within the
-// dihedral guard.
+// dihedral guard, leaving out those that flipEdges would flip back (flipGainsAngle of the new edge).
 int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings);
 
 RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings);

@@ -16,6 +16,7 @@
 // Argument: the folder holding CGAL's data/meshes/*.off.
 #include "SurfaceMesh.h"
 #include "TestUtilities.h"
+#include "TriangleSoup.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
 
@@ -77,15 +78,37 @@ vtkSmartPointer<vtkPolyData> bentChair()
 struct Figures
 {
   double median = 0, p90 = 0, smallAngles = 0, seconds = 0;
+  double rimsLargest = 0; // the largest distance from `rims` to the wrap, % of the diagonal
   bool ok = false, closed = false;
   int pieces = 0;
   vtkIdType vertices = 0;
 };
 
+// Points along the rims of `soup` (its edges of one triangle), eleven per edge, ends included.
+std::vector<shrinkwrap::Vec3> rimPoints(const shrinkwrap::TriangleSoup& soup)
+{
+  const shrinkwrap::TriangleSoup welded = shrinkwrap::weldDuplicatePoints(soup);
+  const std::vector<shrinkwrap::EdgeUse> uses = shrinkwrap::edgeUses(welded);
+  std::vector<shrinkwrap::Vec3> points;
+  shrinkwrap::forEachEdge(uses, [&](std::size_t first, std::size_t last) {
+    if (last - first == 1)
+    {
+      const auto& t = welded.triangles[uses[first].triangle];
+      const shrinkwrap::Vec3 a = welded.points[t[uses[first].slot]], b = welded.points[t[(uses[first].slot + 1) % 3]];
+      for (int k = 0; k <= 10; ++k)
+      {
+        points.push_back(a + (k / 10.0) * (b - a));
+      }
+    }
+  });
+  return points;
+}
+
 // The default wrap of `target`, with the settings `set` changes; judged by sampling too (WrapEvaluation.h)
-// when `sampled` and the target's triangles are given.
+// when `sampled` and the target's triangles are given, and from `rims` (with the triangles) when given.
 Figures wrap(vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)>& set,
-  testing::WrapFigures* sampled = nullptr, const shrinkwrap::TriangleSoup* soup = nullptr)
+  testing::WrapFigures* sampled = nullptr, const shrinkwrap::TriangleSoup* soup = nullptr,
+  const std::vector<shrinkwrap::Vec3>* rims = nullptr)
 {
   vtkNew<vtkShrinkWrapFilter> filter;
   filter->SetInputData(target);
@@ -105,6 +128,10 @@ Figures wrap(vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)
   if (sampled && soup)
   {
     *sampled = testing::evaluateWrap(testing::triangulated(out), *soup);
+  }
+  if (rims && soup)
+  {
+    f.rimsLargest = testing::oneSided(*rims, testing::triangulated(out), soup->bounds().diagonal()).largest;
   }
   const double h = testing::fieldCell(out);
   std::vector<double> d;
@@ -257,7 +284,8 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
     {
       const shrinkwrap::TriangleSoup soup = testing::triangulated(part);
       testing::WrapFigures sampled;
-      const Figures f = wrap(part, [](vtkShrinkWrapFilter*) {}, &sampled, &soup);
+      const std::vector<shrinkwrap::Vec3> rims = rimPoints(soup);
+      const Figures f = wrap(part, [](vtkShrinkWrapFilter*) {}, &sampled, &soup, &rims);
       report("mech-holes-shark", "defaults", f);
       std::printf("  sampled: mean %.3f%% / %.3f%%, genus %d, %lld self-intersecting pairs\n", sampled.wrapToTarget.mean,
         sampled.targetToWrap.mean, sampled.genus, sampled.selfIntersections);
@@ -265,14 +293,16 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
         "mech-holes-shark: genus 3 kept, no crossing (genus " << sampled.genus << ")");
       // Its open shell's rims stay inside the wrap (Cover Rims): without, the wrap's folds creep back
       // along the sheets and the rims poke out by 1.7-2.1% of the diagonal (RESULTS.md, issue #10). With
-      // it, within issue #10's bar: 1.5 times alpha_wrap_3's largest at diag/50 (0.27%).
-      testing::WrapFigures uncovered;
-      wrap(part, [](vtkShrinkWrapFilter* w) { w->SetCoverRims(false); }, &uncovered, &soup);
-      std::printf("  largest target to wrap: %.2f%% of the diagonal, %.2f%% without Cover Rims\n",
-        sampled.targetToWrap.largest, uncovered.targetToWrap.largest);
-      SW_CHECK(sampled.targetToWrap.largest <= 1.5 * 0.27 && sampled.targetToWrap.largest < 0.75 * uncovered.targetToWrap.largest,
-        "mech-holes-shark: the rims covered (largest target to wrap " << sampled.targetToWrap.largest << "% against "
-          << uncovered.targetToWrap.largest << "% without Cover Rims)");
+      // it, within issue #10's bar: 1.5 times alpha_wrap_3's largest at diag/50 (0.27%). Measured from
+      // the rims themselves: the largest over the whole part is a pit narrower than the gap, which the
+      // wrap spans 0.3-0.7% above with a 1% change of C (RESULTS.md, 2026-11-28, late night).
+      const Figures uncovered = wrap(part, [](vtkShrinkWrapFilter* w) { w->SetCoverRims(false); }, nullptr, &soup, &rims);
+      std::printf("  largest rim to wrap: %.2f%% of the diagonal (%zu rim points), %.2f%% without Cover Rims; "
+                  "largest target to wrap %.2f%%\n",
+        f.rimsLargest, rims.size(), uncovered.rimsLargest, sampled.targetToWrap.largest);
+      SW_CHECK(!rims.empty() && f.rimsLargest <= 1.5 * 0.27 && f.rimsLargest < 0.75 * uncovered.rimsLargest,
+        "mech-holes-shark: the rims covered (largest rim to wrap " << f.rimsLargest << "% against "
+          << uncovered.rimsLargest << "% without Cover Rims)");
     }
   }
 

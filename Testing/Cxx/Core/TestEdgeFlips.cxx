@@ -25,14 +25,20 @@ double thinShare(const std::vector<std::array<int, 3>>& triangles, const std::ve
   return static_cast<double>(thin) / triangles.size();
 }
 
-void edgeFlips()
+// An icosphere stretched 4 times along x: thin triangles everywhere, on a smooth convex shape.
+TriangleSurface stretchedIcosphere()
 {
-  // An icosphere stretched 4 times along x: thin triangles everywhere, on a smooth convex shape.
   TriangleSurface stretched = icosphere(3, Vec3::Zero(), 1.0);
   for (Vec3& p : stretched.points)
   {
     p.x() *= 4;
   }
+  return stretched;
+}
+
+void edgeFlips()
+{
+  const TriangleSurface stretched = stretchedIcosphere();
   const SurfaceMesh mesh = meshOf(stretched);
   const std::vector<Vec3>& x = stretched.points;
   // Four passes, each on the triangles of the one before.
@@ -90,12 +96,7 @@ void edgeFlips()
 // every step, the surface standing still. On fixed vertices, rounds of both must die out.
 void noChurn()
 {
-  TriangleSurface stretched = icosphere(3, Vec3::Zero(), 1.0);
-  for (Vec3& p : stretched.points)
-  {
-    p.x() *= 4;
-  }
-  SurfaceMesh mesh = meshOf(stretched);
+  SurfaceMesh mesh = meshOf(stretchedIcosphere());
   FlipSettings settings;
   settings.avoidCrossings = false;
   std::vector<std::array<int, 2>> counts;

@@ -125,13 +125,17 @@ Figures wrap(vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)
   {
     return f;
   }
-  if (sampled && soup)
+  if (soup && (sampled || rims))
   {
-    *sampled = testing::evaluateWrap(testing::triangulated(out), *soup);
-  }
-  if (rims && soup)
-  {
-    f.rimsLargest = testing::oneSided(*rims, testing::triangulated(out), soup->bounds().diagonal()).largest;
+    const shrinkwrap::TriangleSoup wrapped = testing::triangulated(out);
+    if (sampled)
+    {
+      *sampled = testing::evaluateWrap(wrapped, *soup);
+    }
+    if (rims)
+    {
+      f.rimsLargest = testing::oneSided(*rims, wrapped, soup->bounds().diagonal()).largest;
+    }
   }
   const double h = testing::fieldCell(out);
   std::vector<double> d;

@@ -160,6 +160,7 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   this->EdgeFlips = e.edgeFlips;
   this->EdgeCollapses = e.edgeCollapses;
   this->CoverRims = e.rims.cover;
+  this->FitFacets = e.facetFit != 0;
   this->CreaseAngle = e.rims.creaseAngle;
   this->FlipDihedralLimit = e.flips.maxDihedral;
   this->StartingShape = static_cast<int>(defaults.start.shape); // ICOSPHERE, OFFSET_SURFACE in order
@@ -205,6 +206,7 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
   e.edgeFlips = this->EdgeFlips;
   e.edgeCollapses = this->EdgeCollapses;
   e.rims.cover = this->CoverRims;
+  e.facetFit = this->FitFacets ? 1.0 : 0.0;
   e.rims.creaseAngle = this->CreaseAngle;
   e.flips.maxDihedral = this->FlipDihedralLimit;
   s.start.shape = static_cast<StartShape>(this->StartingShape);
@@ -894,6 +896,7 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EdgeFlips: " << this->EdgeFlips << "\n";
   os << indent << "EdgeCollapses: " << this->EdgeCollapses << "\n";
   os << indent << "CoverRims: " << this->CoverRims << "\n";
+  os << indent << "FitFacets: " << this->FitFacets << "\n";
   os << indent << "CreaseAngle: " << this->CreaseAngle << (this->CreaseAngle < 180 ? "\n" : " (rims only)\n");
   os << indent << "FlipDihedralLimit: " << this->FlipDihedralLimit << "\n";
   os << indent << "StartingShape: " << (this->StartingShape == ICOSPHERE ? "Icosphere" : "Offset Surface") << "\n";

@@ -1,7 +1,7 @@
 // Shrink Wrap beside CGAL's alpha_wrap_3 in one run, on CGAL meshes with thin parts, fingers and legs,
 // holes, an open mesh and CAD parts with sharp edges (issue #10).
 //   BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b,...] [--set Name=value ...]
-//     [--points N [--noise percent]]  (issue #13: N points sampled on each mesh wrapped instead)
+//     [--points N [--noise percent] [--draw K]] [--repeat N]  (issue #13: N points sampled on each mesh wrapped instead)
 // Ours: the defaults, and Target Edge Length diagonal / 25 and / 100 (the field's Resolution follows
 // L, so that a cell stays below L); the time includes the distance field. CGAL: alpha = diagonal / 20,
 // / 50, / 100, offset = alpha / 30 (CGAL's examples). Every wrap is judged the same way
@@ -11,10 +11,14 @@
 // triangles with a minimum angle below 20 degrees. --set applies a property to our wraps (D, C, C1,
 // C2, TimeStep, NumberOfSteps, Resolution, StartOffset, GapSize, TargetEdgeLength, ShortestEdge and
 // LongestEdge (EdgeLengthRange), Remeshing,
-// StartingShape, SubdivisionLevel, InitialRelaxation, CloseHoles), for tuning. --time-only runs our defaults alone and prints their
+// StartingShape, SubdivisionLevel, InitialRelaxation, CloseHoles, CoverRims, FitFacets), for tuning. --time-only runs our defaults alone and prints their
 // time and vertex count, without evaluation or peers (for profiling); with --points, our wrap of the
 // points evaluated, without peers. --no-reconstruction leaves out vtkSurfaceReconstructionFilter (the
-// slowest peer of --points) for a quicker run beside alpha wrap alone.
+// slowest peer of --points) for a quicker run beside alpha wrap alone. --repeat N runs every wrap N
+// times and reports the fastest (this machine's times vary by 20% from run to run; the fastest of a
+// few is the one least disturbed), each of ours by a new filter, so that none reuses another's work.
+// --draw K samples the points (and their noise) with other seeds: a largest distance depends on where
+// the points fall, and one draw cannot tell a trend from luck.
 #include "TestUtilities.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
@@ -27,11 +31,14 @@
 #include <vtkCellArray.h>
 #include <vtkContourFilter.h>
 #include <vtkPoints.h>
+#include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 #include <vtkSurfaceReconstructionFilter.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <random>
 #include <functional>
 #include <map>
@@ -49,6 +56,20 @@ using shrinkwrap::Vec3;
 double seconds(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The fastest of `repeats` runs of run(), in seconds; what the last run made is kept.
+template <typename Run>
+double fastestOf(int repeats, Run&& run)
+{
+  double fastest = std::numeric_limits<double>::infinity();
+  for (int r = 0; r < std::max(repeats, 1); ++r)
+  {
+    const auto start = Clock::now();
+    run();
+    fastest = std::min(fastest, seconds(start));
+  }
+  return fastest;
 }
 
 void write(const TriangleSoup& soup, const std::string& path)
@@ -126,24 +147,39 @@ void row(const std::string& method, double time, const TriangleSoup& wrap, const
 using Setter = std::function<void(vtkShrinkWrapFilter*, double)>;
 const std::map<std::string, Setter>& setters();
 
+// A new Shrink Wrap of `input` with the --set properties: a fresh filter per run, so that no run
+// reuses another's cached work.
+vtkSmartPointer<vtkShrinkWrapFilter> configuredWrap(
+  vtkDataObject* input, const std::vector<std::pair<std::string, double>>& sets)
+{
+  auto wrap = vtkSmartPointer<vtkShrinkWrapFilter>::New();
+  wrap->SetInputData(input);
+  for (const auto& s : sets)
+  {
+    setters().at(s.first)(wrap, s.second);
+  }
+  return wrap;
+}
+
 // Points sampled uniformly by area on the target (seeded), with Gaussian noise of `noise` % of the
 // diagonal, wrapped by ours at its defaults, alpha_wrap_3 on the same points (alpha = diagonal / 20,
 // / 50, / 100, offset alpha / 30) and VTK's vtkSurfaceReconstructionFilter + contour at 0; every wrap
 // judged against the original mesh (the truth). With `out`, the cloud and the wraps are written as
 // <out>_target.vtp, <out>_shrinkwrap.vtp, <out>_alphawrap_<divisor>.vtp.
 void cloudRows(const TriangleSoup& target, int count, double noise, const std::vector<std::pair<std::string, double>>& sets,
-  const std::string& out, bool peers, bool withReconstruction)
+  const std::string& out, bool peers, bool withReconstruction, int repeats, int draw)
 {
   const double diagonal = target.bounds().diagonal();
-  std::vector<Vec3> cloud = testing::samplePoints(target, count, 7);
+  std::vector<Vec3> cloud = testing::samplePoints(target, count, 7 + draw);
   cloud.erase(cloud.begin(), cloud.begin() + static_cast<std::ptrdiff_t>(target.points.size())); // samples only
-  std::mt19937_64 random(11);
+  std::mt19937_64 random(11 + draw);
   std::normal_distribution<double> gauss(0, noise / 100 * diagonal);
   for (Vec3& p : cloud)
   {
     p += noise > 0 ? Vec3(gauss(random), gauss(random), gauss(random)) : Vec3::Zero();
   }
-  std::printf("(%d points, noise %.2f%% of the diagonal)\n", count, noise);
+  std::printf("(%d points, noise %.2f%% of the diagonal%s)\n", count, noise,
+    draw > 0 ? (", draw " + std::to_string(draw)).c_str() : "");
   vtkNew<vtkPoints> points;
   for (const Vec3& p : cloud)
   {
@@ -168,15 +204,11 @@ void cloudRows(const TriangleSoup& target, int count, double noise, const std::v
     writer->Write();
   }
   {
-    vtkNew<vtkShrinkWrapFilter> wrap;
-    wrap->SetInputData(input);
-    for (const auto& s : sets)
-    {
-      setters().at(s.first)(wrap, s.second);
-    }
-    const auto start = Clock::now();
-    wrap->Update();
-    const double total = seconds(start);
+    vtkSmartPointer<vtkShrinkWrapFilter> wrap;
+    const double total = fastestOf(repeats, [&] {
+      wrap = configuredWrap(input, sets);
+      wrap->Update();
+    });
     auto* status = vtkStringArray::SafeDownCast(wrap->GetOutput()->GetFieldData()->GetAbstractArray("Status"));
     const TriangleSoup soup = testing::triangulated(wrap->GetOutput());
     row("Shrink Wrap, defaults", total, soup, target, status ? status->GetValue(0) : "none");
@@ -198,9 +230,10 @@ void cloudRows(const TriangleSoup& target, int count, double noise, const std::v
   {
     const double alpha = diagonal / divisor, offset = alpha / 30;
     CgalMesh wrapped;
-    const auto start = Clock::now();
-    CGAL::alpha_wrap_3(cgalPoints, alpha, offset, wrapped);
-    const double total = seconds(start);
+    const double total = fastestOf(repeats, [&] {
+      wrapped.clear();
+      CGAL::alpha_wrap_3(cgalPoints, alpha, offset, wrapped);
+    });
     row("alpha_wrap_3 diag/" + std::to_string(divisor), total, soupOf(wrapped), target, "ok");
     if (!out.empty())
     {
@@ -214,9 +247,10 @@ void cloudRows(const TriangleSoup& target, int count, double noise, const std::v
     vtkNew<vtkContourFilter> contour;
     contour->SetInputConnection(reconstruction->GetOutputPort());
     contour->SetValue(0, 0.0);
-    const auto start = Clock::now();
-    contour->Update();
-    const double total = seconds(start);
+    const double total = fastestOf(repeats, [&] {
+      reconstruction->Modified();
+      contour->Update();
+    });
     // The reconstruction's grid is in its own index space scaled to the points' bounds: the contour is
     // already in the input's coordinates (vtkSurfaceReconstructionFilter sets origin and spacing).
     row("vtkSurfaceReconstructionFilter + contour", total, testing::triangulated(contour->GetOutput()), target, "ok");
@@ -241,6 +275,7 @@ const std::map<std::string, Setter>& setters()
     { "StartingShape", [](vtkShrinkWrapFilter* w, double v) { w->SetStartingShape(static_cast<int>(v)); } },
     { "CloseHoles", [](vtkShrinkWrapFilter* w, double v) { w->SetCloseHoles(v != 0); } },
     { "CoverRims", [](vtkShrinkWrapFilter* w, double v) { w->SetCoverRims(v != 0); } },
+    { "FitFacets", [](vtkShrinkWrapFilter* w, double v) { w->SetFitFacets(v != 0); } },
     { "InitialRelaxation", [](vtkShrinkWrapFilter* w, double v) { w->SetInitialRelaxation(static_cast<int>(v)); } },
     { "SubdivisionLevel", [](vtkShrinkWrapFilter* w, double v) { w->SetSubdivisionLevel(static_cast<int>(v)); } },
   };
@@ -252,7 +287,7 @@ int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::cerr << "usage: BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b] [--set Name=value]\n";
+    std::cerr << "usage: BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b] [--set Name=value] [--points N [--noise percent] [--draw K]] [--repeat N] [--defaults-only] [--time-only] [--no-reconstruction]\n";
     return 2;
   }
   const std::string folder = argv[1];
@@ -263,6 +298,8 @@ int main(int argc, char* argv[])
   bool ourVariants = true;
   bool timeOnly = false;
   bool withReconstruction = true; // --no-reconstruction
+  int repeats = 1;    // --repeat: the fastest of this many runs of every wrap
+  int draw = 0;       // --draw: another sample of the points and their noise (0: the usual one)
   int cloudSize = 0;  // --points: wrap this many points sampled on each mesh instead of the mesh (issue #13)
   double noise = 0;   // --noise: Gaussian noise on them, in % of the diagonal
   for (int a = 2; a < argc; ++a)
@@ -295,6 +332,14 @@ int main(int argc, char* argv[])
     else if (arg == "--points" && a + 1 < argc)
     {
       cloudSize = std::atoi(argv[++a]);
+    }
+    else if (arg == "--draw" && a + 1 < argc)
+    {
+      draw = std::max(0, std::atoi(argv[++a]));
+    }
+    else if (arg == "--repeat" && a + 1 < argc)
+    {
+      repeats = std::max(1, std::atoi(argv[++a]));
     }
     else if (arg == "--noise" && a + 1 < argc)
     {
@@ -340,29 +385,25 @@ int main(int argc, char* argv[])
     if (cloudSize > 0)
     {
       cloudRows(target, cloudSize, noise, sets, out.empty() ? out : out + "/" + name + "_points", !timeOnly,
-        withReconstruction);
+        withReconstruction, repeats, draw);
       continue;
     }
 
     // Ours: the defaults, then two other target edge lengths.
     for (const double divisor : ourVariants ? std::vector<double>{ 0, 25, 100 } : std::vector<double>{ 0 })
     {
-      vtkNew<vtkShrinkWrapFilter> wrap;
-      wrap->SetInputData(mesh);
-      for (const auto& s : sets)
-      {
-        setters().at(s.first)(wrap, s.second);
-      }
-      if (divisor > 0)
-      {
-        wrap->SetTargetEdgeLength(diagonal / divisor);
-        // The field's cell follows L: the default Resolution belongs to L = diagonal / 50 (never coarser).
-        const int resolution = wrap->GetResolution();
-        wrap->SetResolution(std::max(resolution, static_cast<int>(resolution * divisor / 50)));
-      }
-      const auto start = Clock::now();
-      wrap->Update();
-      const double total = seconds(start);
+      vtkSmartPointer<vtkShrinkWrapFilter> wrap;
+      const double total = fastestOf(repeats, [&] {
+        wrap = configuredWrap(mesh, sets);
+        if (divisor > 0)
+        {
+          wrap->SetTargetEdgeLength(diagonal / divisor);
+          // The field's cell follows L: the default Resolution belongs to L = diagonal / 50 (never coarser).
+          const int resolution = wrap->GetResolution();
+          wrap->SetResolution(std::max(resolution, static_cast<int>(resolution * divisor / 50)));
+        }
+        wrap->Update();
+      });
       vtkPolyData* result = wrap->GetOutput();
       auto* status = vtkStringArray::SafeDownCast(result->GetFieldData()->GetAbstractArray("Status"));
       const std::string label = divisor > 0
@@ -400,9 +441,10 @@ int main(int argc, char* argv[])
     {
       const double alpha = diagonal / divisor, offset = alpha / 30;
       CgalMesh wrapped;
-      const auto start = Clock::now();
-      CGAL::alpha_wrap_3(points, faces, alpha, offset, wrapped);
-      const double total = seconds(start);
+      const double total = fastestOf(repeats, [&] {
+        wrapped.clear();
+        CGAL::alpha_wrap_3(points, faces, alpha, offset, wrapped);
+      });
       const TriangleSoup soup = soupOf(wrapped);
       row("alpha_wrap_3 diag/" + std::to_string(divisor), total, soup, target, "ok");
       if (!out.empty())

@@ -58,6 +58,16 @@ struct EvolverSettings
   // (Testing/Benchmarks/RESULTS.md, issue #10).
   double C = 12.0;
   double D = 0.5;
+  // Where the vertices land: d = facetFit h / 4 instead of d = 0 (eq. (4) moves them by d minus
+  // that), h a vertex's height over its ring's centroid along its normal (positive where the surface
+  // is convex; within half the ring's mean edge l, so h / 4 <= l / 8). On a sphere of radius R with
+  // edges l, h = l^2 / (2R) and h / 4 = l^2 / (8R) is an edge's sagitta: facets between vertices on
+  // the target cut inside convex parts by about that (and bulge out of concave ones), so vertices
+  // that far out make the facets straddle the target instead. With remeshing only (its rings are
+  // near equilateral), and not at the vertices that hold rims. The means both ways fell by up to a
+  // third on CGAL meshes and their points (RESULTS.md, 2026-11-29). Stable: a vertex pushed out by e
+  // raises its own landing by e / 4. 0: on the target (the paper's scheme).
+  double facetFit = 1.0;
   Redistribution redistribution = Redistribution::Angle; // the paper's tables also run None and Volume
   double omegaAngle = 0.5;      // omega_angle (paper Fig. 11)
   double omegaVolume = 1.0;     // omega_vol (paper Table 3)
@@ -96,6 +106,7 @@ struct EvolverSettings
     s.edgeCollapses = false;
     s.C = 1.0;
     s.D = 0.0;
+    s.facetFit = 0.0;
     s.remeshing.targetLength = 0;
     s.holdBack = false;
     s.rims.cover = false;
@@ -188,6 +199,9 @@ private:
   struct Controls;
   struct Solver;
   Controls controls() const;
+  // Vertex i's height over the centroid of its ring along `normal`, within half the ring's mean edge
+  // (EvolverSettings::facetFit).
+  double heightOverRing(int i, const Vec3& normal) const;
   bool tangentialVelocities(const Controls& c, std::vector<Vec3>& vt);
   bool solve(const Controls& c, const std::vector<Vec3>& vt, std::vector<Vec3>& next);
   StepReport accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool converged);

@@ -1,15 +1,19 @@
 // The evolver (issue #3, besides the shrinking-sphere tables): redistribution does its job, advection
 // onto a target, failures reported, scale covariance, the domain, refused settings, and edits between
 // steps (issue #9: a split surface evolves as the same surface given from the start); a point cloud's
-// automatic sizes (issue #13).
+// automatic sizes (issue #13); vertices that land off the target by their edges' sagitta
+// (EvolverSettings::facetFit).
 #include "Evolver.h"
 #include "EdgeSplits.h"
 #include "Icosphere.h"
+#include "DistanceSource.h"
 #include "SignedDistance.h"
 #include "WrapSession.h"
 #include "TestUtilities.h"
 
+#include <cmath>
 #include <functional>
+#include <memory>
 #include <random>
 
 #include <vtkSMPTools.h>
@@ -226,6 +230,82 @@ DistanceGrid unitSphereField()
   return DistanceGrid(lattice, values);
 }
 
+// A unit sphere wrapped with remeshing to edges of 0.3 (a sagitta of 0.3^2 / 8 = 0.011), its near
+// field exact (the target a fine icosphere: its own facets cut in by 0.0005): the wrap's vertices,
+// and points spread over its triangles, against the sphere.
+struct Landing
+{
+  double vertexOffset;  // mean |x| - 1 over the vertices
+  double facetDistance; // mean | |p| - 1 | over points spread over the triangles
+  double sagitta;       // l^2 / 8 of the mean edge l
+};
+Landing landOnSphere(double facetFit)
+{
+  const TriangleSurface target = icosphere(6);
+  const TriangleSoup soup{ target.points, target.triangles };
+  GridLattice lattice;
+  placeGrid(soup.bounds(), GridPlacement{ 1.1, 0.6, 48, 0 }, lattice);
+  std::vector<float> values(lattice.nodeCount());
+  computeSignedDistance(soup, lattice, {}, values.data());
+  const TargetDistance distance(DistanceGrid(lattice, values), std::make_shared<const TriangleSource>(soup));
+  EvolverSettings settings;
+  settings.facetFit = facetFit;
+  settings.remeshing.targetLength = 0.3;
+  Evolver evolver(meshOf(icosphere(3, Vec3::Zero(), 1.2)), settings, &distance, lattice.bounds());
+  for (int k = 0; k < 40; ++k)
+  {
+    const StepReport r = evolver.step();
+    SW_CHECK(r.ok(), "landing step: " << r.message);
+    if (!r.ok())
+    {
+      break;
+    }
+  }
+  const std::vector<Vec3> x = evolver.positions();
+  Landing l{ 0, 0, 0 };
+  for (const Vec3& p : x)
+  {
+    l.vertexOffset += (p.norm() - 1) / x.size();
+  }
+  double edges = 0, length = 0;
+  int samples = 0;
+  for (const auto& t : evolver.mesh().triangles())
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      length += (x[t[k]] - x[t[(k + 1) % 3]]).norm();
+      ++edges;
+    }
+    for (int a = 0; a <= 4; ++a) // barycentric points on a grid of step 1/4
+    {
+      for (int b = 0; a + b <= 4; ++b)
+      {
+        const Vec3 p = (a * x[t[0]] + b * x[t[1]] + (4 - a - b) * x[t[2]]) / 4.0;
+        l.facetDistance += std::abs(p.norm() - 1);
+        ++samples;
+      }
+    }
+  }
+  l.facetDistance /= samples;
+  l.sagitta = std::pow(length / edges, 2) / 8;
+  return l;
+}
+
+// On the target the wrap's facets cut inside the sphere by about the sagitta; landed a sagitta out,
+// they straddle it.
+void facetsStraddleTheTarget()
+{
+  const Landing plain = landOnSphere(0), fitted = landOnSphere(1);
+  std::printf("facet fit: vertices at %+.5f (without) / %+.5f (with) of the sphere, edge sagitta %.5f / %.5f; "
+              "mean facet distance %.5f / %.5f\n",
+    plain.vertexOffset, fitted.vertexOffset, plain.sagitta, fitted.sagitta, plain.facetDistance,
+    fitted.facetDistance);
+  SW_CHECK(std::abs(plain.vertexOffset) < 0.1 * plain.sagitta, "without the fit, the vertices land on the sphere");
+  SW_CHECK(fitted.vertexOffset > 0.5 * fitted.sagitta && fitted.vertexOffset < 1.5 * fitted.sagitta,
+    "with it, they land about an edge's sagitta outside");
+  SW_CHECK(fitted.facetDistance < 0.6 * plain.facetDistance, "and the facets lie closer to the sphere");
+}
+
 double largestDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
 {
   double worst = a.size() == b.size() ? 0 : INFINITY;
@@ -401,6 +481,7 @@ int TestEvolver(int, char*[])
     refusedSettings();
     splitsBetweenSteps();
     pointSizes();
+    facetsStraddleTheTarget();
   });
   return testing::finish("TestEvolver");
 }

@@ -178,6 +178,7 @@ void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
   f->SetEdgeFlips(dice.chance(0.7));
   f->SetEdgeCollapses(dice.chance(0.7));
   f->SetCoverRims(dice.chance(0.7));
+  f->SetFitFacets(dice.chance(0.7));
   f->SetFlipDihedralLimit(dice.value(60));
   f->SetStartingShape(dice.between(0, 1));
   f->SetStartOffset(dice.value(3));

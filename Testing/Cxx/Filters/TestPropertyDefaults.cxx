@@ -131,6 +131,7 @@ int TestPropertyDefaults(int argc, char* argv[])
       { "SetEdgeFlips", [&] { return one(w->GetEdgeFlips()); } },
       { "SetEdgeCollapses", [&] { return one(w->GetEdgeCollapses()); } },
       { "SetCoverRims", [&] { return one(w->GetCoverRims()); } },
+      { "SetFitFacets", [&] { return one(w->GetFitFacets()); } },
       { "SetCreaseAngle", [&] { return one(w->GetCreaseAngle()); } },
       { "SetFlipDihedralLimit", [&] { return one(w->GetFlipDihedralLimit()); } },
       { "SetInitialRelaxation", [&] { return one(w->GetInitialRelaxation()); } },

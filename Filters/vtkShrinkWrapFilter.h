@@ -223,7 +223,7 @@ public:
   /// With CoverRims, the target's sharp creases count as rims too: edges where its faces turn by more
   /// than this angle (degrees) pull the wrap onto them, so that it keeps a CAD part's edges and corners
   /// instead of cutting them. Default 180 (none): on the fandisk 45 brings the mean distance from the
-  /// target from 0.055% to 0.033% of the diagonal, with 8% more vertices (Testing/Benchmarks/RESULTS.md).
+  /// target from 0.042% to 0.028% of the diagonal, with 6% more vertices (Testing/Benchmarks/RESULTS.md).
   vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
   vtkGetMacro(CreaseAngle, double);
   ///@}

@@ -38,6 +38,9 @@ struct SourcePoint
   // How far a caller may trust this point over its own estimate, 0 to 1 (below 1 where a fitted
   // surface fades out, PointSurface.h), so that switching between them leaves no step.
   double trust = 1;
+  // Taken only where it lies beyond the caller's own estimate (farther from the query, signed), never
+  // short of it: a noisy cloud's first layer (PointSurface::firstLayer) deepens a closed field only.
+  bool beyondEstimate = false;
 };
 
 // The nearest point of an AABB tree's hit (not found when the tree found nothing); the side, normal

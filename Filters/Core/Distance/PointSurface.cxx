@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <iterator>
 #include <memory>
 #include <utility>
@@ -53,6 +54,14 @@ constexpr int kTypicalSample = 4;
 constexpr double kMaxFlatness = 0.25;  // smallest over middle eigenvalue: above it, no plane
 constexpr double kMinPivot = 1e-6;     // of the quadric's normal equations, relative to the largest
 constexpr double kMaxLift = 0.2;       // in widths: the most a quadric may move the plane's surface point
+// Where no plane fits on a cloud whose noise hides the plane at h (firstLayer): the points within
+// kLayerRadius widths of the line of sight, and of those the ones within kLayerDepth noises of the
+// shallowest (a Gaussian's outermost of some dozens lies about 2 sigma out, so the window takes the
+// near sheet's band whole and a far sheet only where the part is thinner than about 2 sigma), at
+// least kMinLayerPoints of them.
+constexpr double kLayerRadius = 0.5;
+constexpr double kLayerDepth = 4;
+constexpr int kMinLayerPoints = 5;
 
 // The axes of a plane's (u, v) coordinates, the same for every use of one patch.
 std::array<Vec3, 2> tangents(const Vec3& normal)
@@ -74,6 +83,18 @@ Vec3 leanInPlane(const Vec3& centroid, const Vec3& centre, const Vec3& normal)
 {
   const Vec3 lean = centroid - centre;
   return lean - lean.dot(normal) * normal;
+}
+// The weighted mean of a neighbourhood's offsets from its centre (zero without points).
+Vec3 weightedMean(const std::vector<Vec3>& offsets, const std::vector<double>& weights)
+{
+  double total = 0;
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t i = 0; i < offsets.size(); ++i)
+  {
+    total += weights[i];
+    sum += weights[i] * offsets[i];
+  }
+  return total > 0 ? Vec3(sum / total) : Vec3::Zero();
 }
 } // namespace
 
@@ -336,7 +357,12 @@ PointSurface::Patch PointSurface::fitPatch(int id) const
   if (this->flatScale(centre, around, patch, this->TypicalScale) < 0 &&
     this->flatScale(centre, around, patch, 0, this->TypicalScale) < 0)
   {
-    return Patch();
+    // No plane: the weighted centroid of the last neighbourhood tried, inside the thin part's curve,
+    // gives firstLayer its line of sight.
+    Patch none;
+    none.centre = centre;
+    none.plane.centroid = centre + weightedMean(around.offsets, around.weights);
+    return none;
   }
   finishPatch(around, patch);
   return patch;
@@ -423,7 +449,7 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
   Patch patch = this->patchAt(nearest.element);
   if (!(patch.width > 0))
   {
-    return SourcePoint();
+    return this->firstLayer(x, nearest, patch.plane.centroid);
   }
   // The patch's point stands for the points around x while x's foot lies near it and its neighbours
   // spread evenly around (full trust). A foot further out (over a sampling hole) or a point that leans
@@ -457,6 +483,59 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
   p.normal = plane.normal;
   p.side = 0;
   p.trust = trust;
+  return p;
+}
+
+SourcePoint PointSurface::firstLayer(const Vec3& x, const SourcePoint& nearest, const Vec3& inside) const
+{
+  const Scale& finest = *this->Scales.front();
+  const double d = (x - inside).norm();
+  if (this->TypicalScale == 0 || !(d > 1e-9 * finest.width))
+  {
+    return SourcePoint();
+  }
+  // The line of sight runs from the points' centroid (inside the part's curve) towards x: from the
+  // nearest point it would run along the noise wherever x lies within it.
+  const Vec3 n = (x - inside) / d;
+  const double radius = kLayerRadius * finest.width, depth = kLayerDepth * this->TypicalNoise;
+  // The points near that line, from a ball about the nearest point that reaches the layer's depth
+  // and as far back past x: where the line meets points beyond x too (x in a fold, between parts),
+  // the layer starts behind x and puts it inside, and the caller's closed field decides.
+  thread_local std::vector<double> depths;
+  depths.clear();
+  double shallowest = std::numeric_limits<double>::infinity();
+  const double reach = std::sqrt(radius * radius + (radius + depth) * (radius + depth));
+  finest.grid.forEachWithin(nearest.point, reach, [&](int, const Vec3& q) {
+    const Vec3 v = x - q;
+    const double t = v.dot(n);
+    if (v.squaredNorm() - t * t <= radius * radius)
+    {
+      depths.push_back(t);
+      shallowest = std::min(shallowest, t);
+    }
+  });
+  double sum = 0;
+  int count = 0;
+  for (const double t : depths)
+  {
+    if (t <= shallowest + depth)
+    {
+      sum += t;
+      ++count;
+    }
+  }
+  if (count < kMinLayerPoints)
+  {
+    return SourcePoint();
+  }
+  // A negative mean: x lies within the layer, deeper than its middle.
+  const double mean = sum / count;
+  SourcePoint p = nearest;
+  p.point = x - mean * n;
+  p.squaredDistance = mean * mean;
+  p.normal = n;
+  p.side = 0;
+  p.beyondEstimate = true;
   return p;
 }
 

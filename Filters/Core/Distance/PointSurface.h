@@ -9,8 +9,9 @@
 // 2 h or 4 h (over a quarter or a sixteenth of the points: a wider fit averages as many points, not
 // more), from the width at which most of the cloud's points look flat (finer only where none from it
 // fits). Where no plane fits, nothing is found and the caller's grid decides: no points or no flat
-// neighbourhood (a part thinner than h), or x's foot beyond the points on one side of it (a gap's
-// rim), which fades the answer's trust out.
+// neighbourhood (a part thinner than h; on a noisy cloud, the points x's line of sight meets first
+// speak for it instead), or x's foot beyond the points on one side of it (a gap's rim), which fades
+// the answer's trust out.
 #ifndef ShrinkWrap_PointSurface_h
 #define ShrinkWrap_PointSurface_h
 
@@ -67,7 +68,7 @@ private:
     Vec3 centre = Vec3::Zero();
     Plane plane;
     Eigen::Matrix<double, 6, 1> quadric = Eigen::Matrix<double, 6, 1>::Zero(); // height(u, v), in widths
-    double width = 0; // 0: no plane fits at any scale
+    double width = 0; // 0: no plane fits at any scale (then plane.centroid is the points' centroid)
     bool surrounded = false; // it leans, but its points lie all around its centre (no rim beside it)
   };
   struct Neighbourhood // the points within the cutoff of a centre: offsets from it, weights
@@ -108,6 +109,15 @@ private:
   // The patch around `centre` at one scale; false where no plane fits.
   bool fitAround(const Vec3& centre, const Scale& scale, Patch& patch) const;
   Patch fitPatch(int id) const; // around point id, at the finest scale that fits from the typical one
+  // Where no plane fits around x's nearest point (a part thinner than the fit's widths) on a cloud
+  // whose noise hides the plane at h: the nearest point is the noise's outermost, and the closed
+  // field the caller would fall back on lies on the noise's outer envelope, 1.5-1.9 sigma out at
+  // 200,000 points (RESULTS.md, 2026-11-29). Instead, the mean depth of the points that the line
+  // from `inside` (the centroid of the points around the nearest) through x meets first, for the
+  // caller to take only where it lies beyond that closed field (in a fold narrower than the line's
+  // neighbourhood it would lie at the fold's mouth); nothing found on a clean cloud, or where fewer
+  // than a handful lie there.
+  SourcePoint firstLayer(const Vec3& x, const SourcePoint& nearest, const Vec3& inside) const;
   bool onRim(const Vec3& centre, int from, Vec3& onPlane) const; // see rims(); scales from `from` on
   // How far x's surface point on the patch may be trusted, 0 to 1; 0 also where x's foot lies too far
   // from the patch's centre for the patch to speak for it.

@@ -46,6 +46,10 @@ DistanceSample TargetDistance::sample(const Vec3& x) const
   DistanceSample near;
   near.value = sign * distance;
   near.gradient = distance > 1e-9 * this->Cell ? Vec3(sign * (x - p.point) / distance) : far.gradient;
+  if (p.beyondEstimate && near.value < far.value)
+  {
+    return far;
+  }
   const double w = std::clamp((reach - std::abs(far.value)) / this->Cell, 0.0, 1.0) * std::clamp(p.trust, 0.0, 1.0);
   if (w >= 1)
   {

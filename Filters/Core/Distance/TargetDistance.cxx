@@ -46,7 +46,7 @@ DistanceSample TargetDistance::sample(const Vec3& x) const
   DistanceSample near;
   near.value = sign * distance;
   near.gradient = distance > 1e-9 * this->Cell ? Vec3(sign * (x - p.point) / distance) : far.gradient;
-  if (p.beyondEstimate && near.value < far.value)
+  if (p.beyondEstimate && near.value < far.value) // a noisy cloud's first layer only deepens the closing
   {
     return far;
   }

@@ -84,18 +84,6 @@ Vec3 leanInPlane(const Vec3& centroid, const Vec3& centre, const Vec3& normal)
   const Vec3 lean = centroid - centre;
   return lean - lean.dot(normal) * normal;
 }
-// The weighted mean of a neighbourhood's offsets from its centre (zero without points).
-Vec3 weightedMean(const std::vector<Vec3>& offsets, const std::vector<double>& weights)
-{
-  double total = 0;
-  Vec3 sum = Vec3::Zero();
-  for (std::size_t i = 0; i < offsets.size(); ++i)
-  {
-    total += weights[i];
-    sum += weights[i] * offsets[i];
-  }
-  return total > 0 ? Vec3(sum / total) : Vec3::Zero();
-}
 } // namespace
 
 PointSurface::Scale::Scale(std::vector<Vec3> sample, double w)
@@ -163,11 +151,12 @@ bool PointSurface::fit(const Neighbourhood& around, Plane& plane)
     sum += w * d;
     moments += w * d * d.transpose();
   }
+  const Vec3 mean = total > 0 ? Vec3(sum / total) : Vec3::Zero();
+  plane.centroid = around.centre + mean;
   if (!(total >= kMinWeight))
   {
     return false;
   }
-  const Vec3 mean = sum / total;
   const Eigen::Matrix3d covariance = moments / total - mean * mean.transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes;
   axes.computeDirect(covariance);
@@ -176,7 +165,6 @@ bool PointSurface::fit(const Neighbourhood& around, Plane& plane)
   {
     return false;
   }
-  plane.centroid = around.centre + mean;
   plane.normal = axes.eigenvectors().col(0).normalized();
   return true;
 }
@@ -357,11 +345,11 @@ PointSurface::Patch PointSurface::fitPatch(int id) const
   if (this->flatScale(centre, around, patch, this->TypicalScale) < 0 &&
     this->flatScale(centre, around, patch, 0, this->TypicalScale) < 0)
   {
-    // No plane: the weighted centroid of the last neighbourhood tried, inside the thin part's curve,
-    // gives firstLayer its line of sight.
+    // No plane: the weighted centroid of the last neighbourhood tried (fit keeps it), inside the thin
+    // part's curve, gives firstLayer its line of sight.
     Patch none;
     none.centre = centre;
-    none.plane.centroid = centre + weightedMean(around.offsets, around.weights);
+    none.plane.centroid = patch.plane.centroid;
     return none;
   }
   finishPatch(around, patch);

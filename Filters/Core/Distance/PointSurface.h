@@ -85,7 +85,8 @@ private:
     PointGrid grid; // of `points`
   };
   void gather(const Vec3& centre, const Scale& scale, Neighbourhood& around) const;
-  // The plane fitted to a neighbourhood; false where none fits.
+  // The plane fitted to a neighbourhood; false where none fits (plane.centroid, the points' weighted
+  // centroid, is set either way).
   static bool fit(const Neighbourhood& around, Plane& plane);
   // The quadric over the patch's plane fitted to the neighbourhood (the plane alone cuts through a
   // curved surface: a bias of about h^2 times the curvature); zero where the points do not pin one.

@@ -113,15 +113,16 @@ PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double wid
       this->Scales[s] = std::make_unique<const Scale>(std::move(sample), width * (1 << s));
     }
   });
-  this->Blocks = std::vector<std::atomic<Block*>>(all.size() / Block::kSize + 1);
+  this->Slots = std::vector<std::atomic<std::uint32_t>>(all.size());
+  this->Chunks = std::vector<std::atomic<Chunk*>>(all.size() / Chunk::kSize + 1);
   this->measureTypical();
 }
 
 PointSurface::~PointSurface()
 {
-  for (auto& block : this->Blocks)
+  for (auto& chunk : this->Chunks)
   {
-    delete block.load();
+    delete chunk.load();
   }
 }
 
@@ -358,29 +359,31 @@ PointSurface::Patch PointSurface::fitPatch(int id) const
 
 PointSurface::Patch PointSurface::patchAt(int id) const
 {
-  std::atomic<Block*>& slot = this->Blocks[id / Block::kSize];
-  Block* block = slot.load(std::memory_order_acquire);
-  if (!block)
+  enum : std::uint32_t { Empty, Busy, First }; // a slot from First on holds the patch's place + First
+  std::atomic<std::uint32_t>& slot = this->Slots[id];
+  if (const std::uint32_t held = slot.load(std::memory_order_acquire); held >= First)
   {
-    auto made = std::make_unique<Block>();
-    if (slot.compare_exchange_strong(block, made.get(), std::memory_order_acq_rel))
-    {
-      block = made.release();
-    } // else another thread made it first: `block` is that one
-  }
-  enum : std::uint8_t { Empty, Busy, Ready };
-  std::atomic<std::uint8_t>& state = block->states[id % Block::kSize];
-  if (state.load(std::memory_order_acquire) == Ready)
-  {
-    return block->patches[id % Block::kSize];
+    const std::uint32_t place = held - First;
+    return this->Chunks[place / Chunk::kSize].load(std::memory_order_acquire)->patches[place % Chunk::kSize];
   }
   const Patch patch = this->fitPatch(id);
   // The first thread to finish stores it; one that meets another storing keeps its own equal copy.
-  std::uint8_t expected = Empty;
-  if (state.compare_exchange_strong(expected, Busy, std::memory_order_acq_rel))
+  std::uint32_t expected = Empty;
+  if (slot.compare_exchange_strong(expected, Busy, std::memory_order_acq_rel))
   {
-    block->patches[id % Block::kSize] = patch;
-    state.store(Ready, std::memory_order_release);
+    const std::uint32_t place = this->Stored.fetch_add(1, std::memory_order_relaxed);
+    std::atomic<Chunk*>& chunkSlot = this->Chunks[place / Chunk::kSize];
+    Chunk* chunk = chunkSlot.load(std::memory_order_acquire);
+    if (!chunk)
+    {
+      auto made = std::make_unique<Chunk>();
+      if (chunkSlot.compare_exchange_strong(chunk, made.get(), std::memory_order_acq_rel))
+      {
+        chunk = made.release();
+      } // else another thread made it first: `chunk` is that one
+    }
+    chunk->patches[place % Chunk::kSize] = patch;
+    slot.store(place + First, std::memory_order_release);
   }
   return patch;
 }

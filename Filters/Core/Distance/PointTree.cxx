@@ -73,6 +73,7 @@ void buildSubtree(std::vector<Entry>& entries, int begin, int end, int depth, in
 PointTree::PointTree(const std::vector<Vec3>& points, int leafSize)
 {
   std::vector<Entry> entries;
+  entries.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     if (points[i].allFinite())
@@ -100,9 +101,11 @@ PointTree::PointTree(const std::vector<Vec3>& points, int leafSize)
     parallelFor(0, 2, 1, [&](vtkIdType b, vtkIdType e) {
       for (vtkIdType h = b; h < e; ++h)
       {
+        halves[h].reserve(2 * n / leafSize + 2); // leaves of at least leafSize / 2 of n / 2 points
         buildSubtree(entries, h == 0 ? 0 : middle, h == 0 ? middle : n, 1, leafSize, halves[h]);
       }
     });
+    this->Nodes.reserve(1 + halves[0].size() + halves[1].size());
     this->Nodes.push_back({ box, 1, 0 });
     this->Nodes.resize(3);
     for (int h = 0; h < 2; ++h)

@@ -40,8 +40,30 @@ bool PointSource::outline(const GridLattice& lattice, const Progress& progress, 
       cells.push_back(lattice.index(c[0], c[1], c[2]));
     }
   }
-  std::sort(cells.begin(), cells.end());
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  // Sorted and each once: through a bitmap of the cells where it is not much larger than the points
+  // (a dense cloud: at 200,000 points the sort took a fifth of the field), else by sorting.
+  const auto nodes = static_cast<std::size_t>(lattice.nodeCount());
+  if (nodes / 64 <= 4 * cells.size())
+  {
+    std::vector<std::uint64_t> bits(nodes / 64 + 1, 0);
+    for (const std::int64_t c : cells)
+    {
+      bits[static_cast<std::size_t>(c) / 64] |= std::uint64_t(1) << (c % 64);
+    }
+    cells.clear();
+    for (std::size_t w = 0; w < bits.size(); ++w)
+    {
+      for (std::uint64_t word = bits[w]; word != 0; word &= word - 1)
+      {
+        cells.push_back(static_cast<std::int64_t>(64 * w + static_cast<std::size_t>(__builtin_ctzll(word))));
+      }
+    }
+  }
+  else
+  {
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  }
   return progress.report(1);
 }
 

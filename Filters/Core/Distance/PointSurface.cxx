@@ -417,16 +417,7 @@ SourcePoint PointSurface::nearestPoint(const Vec3& x, double maxSquaredDistance)
   const double radius = std::min(finest.width, std::sqrt(maxSquaredDistance));
   SourcePoint p;
   p.sure = false; // a point has no sides
-  finest.grid.forEachWithin(x, radius, [&](int id, const Vec3& point) {
-    const double d2 = (point - x).squaredNorm();
-    if (!p.found || d2 < p.squaredDistance)
-    {
-      p.found = true;
-      p.squaredDistance = d2;
-      p.point = point;
-      p.element = id;
-    }
-  });
+  p.found = finest.grid.nearest(x, radius, p.element, p.point, p.squaredDistance);
   return p.found ? p : this->Points->closestPoint(x, maxSquaredDistance);
 }
 
@@ -496,7 +487,7 @@ SourcePoint PointSurface::firstLayer(const Vec3& x, const SourcePoint& nearest, 
   depths.clear();
   double shallowest = std::numeric_limits<double>::infinity();
   const double reach = std::sqrt(radius * radius + (radius + depth) * (radius + depth));
-  finest.grid.forEachWithin(nearest.point, reach, [&](int, const Vec3& q) {
+  finest.grid.forEachWithinNearLine(nearest.point, reach, x, n, radius, [&](int, const Vec3& q) {
     const Vec3 v = x - q;
     const double t = v.dot(n);
     if (v.squaredNorm() - t * t <= radius * radius)

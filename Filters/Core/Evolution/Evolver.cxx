@@ -415,8 +415,8 @@ int Evolver::holdBack(std::vector<Vec3>& next) const
     int moved = 0;
     for (const auto& t : triangles)
     {
-      if (smallestAngle(next[t[0]], next[t[1]], next[t[2]]) < this->Settings.minAngle &&
-        smallestAngle(y[t[0]], y[t[1]], y[t[2]]) >= this->Settings.minAngle)
+      if (smallestAngleBelow(next[t[0]], next[t[1]], next[t[2]], this->Settings.minAngle) &&
+        !smallestAngleBelow(y[t[0]], y[t[1]], y[t[2]], this->Settings.minAngle))
       {
         for (int v : t)
         {

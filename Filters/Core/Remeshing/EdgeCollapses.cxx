@@ -40,7 +40,7 @@ bool keepsNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, in
     }
     const Vec3 before = (x[u] - x[v]).cross(x[w] - x[v]);
     const Vec3 after = (x[u] - m).cross(x[w] - m);
-    if (smallestAngle(x[v], x[u], x[w]) < settings.maxAngle)
+    if (smallestAngleBelow(x[v], x[u], x[w], settings.maxAngle))
     {
       keeps = !settings.orientDegenerate || after.dot(fan) > 0;
       return;
@@ -122,7 +122,7 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
   };
   for (const auto& t : triangles)
   {
-    if (nv - collapses <= 4 || !(smallestAngle(x[t[0]], x[t[1]], x[t[2]]) < settings.maxAngle))
+    if (nv - collapses <= 4 || !smallestAngleBelow(x[t[0]], x[t[1]], x[t[2]], settings.maxAngle))
     {
       continue;
     }

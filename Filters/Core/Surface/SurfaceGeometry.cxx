@@ -110,6 +110,17 @@ double smallestSine(const Vec3& a, const Vec3& b, const Vec3& c)
 }
 } // namespace
 
+bool smallestAngleBelow(const Vec3& a, const Vec3& b, const Vec3& c, double angle)
+{
+  // The smallest angle is at most 60 degrees, where the sine grows with the angle; a sine clearly
+  // above the bound's (beyond both computations' rounding) is an angle above it.
+  if (angle > 0 && angle <= M_PI / 3 && smallestSine(a, b, c) >= std::sin(angle) * (1 + 1e-9))
+  {
+    return false;
+  }
+  return smallestAngle(a, b, c) < angle;
+}
+
 SmallestAngle smallestAngle(const SurfaceMesh& mesh, const std::vector<Vec3>& x)
 {
   const auto& tris = mesh.triangles();

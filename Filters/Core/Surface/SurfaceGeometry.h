@@ -31,6 +31,10 @@ std::array<double, 3> triangleAngles(const Vec3& a, const Vec3& b, const Vec3& c
 // The smallest angle of a triangle (radians): the one opposite its shortest edge, one atan2.
 double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c);
 
+// Whether that angle is below `angle`: the smallest angle's sine first, whose bound settles all
+// but the triangles within a hair of it without an atan2 (the hold-back asks it of every triangle).
+bool smallestAngleBelow(const Vec3& a, const Vec3& b, const Vec3& c, double angle);
+
 struct SmallestAngle
 {
   double angle = M_PI; // radians

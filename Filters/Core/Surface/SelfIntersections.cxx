@@ -126,24 +126,35 @@ double roundingMargin(const TriangleGrid& grid)
   return 1e-7 * grid.cell();
 }
 
+// Two triangles cross only where both boxes hold the crossing point: boxes at the positions tested,
+// widened by the margin against rounding, rule a pair out before its planes are asked.
+Box widened(Box box, double margin)
+{
+  box.min -= Vec3::Constant(margin);
+  box.max += Vec3::Constant(margin);
+  return box;
+}
+
 // The pairs of triangles that cross at x, found through the grid (boxes at x or containing them).
 std::vector<std::pair<int, int>> crossingPairs(
   const TriangleGrid& grid, const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
 {
+  const double margin = roundingMargin(grid);
   std::vector<Facet> facets(triangles.size());
+  std::vector<Box> boxes(triangles.size()); // at x: the grid's may be wider (swept over a step)
   parallelFor(0, static_cast<vtkIdType>(triangles.size()), kCheapGrain, [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType t = b; t < e; ++t)
     {
       facets[t] = facetOf(x, triangles[t]);
+      boxes[t] = widened(boxOf(facets[t].p), margin);
     }
   });
-  const double margin = roundingMargin(grid);
   std::vector<std::pair<int, int>> pairs;
   std::mutex lock;
   parallelFor(0, grid.bucketCount(), [&](int begin, int end) {
     std::vector<std::pair<int, int>> crossing;
     grid.forEachOverlappingPair(begin, end, [&](int s, int t) {
-      if (crosses(facets[s], facets[t], margin))
+      if (boxes[s].overlaps(boxes[t]) && crosses(facets[s], facets[t], margin))
       {
         crossing.emplace_back(s, t);
       }
@@ -163,10 +174,13 @@ std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid, const 
   for (int s : changed)
   {
     const Facet fs = facetOf(x, triangles[s]);
-    grid.forEachNear(boxOf(fs.p), [&](int t) {
+    const Box near = widened(boxOf(fs.p), margin);
+    grid.forEachNear(near, [&](int t) {
       // A pair of two changed triangles is met twice; it is kept once.
       const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
-      if (t != s && !counted && crosses(fs, facetOf(x, triangles[t]), margin))
+      const auto& c = triangles[t];
+      if (t != s && !counted && near.overlaps(widened(boxOf(std::array<Vec3, 3>{ x[c[0]], x[c[1]], x[c[2]] }), margin)) &&
+        crosses(fs, facetOf(x, c), margin))
       {
         pairs.emplace_back(s, t);
       }

@@ -353,12 +353,13 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
   const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, !box.empty());
   if (target && use.points) // as StartSession
   {
-    const std::vector<Vec3> points = wrappedPoints(target, meshes.meshes.empty() ? nullptr : meshes.meshes[0], use);
+    std::vector<Vec3> points = wrappedPoints(target, meshes.meshes.empty() ? nullptr : meshes.meshes[0], use);
     if (checkPoints(points))
     {
       box = use.polygons ? box : Box();
       box.extend(Box::around(points));
-      const PointCloud& cloud = this->MeasuredCloud(target, points.size(), [&] { return measureCloud(points); });
+      // The points go to the cloud (no copy): they are not needed here after it.
+      const PointCloud& cloud = this->MeasuredCloud(target, points.size(), [&] { return measureCloud(std::move(points)); });
       chosen = withPointSizes(chosen, box, cloud, givenStart);
     }
     else if (!use.polygons) // no points: no field (StartSession says why); beside polygons: the polygons'
@@ -399,6 +400,14 @@ const PointCloud& vtkShrinkWrapFilter::MeasuredCloud(
     c = { target, key, this->InputGeometry, points, std::make_unique<PointCloud>(measure()) };
   }
   return *c.cloud;
+}
+
+const PointCloud* vtkShrinkWrapFilter::CachedCloud(vtkDataObject* target) const
+{
+  const CloudCache& c = this->Cloud;
+  const bool current = target && c.cloud && c.target == target && c.key == target->GetMTime() &&
+    c.geometry == this->InputGeometry && c.cloud->points && c.cloud->points->points().size() == c.points;
+  return current ? c.cloud.get() : nullptr;
 }
 
 vtkMTimeType vtkShrinkWrapFilter::SessionKey()
@@ -482,11 +491,17 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
     vtkErrorMacro(<< valid.message() << ".");
     return false;
   }
-  // The points wrapped, if any: all the target's, or those beside its polygons (issue #13).
-  std::vector<Vec3> points;
+  // The points wrapped, if any: all the target's, or those beside its polygons (issue #13); those of
+  // the cloud RequestInformation measured, if it did.
+  std::vector<Vec3> converted;
+  const PointCloud* cached = use.points ? this->CachedCloud(targetData) : nullptr;
+  const std::vector<Vec3>& points = cached ? cached->points->points() : converted;
+  if (use.points && !cached)
+  {
+    converted = wrappedPoints(targetData, target, use);
+  }
   if (use.points)
   {
-    points = wrappedPoints(targetData, target, use);
     if (use.polygons && points.empty())
     {
       vtkWarningMacro("Input Geometry is Polygons and Points, but every point of the target lies on its polygons: "

@@ -430,6 +430,9 @@ private:
   // cache).
   const shrinkwrap::PointCloud& MeasuredCloud(
     vtkDataObject* target, std::size_t points, const std::function<shrinkwrap::PointCloud()>& measure);
+  // The cloud measured for the target as it is, if any (then its points are the target's wrapped
+  // points: RequestInformation measured them, and RequestData need not convert them again).
+  const shrinkwrap::PointCloud* CachedCloud(vtkDataObject* target) const;
   bool TargetAndField(vtkInformationVector** inputVector, vtkDataObject*& target, vtkImageData*& field);
   // One surface: of the target, or of all a composite target's blocks together.
   void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);

@@ -14,10 +14,10 @@
 namespace shrinkwrap
 {
 
-PointSource::PointSource(const std::vector<Vec3>& points)
-  : Points(points)
-  , Bounds(Box::around(points))
-  , Tree(points)
+PointSource::PointSource(std::vector<Vec3> points)
+  : Points(std::move(points))
+  , Bounds(Box::around(this->Points))
+  , Tree(this->Points)
 {
 }
 

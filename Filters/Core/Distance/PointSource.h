@@ -15,7 +15,7 @@ namespace shrinkwrap
 class PointSource : public DistanceSource
 {
 public:
-  explicit PointSource(const std::vector<Vec3>& points);
+  explicit PointSource(std::vector<Vec3> points); // taken over where moved in: no copy
   Box bounds() const override { return this->Bounds; }
   // The cells that hold a point (Algorithm 2's outline reduces to that).
   bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const override;

@@ -86,10 +86,9 @@ Vec3 leanInPlane(const Vec3& centroid, const Vec3& centre, const Vec3& normal)
 }
 } // namespace
 
-PointSurface::Scale::Scale(std::vector<Vec3> sample, double w)
+PointSurface::Scale::Scale(const std::vector<Vec3>& sample, double w)
   : width(w)
-  , points(std::move(sample))
-  , grid(this->points, kCutoff * w)
+  , grid(sample, kCutoff * w)
 {
 }
 
@@ -101,6 +100,11 @@ PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double wid
   parallelFor(0, kScales, 1, [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType s = b; s < e; ++s)
     {
+      if (s == 0) // every point: binned from the source's own (a copy is fresh memory, and slow)
+      {
+        this->Scales[s] = std::make_unique<const Scale>(all, width);
+        continue;
+      }
       std::vector<Vec3> sample;
       sample.reserve(all.size() >> (2 * s));
       for (std::size_t i = 0; i < all.size(); ++i)
@@ -110,7 +114,7 @@ PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double wid
           sample.push_back(all[i]);
         }
       }
-      this->Scales[s] = std::make_unique<const Scale>(std::move(sample), width * (1 << s));
+      this->Scales[s] = std::make_unique<const Scale>(sample, width * (1 << s));
     }
   });
   this->Slots = std::vector<std::atomic<std::uint32_t>>(all.size());
@@ -262,7 +266,7 @@ int PointSurface::flatScale(const Vec3& centre, Neighbourhood& around, Patch& pa
 
 void PointSurface::measureTypical()
 {
-  const std::vector<Vec3>& all = this->Scales.front()->points;
+  const std::vector<Vec3>& all = this->Points->points();
   const int none = static_cast<int>(this->Scales.size());
   std::vector<int> sample;
   for (std::size_t i = 0; i < all.size(); ++i)
@@ -539,7 +543,7 @@ bool PointSurface::onRim(const Vec3& centre, int from, Vec3& onPlane) const
 std::vector<std::array<Vec3, 2>> PointSurface::rims(double /*creaseAngle: points have no creases*/) const
 {
   const Scale& finest = *this->Scales.front();
-  const std::vector<Vec3>& all = finest.points;
+  const std::vector<Vec3>& all = this->Points->points();
   // Noisy points look flat only at a coarser width: the search starts at the one most of them need
   // (each finer width's fit fails on them first; at 200,000 noisy points, a 0.6 s search).
   const int from = this->typicalFlatScale();

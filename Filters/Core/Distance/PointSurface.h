@@ -79,10 +79,9 @@ private:
   };
   struct Scale // a width and the points binned for it: at 2^s h, one point in 4^s (as many per fit)
   {
-    Scale(std::vector<Vec3> sample, double w);
+    Scale(const std::vector<Vec3>& sample, double w);
     double width;
-    std::vector<Vec3> points;
-    PointGrid grid; // of `points`
+    PointGrid grid; // of the sample, by its indices (the finest: all points, by input index)
   };
   void gather(const Vec3& centre, const Scale& scale, Neighbourhood& around) const;
   // The plane fitted to a neighbourhood; false where none fits (plane.centroid, the points' weighted

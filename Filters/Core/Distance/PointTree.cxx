@@ -10,11 +10,7 @@ namespace shrinkwrap
 
 namespace
 {
-struct Entry // a point with its input index, moved together while the tree splits them
-{
-  Vec3 point;
-  int id;
-};
+using Entry = PointTree::Entry;
 
 Box boxOf(const std::vector<Entry>& entries, int begin, int end)
 {
@@ -72,7 +68,7 @@ void buildSubtree(std::vector<Entry>& entries, int begin, int end, int depth, in
 
 PointTree::PointTree(const std::vector<Vec3>& points, int leafSize)
 {
-  std::vector<Entry> entries;
+  std::vector<Entry>& entries = this->Sorted;
   entries.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
@@ -130,13 +126,6 @@ PointTree::PointTree(const std::vector<Vec3>& points, int leafSize)
       }
     }
   }
-  this->Sorted.reserve(entries.size());
-  this->Ids.reserve(entries.size());
-  for (const Entry& e : entries)
-  {
-    this->Sorted.push_back(e.point);
-    this->Ids.push_back(e.id);
-  }
 }
 
 PointTree::Hit PointTree::nearest(const Vec3& x, double maxSquaredDistance, bool apart) const
@@ -144,10 +133,10 @@ PointTree::Hit PointTree::nearest(const Vec3& x, double maxSquaredDistance, bool
   Hit hit;
   hit.squaredDistance = maxSquaredDistance;
   searchNearest(this->Nodes, x, hit.squaredDistance, [&](int k) {
-    const double d2 = (this->Sorted[k] - x).squaredNorm();
+    const double d2 = (this->Sorted[k].point - x).squaredNorm();
     if (d2 < hit.squaredDistance && (d2 > 0 || !apart))
     {
-      hit = { this->Ids[k], d2 };
+      hit = { this->Sorted[k].id, d2 };
     }
   });
   return hit;

@@ -18,6 +18,12 @@ class PointTree
 public:
   explicit PointTree(const std::vector<Vec3>& points, int leafSize = 8);
 
+  struct Entry // a point with its input index: split together while building, then kept in leaf order
+  {
+    Vec3 point;
+    int id;
+  };
+
   struct Hit
   {
     int id = -1; // the input point's index; -1: none within the search radius
@@ -30,8 +36,7 @@ public:
 
 private:
   std::vector<HierarchyNode> Nodes;
-  std::vector<Vec3> Sorted; // the points in leaf order
-  std::vector<int> Ids;     // their input indices
+  std::vector<Entry> Sorted; // built in place: no copy (fresh memory costs as much as the build)
 };
 
 } // namespace shrinkwrap

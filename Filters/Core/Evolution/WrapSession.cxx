@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace shrinkwrap
 {
@@ -213,10 +214,10 @@ double PointCloud::noise() const
   return this->surface ? this->surface->typicalNoise() : 0.0;
 }
 
-PointCloud measureCloud(const std::vector<Vec3>& points)
+PointCloud measureCloud(std::vector<Vec3> points)
 {
   PointCloud cloud;
-  cloud.points = std::make_shared<const PointSource>(points);
+  cloud.points = std::make_shared<const PointSource>(std::move(points));
   cloud.spacing = cloud.points->medianNeighbourDistance();
   if (cloud.spacing > 0)
   {

@@ -92,7 +92,7 @@ struct PointCloud
   double spacing = 0;
   double noise() const; // PointSurface::typicalNoise, 0 without a surface
 };
-PointCloud measureCloud(const std::vector<Vec3>& points);
+PointCloud measureCloud(std::vector<Vec3> points);
 // Settings for a wrap onto `cloud` within `box`: the automatic sizes (0) from its spacing: the Target
 // Edge Length (coarser on a noisy cloud), and the Gap Size, at least a few cells of the field computed
 // for them (placed with `givenStart`) so that the grid resolves the closing; with the automatic gap, a

@@ -16,7 +16,9 @@ namespace shrinkwrap
 class PointTree
 {
 public:
-  explicit PointTree(const std::vector<Vec3>& points, int leafSize = 8);
+  // Leaves of up to 32 points: against 8, a third less to build and a sixth less per query on 200,000
+  // noisy points (fewer nodes to test and to fault in; a leaf's points are read in one run of memory).
+  explicit PointTree(const std::vector<Vec3>& points, int leafSize = 32);
 
   struct Entry // a point with its input index: split together while building, then kept in leaf order
   {

@@ -60,8 +60,7 @@ public:
       }
     };
     const Bin home = this->binOf(x);
-    const std::int64_t homeKey = key(home);
-    if (const Slot* bin = this->find(homeKey))
+    if (const Slot* bin = this->find(key(home)))
     {
       scan(bin);
     }
@@ -71,6 +70,8 @@ public:
       for (std::int64_t j = low[1]; j <= high[1]; ++j)
         for (std::int64_t i = low[0]; i <= high[0]; ++i)
         {
+          // A bin no nearer than the best holds no point that would replace it (a tie keeps the first
+          // found; with none found yet, a point at exactly the radius still counts).
           const Bin b{ i, j, k };
           const double d2 = this->squaredDistanceToBin(x, b);
           if (b == home || d2 > best || (found >= 0 && d2 == best))

@@ -392,21 +392,20 @@ int vtkShrinkWrapFilter::RequestUpdateExtent(
 const PointCloud& vtkShrinkWrapFilter::MeasuredCloud(
   vtkDataObject* target, std::size_t points, const std::function<PointCloud()>& measure)
 {
-  const vtkMTimeType key = target ? target->GetMTime() : 0;
-  CloudCache& c = this->Cloud;
-  if (!target || !c.cloud || c.target != target || c.key != key || c.geometry != this->InputGeometry ||
-    c.points != points)
+  if (const PointCloud* cached = this->CachedCloud(target); cached && this->Cloud.points == points)
   {
-    c = { target, key, this->InputGeometry, points, std::make_unique<PointCloud>(measure()) };
+    return *cached;
   }
+  CloudCache& c = this->Cloud;
+  c = { target, target ? target->GetMTime() : 0, this->InputGeometry, points, std::make_unique<PointCloud>(measure()) };
   return *c.cloud;
 }
 
 const PointCloud* vtkShrinkWrapFilter::CachedCloud(vtkDataObject* target) const
 {
   const CloudCache& c = this->Cloud;
-  const bool current = target && c.cloud && c.target == target && c.key == target->GetMTime() &&
-    c.geometry == this->InputGeometry && c.cloud->points && c.cloud->points->points().size() == c.points;
+  const bool current =
+    target && c.cloud && c.target == target && c.key == target->GetMTime() && c.geometry == this->InputGeometry;
   return current ? c.cloud.get() : nullptr;
 }
 

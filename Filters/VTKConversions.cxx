@@ -164,9 +164,10 @@ PolygonMeshes polygonMeshes(vtkDataObject* input)
   return found;
 }
 
-std::vector<Vec3> pointsOf(vtkDataObject* input)
+template <typename Points>
+Points pointsOf(vtkDataObject* input)
 {
-  std::vector<Vec3> points;
+  Points points;
   for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
   {
     const vtkIdType n = leaf->GetNumberOfPoints();
@@ -181,7 +182,11 @@ std::vector<Vec3> pointsOf(vtkDataObject* input)
   return points;
 }
 
-std::vector<Vec3> loosePointsOf(vtkPolyData* mesh)
+template std::vector<Vec3> pointsOf<std::vector<Vec3>>(vtkDataObject*);
+template PointList pointsOf<PointList>(vtkDataObject*);
+
+template <typename Points>
+Points loosePointsOf(vtkPolyData* mesh)
 {
   const vtkIdType n = mesh->GetNumberOfPoints();
   std::vector<char> used(n, 0);
@@ -196,7 +201,7 @@ std::vector<Vec3> loosePointsOf(vtkPolyData* mesh)
   };
   forEachCell(mesh->GetPolys(), mark);
   forEachCell(mesh->GetStrips(), mark);
-  std::vector<Vec3> points;
+  Points points;
   for (vtkIdType i = 0; i < n; ++i)
   {
     if (!used[i])
@@ -208,6 +213,9 @@ std::vector<Vec3> loosePointsOf(vtkPolyData* mesh)
   }
   return points;
 }
+
+template std::vector<Vec3> loosePointsOf<std::vector<Vec3>>(vtkPolyData*);
+template PointList loosePointsOf<PointList>(vtkPolyData*);
 
 Geometry chooseGeometry(int inputGeometry, bool hasPolygons)
 {

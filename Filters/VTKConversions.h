@@ -5,6 +5,7 @@
 #define ShrinkWrap_VTKConversions_h
 
 #include "DistanceGrid.h"
+#include "PointTree.h"
 #include "TargetDistance.h"
 #include "SelfIntersections.h"
 #include "Status.h"
@@ -39,12 +40,15 @@ struct PolygonMeshes
 };
 PolygonMeshes polygonMeshes(vtkDataObject* input);
 
-// Every point of every leaf of an input, for an input measured as points (issue #13).
-std::vector<Vec3> pointsOf(vtkDataObject* input);
+// Every point of every leaf of an input, for an input measured as points (issue #13): Points is a
+// std::vector<Vec3> (Mesh Signed Distance's soup) or a PointList (a wrap's cloud).
+template <typename Points>
+Points pointsOf(vtkDataObject* input);
 
 // The points of a mesh that none of its polygons or strips uses (its vertices' and lines' points, and
 // points of no cell): the points beside its surface.
-std::vector<Vec3> loosePointsOf(vtkPolyData* mesh);
+template <typename Points>
+Points loosePointsOf(vtkPolyData* mesh);
 
 // Which parts of an input a filter takes, by its InputGeometry (0 automatic: the polygons when it has
 // any, else the points; 1 polygons, 2 points, 3 both).

@@ -289,7 +289,7 @@ int vtkMeshSignedDistance::RequestInformation(
     }
     if (use.points)
     {
-      bounds.extend(shrinkwrap::Box::around(convert::pointsOf(input)));
+      bounds.extend(shrinkwrap::Box::around(convert::pointsOf<std::vector<shrinkwrap::Vec3>>(input)));
     }
   }
   shrinkwrap::GridLattice lattice;
@@ -540,7 +540,7 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
     {
       for (vtkPolyData* mesh : meshes)
       {
-        const std::vector<shrinkwrap::Vec3> loose = convert::loosePointsOf(mesh);
+        const std::vector<shrinkwrap::Vec3> loose = convert::loosePointsOf<std::vector<shrinkwrap::Vec3>>(mesh);
         cloud.points.insert(cloud.points.end(), loose.begin(), loose.end());
       }
       if (cloud.points.empty())
@@ -552,7 +552,7 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
     }
     else
     {
-      cloud.points = convert::pointsOf(data);
+      cloud.points = convert::pointsOf<std::vector<shrinkwrap::Vec3>>(data);
     }
     if (const shrinkwrap::Status status = shrinkwrap::checkPoints(cloud.points); !status)
     {

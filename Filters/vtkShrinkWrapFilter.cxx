@@ -133,9 +133,9 @@ Status pointFields(const PointCloud& cloud, const std::shared_ptr<const Triangle
 }
 
 // The points a wrap takes of its target: beside its polygons, the points none of them uses; else all.
-std::vector<Vec3> wrappedPoints(vtkDataObject* target, vtkPolyData* mesh, const convert::Geometry& use)
+PointList wrappedPoints(vtkDataObject* target, vtkPolyData* mesh, const convert::Geometry& use)
 {
-  return use.polygons ? (mesh ? convert::loosePointsOf(mesh) : std::vector<Vec3>()) : convert::pointsOf(target);
+  return use.polygons ? (mesh ? convert::loosePointsOf<PointList>(mesh) : PointList()) : convert::pointsOf<PointList>(target);
 }
 } // namespace
 
@@ -353,7 +353,7 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
   const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, !box.empty());
   if (target && use.points) // as StartSession
   {
-    std::vector<Vec3> points = wrappedPoints(target, meshes.meshes.empty() ? nullptr : meshes.meshes[0], use);
+    PointList points = wrappedPoints(target, meshes.meshes.empty() ? nullptr : meshes.meshes[0], use);
     if (checkPoints(points))
     {
       box = use.polygons ? box : Box();
@@ -492,9 +492,9 @@ bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* fie
   }
   // The points wrapped, if any: all the target's, or those beside its polygons (issue #13); those of
   // the cloud RequestInformation measured, if it did.
-  std::vector<Vec3> converted;
+  PointList converted;
   const PointCloud* cached = use.points ? this->CachedCloud(targetData) : nullptr;
-  const std::vector<Vec3>& points = cached ? cached->points->points() : converted;
+  const PointList& points = cached ? cached->points->points() : converted;
   if (use.points && !cached)
   {
     converted = wrappedPoints(targetData, target, use);

@@ -6,12 +6,17 @@
 namespace shrinkwrap
 {
 
-PointGrid::PointGrid(const std::vector<Vec3>& points, double cell)
-  : Origin(Box::around(points).min)
-  , Cell(cell)
+PointGrid::PointGrid(const Vec3* points, std::size_t count, double cell)
+  : Cell(cell)
 {
-  std::vector<std::pair<std::int64_t, int>> keyed(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
+  Box box;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    box.extend(points[i]);
+  }
+  this->Origin = box.min;
+  LargeVector<std::pair<std::int64_t, int>> keyed(count);
+  for (std::size_t i = 0; i < count; ++i)
   {
     keyed[i] = { key(this->binOf(points[i])), static_cast<int>(i) };
   }

@@ -4,6 +4,7 @@
 #define ShrinkWrap_PointGrid_h
 
 #include "Box.h"
+#include "HugePages.h"
 
 #include <array>
 #include <cmath>
@@ -18,7 +19,11 @@ class PointGrid
 {
 public:
   // `cell` > 0: the bin size; radius queries are fastest with a cell about the radius.
-  PointGrid(const std::vector<Vec3>& points, double cell);
+  template <typename Points> // a std::vector<Vec3> or a PointList (PointTree.h)
+  PointGrid(const Points& points, double cell)
+    : PointGrid(points.data(), points.size(), cell)
+  {
+  }
 
   // Calls f(index, point) for every point within `radius` of x.
   template <typename F>
@@ -88,6 +93,8 @@ public:
   }
 
 private:
+  PointGrid(const Vec3* points, std::size_t count, double cell);
+
   using Bin = std::array<std::int64_t, 3>;
   template <typename Keep, typename F>
   void forEachWithinBins(const Vec3& x, double radius, Keep&& keep, F&& f) const
@@ -159,8 +166,8 @@ private:
 
   Vec3 Origin;
   double Cell;
-  std::vector<int> Order;   // point indices sorted by bin
-  std::vector<Vec3> Sorted; // the points in that order: a bin's lie side by side in memory
+  LargeVector<int> Order;   // point indices sorted by bin
+  LargeVector<Vec3> Sorted; // the points in that order: a bin's lie side by side in memory
   std::vector<Slot> Bins; // at most half full
   std::size_t Mask = 0;
 };

@@ -14,7 +14,12 @@
 namespace shrinkwrap
 {
 
-PointSource::PointSource(std::vector<Vec3> points)
+PointSource::PointSource(const std::vector<Vec3>& points)
+  : PointSource(PointList(points.begin(), points.end()))
+{
+}
+
+PointSource::PointSource(PointList points)
   : Points(std::move(points))
   , Bounds(Box::around(this->Points))
   , Tree(this->Points)
@@ -74,7 +79,7 @@ double medianNeighbourDistance(const std::vector<Vec3>& points)
 
 double PointSource::medianNeighbourDistance() const
 {
-  const std::vector<Vec3>& points = this->Points;
+  const PointList& points = this->Points;
   const PointTree& tree = this->Tree;
   const std::size_t n = points.size();
   if (n < 2)

@@ -15,18 +15,19 @@ namespace shrinkwrap
 class PointSource : public DistanceSource
 {
 public:
-  explicit PointSource(std::vector<Vec3> points); // taken over where moved in: no copy
+  explicit PointSource(PointList points); // taken over where moved in: no copy
+  explicit PointSource(const std::vector<Vec3>& points); // copied (a soup's points, a test's)
   Box bounds() const override { return this->Bounds; }
   // The cells that hold a point (Algorithm 2's outline reduces to that).
   bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const override;
   // The nearest input point; side 0 and not sure: a point has no inside.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
-  const std::vector<Vec3>& points() const { return this->Points; }
+  const PointList& points() const { return this->Points; }
   // See medianNeighbourDistance below (from this source's tree).
   double medianNeighbourDistance() const;
 
 private:
-  std::vector<Vec3> Points;
+  PointList Points;
   Box Bounds;
   PointTree Tree;
 };

@@ -86,7 +86,7 @@ Vec3 leanInPlane(const Vec3& centroid, const Vec3& centre, const Vec3& normal)
 }
 } // namespace
 
-PointSurface::Scale::Scale(const std::vector<Vec3>& sample, double w)
+PointSurface::Scale::Scale(const PointList& sample, double w)
   : width(w)
   , grid(sample, kCutoff * w)
 {
@@ -95,7 +95,7 @@ PointSurface::Scale::Scale(const std::vector<Vec3>& sample, double w)
 PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double width)
   : Points(std::move(points))
 {
-  const std::vector<Vec3>& all = this->Points->points();
+  const PointList& all = this->Points->points();
   this->Scales.resize(kScales);
   parallelFor(0, kScales, 1, [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType s = b; s < e; ++s)
@@ -105,7 +105,7 @@ PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double wid
         this->Scales[s] = std::make_unique<const Scale>(all, width);
         continue;
       }
-      std::vector<Vec3> sample;
+      PointList sample;
       sample.reserve(all.size() >> (2 * s));
       for (std::size_t i = 0; i < all.size(); ++i)
       {
@@ -117,7 +117,7 @@ PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double wid
       this->Scales[s] = std::make_unique<const Scale>(sample, width * (1 << s));
     }
   });
-  this->Slots = std::vector<std::atomic<std::uint32_t>>(all.size());
+  this->Slots = LargeVector<std::atomic<std::uint32_t>>(all.size());
   this->Chunks = std::vector<std::atomic<Chunk*>>(all.size() / Chunk::kSize + 1);
   this->measureTypical();
 }
@@ -266,7 +266,7 @@ int PointSurface::flatScale(const Vec3& centre, Neighbourhood& around, Patch& pa
 
 void PointSurface::measureTypical()
 {
-  const std::vector<Vec3>& all = this->Points->points();
+  const PointList& all = this->Points->points();
   const int none = static_cast<int>(this->Scales.size());
   std::vector<int> sample;
   for (std::size_t i = 0; i < all.size(); ++i)
@@ -543,7 +543,7 @@ bool PointSurface::onRim(const Vec3& centre, int from, Vec3& onPlane) const
 std::vector<std::array<Vec3, 2>> PointSurface::rims(double /*creaseAngle: points have no creases*/) const
 {
   const Scale& finest = *this->Scales.front();
-  const std::vector<Vec3>& all = this->Points->points();
+  const PointList& all = this->Points->points();
   // Noisy points look flat only at a coarser width: the search starts at the one most of them need
   // (each finer width's fit fails on them first; at 200,000 noisy points, a 0.6 s search).
   const int from = this->typicalFlatScale();

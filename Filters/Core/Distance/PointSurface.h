@@ -79,7 +79,7 @@ private:
   };
   struct Scale // a width and the points binned for it: at 2^s h, one point in 4^s (as many per fit)
   {
-    Scale(const std::vector<Vec3>& sample, double w);
+    Scale(const PointList& sample, double w);
     double width;
     PointGrid grid; // of the sample, by its indices (the finest: all points, by input index)
   };
@@ -139,7 +139,7 @@ private:
     static constexpr int kSize = 1024;
     Patch patches[kSize];
   };
-  mutable std::vector<std::atomic<std::uint32_t>> Slots;
+  mutable LargeVector<std::atomic<std::uint32_t>> Slots;
   mutable std::vector<std::atomic<Chunk*>> Chunks;
   mutable std::atomic<std::uint32_t> Stored{ 0 };
 };

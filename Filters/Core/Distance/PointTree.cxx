@@ -12,7 +12,7 @@ namespace
 {
 using Entry = PointTree::Entry;
 
-Box boxOf(const std::vector<Entry>& entries, int begin, int end)
+Box boxOf(const LargeVector<Entry>& entries, int begin, int end)
 {
   Box box;
   for (int k = begin; k < end; ++k)
@@ -23,7 +23,7 @@ Box boxOf(const std::vector<Entry>& entries, int begin, int end)
 }
 
 // Splits entries [begin, end) at their median along the longest side of their box; the middle.
-int splitAtMedian(std::vector<Entry>& entries, int begin, int end, const Box& box)
+int splitAtMedian(LargeVector<Entry>& entries, int begin, int end, const Box& box)
 {
   int axis = 0;
   box.size().maxCoeff(&axis);
@@ -34,7 +34,7 @@ int splitAtMedian(std::vector<Entry>& entries, int begin, int end, const Box& bo
 }
 
 // The subtree over entries [begin, end) as nodes appended to `nodes`, its root first.
-void buildSubtree(std::vector<Entry>& entries, int begin, int end, int depth, int leafSize,
+void buildSubtree(LargeVector<Entry>& entries, int begin, int end, int depth, int leafSize,
   std::vector<HierarchyNode>& nodes)
 {
   struct Range
@@ -66,11 +66,11 @@ void buildSubtree(std::vector<Entry>& entries, int begin, int end, int depth, in
 }
 } // namespace
 
-PointTree::PointTree(const std::vector<Vec3>& points, int leafSize)
+PointTree::PointTree(const Vec3* points, std::size_t count, int leafSize)
 {
-  std::vector<Entry>& entries = this->Sorted;
-  entries.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
+  LargeVector<Entry>& entries = this->Sorted;
+  entries.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
   {
     if (points[i].allFinite())
     {

@@ -6,6 +6,7 @@
 #define ShrinkWrap_PointTree_h
 
 #include "BoxHierarchy.h"
+#include "HugePages.h"
 
 #include <limits>
 #include <vector>
@@ -13,12 +14,19 @@
 namespace shrinkwrap
 {
 
+// A cloud's points: megabytes at a scan's size, so in huge pages where they are first written.
+using PointList = LargeVector<Vec3>;
+
 class PointTree
 {
 public:
   // Leaves of up to 32 points: against 8, a third less to build and a sixth less per query on 200,000
   // noisy points (fewer nodes to test and to fault in; a leaf's points are read in one run of memory).
-  explicit PointTree(const std::vector<Vec3>& points, int leafSize = 32);
+  template <typename Points> // a std::vector<Vec3> or a PointList
+  explicit PointTree(const Points& points, int leafSize = 32)
+    : PointTree(points.data(), points.size(), leafSize)
+  {
+  }
 
   struct Entry // a point with its input index: split together while building, then kept in leaf order
   {
@@ -37,8 +45,10 @@ public:
     bool apart = false) const;
 
 private:
+  PointTree(const Vec3* points, std::size_t count, int leafSize);
+
   std::vector<HierarchyNode> Nodes;
-  std::vector<Entry> Sorted; // built in place: no copy (fresh memory costs as much as the build)
+  LargeVector<Entry> Sorted; // built in place: no copy (fresh memory costs as much as the build)
 };
 
 } // namespace shrinkwrap

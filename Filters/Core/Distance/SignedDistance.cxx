@@ -324,7 +324,10 @@ Status checkSoup(const TriangleSoup& soup)
   return {};
 }
 
-Status checkPoints(const std::vector<Vec3>& points)
+namespace
+{
+template <typename Points>
+Status checkPointsIn(const Points& points)
 {
   if (points.empty())
     return Status::failure("the input has no polygons, no 3-D cells and no points, so nothing to measure from");
@@ -339,6 +342,17 @@ Status checkPoints(const std::vector<Vec3>& points)
     return Status::failure("the points have coordinates beyond +-1e30, which distances in float cannot hold; "
                            "scale or translate them first");
   return {};
+}
+} // namespace
+
+Status checkPoints(const std::vector<Vec3>& points)
+{
+  return checkPointsIn(points);
+}
+
+Status checkPoints(const PointList& points)
+{
+  return checkPointsIn(points);
 }
 
 Status checkMemory(const GridLattice& lattice, const SignedDistanceSettings& settings)

@@ -94,6 +94,7 @@ SignedDistanceResult computeUnionDistance(const TriangleSoup& soup, const std::v
 // Why points have no distance field, if they have none: none at all, or NaN, infinite or out-of-range
 // coordinates.
 Status checkPoints(const std::vector<Vec3>& points);
+Status checkPoints(const PointList& points);
 
 // Why a soup has no distance field, if it has none: no triangles, NaN or infinite coordinates,
 // coordinates beyond kLargestCoordinate, or only degenerate triangles.

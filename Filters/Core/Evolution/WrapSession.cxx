@@ -170,7 +170,7 @@ Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const Distan
   return {};
 }
 
-Status checkPointsEnclose(const std::vector<Vec3>& points)
+Status checkPointsEnclose(const PointList& points)
 {
   Vec3 mean = Vec3::Zero();
   for (const Vec3& p : points)
@@ -214,7 +214,7 @@ double PointCloud::noise() const
   return this->surface ? this->surface->typicalNoise() : 0.0;
 }
 
-PointCloud measureCloud(std::vector<Vec3> points)
+PointCloud measureCloud(PointList points)
 {
   PointCloud cloud;
   cloud.points = std::make_shared<const PointSource>(std::move(points));

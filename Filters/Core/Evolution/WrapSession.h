@@ -81,7 +81,7 @@ Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const Distan
   const WrapSettings& settings, WrapFields& fields);
 // Why points cannot be wrapped, if they cannot: they coincide, or lie on a line or in a plane (within
 // 1e-6 of their extent), so they enclose nothing. (checkPoints first: finite, not empty.)
-Status checkPointsEnclose(const std::vector<Vec3>& points);
+Status checkPointsEnclose(const PointList& points);
 // A point cloud as a wrap takes it, measured once: the nearest point, the median neighbour distance
 // (medianNeighbourDistance) and the surface the points sample (PointSurface, fitted at a few spacings;
 // none where the spacing is 0), which also measures their noise.
@@ -92,7 +92,7 @@ struct PointCloud
   double spacing = 0;
   double noise() const; // PointSurface::typicalNoise, 0 without a surface
 };
-PointCloud measureCloud(std::vector<Vec3> points);
+PointCloud measureCloud(PointList points);
 // Settings for a wrap onto `cloud` within `box`: the automatic sizes (0) from its spacing: the Target
 // Edge Length (coarser on a noisy cloud), and the Gap Size, at least a few cells of the field computed
 // for them (placed with `givenStart`) so that the grid resolves the closing; with the automatic gap, a

@@ -428,7 +428,7 @@ void noisyPointLength()
   for (const double sigma : { 0.0, 0.0025 * 2 * std::sqrt(3.0) })
   {
     const std::vector<Vec3> points = testing::spherePoints(20000, sigma, sigma > 0 ? 4 : 3);
-    const PointCloud cloud = measureCloud(points);
+    const PointCloud cloud = measureCloud(PointList(points.begin(), points.end()));
     const Box box = Box::around(points);
     const double divisor = box.diagonal() / withPointSizes(WrapSettings(), box, cloud, false).targetLength;
     std::cout << "sphere, noise " << sigma << ": spacing " << cloud.spacing << ", noise " << cloud.noise()
@@ -448,7 +448,7 @@ void sparseCloudResolution()
   for (const double sigma : { 0.0, 0.0025 * 2 * std::sqrt(3.0) })
   {
     const std::vector<Vec3> points = testing::spherePoints(sigma > 0 ? 100000 : 50000, sigma, sigma > 0 ? 6 : 5);
-    const PointCloud cloud = measureCloud(points);
+    const PointCloud cloud = measureCloud(PointList(points.begin(), points.end()));
     const Box box = Box::around(points);
     const WrapSettings defaults;
     const WrapSettings s = withPointSizes(defaults, box, cloud, false);

@@ -1,0 +1,60 @@
+#include "HugePages.h"
+
+#include <cstdint>
+#include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace shrinkwrap
+{
+
+namespace
+{
+std::size_t roundedUp(std::size_t bytes)
+{
+  return (bytes + kHugePage - 1) / kHugePage * kHugePage;
+}
+} // namespace
+
+#if defined(__linux__)
+void* mapHugePages(std::size_t bytes)
+{
+  // mmap aligns to small pages only: a huge page more is mapped, and the ends beyond the aligned
+  // range given back.
+  const std::size_t size = roundedUp(bytes);
+  void* mapped = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (mapped == MAP_FAILED)
+  {
+    throw std::bad_alloc();
+  }
+  const auto start = reinterpret_cast<std::uintptr_t>(mapped);
+  const std::uintptr_t aligned = (start + kHugePage - 1) / kHugePage * kHugePage;
+  if (aligned > start)
+  {
+    munmap(mapped, aligned - start);
+  }
+  if (const std::uintptr_t end = start + size + kHugePage; end > aligned + size)
+  {
+    munmap(reinterpret_cast<void*>(aligned + size), end - (aligned + size));
+  }
+  void* p = reinterpret_cast<void*>(aligned);
+  madvise(p, size, MADV_HUGEPAGE); // a hint: without huge pages the buffer works the same
+  return p;
+}
+
+void unmapHugePages(void* p, std::size_t bytes)
+{
+  munmap(p, roundedUp(bytes));
+}
+#else
+void* mapHugePages(std::size_t)
+{
+  throw std::bad_alloc();
+}
+
+void unmapHugePages(void*, std::size_t) {}
+#endif
+
+} // namespace shrinkwrap

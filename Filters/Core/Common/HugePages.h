@@ -1,0 +1,72 @@
+// Large buffers in 2 MiB pages. Fresh memory is faulted in a page at a time on its first write, and on
+// a virtual machine a 4 KiB page's fault is slow: 3.8 ms a MB here, where the k-d tree, the bins and
+// the copy of a 200,000-point cloud were a tenth of its wrap (RESULTS.md, 2026-11-29). Linux's
+// transparent huge pages, asked for by madvise (Debian's default mode), fault in 2 MiB at a time for
+// about the cost of one small page. Buffers under kMinHugeBuffer, and systems without them, get
+// ordinary memory.
+#ifndef ShrinkWrap_HugePages_h
+#define ShrinkWrap_HugePages_h
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace shrinkwrap
+{
+
+constexpr std::size_t kHugePage = std::size_t(2) << 20;
+// A quarter of a huge page and up: one fault of 2 MiB costs less than 64 of 4 KiB.
+constexpr std::size_t kMinHugeBuffer = kHugePage / 4;
+
+// Pages of at least `bytes` (rounded up to huge pages), aligned to kHugePage and advised to be huge;
+// throws std::bad_alloc when none are left. Only where hugePagesAvailable().
+void* mapHugePages(std::size_t bytes);
+void unmapHugePages(void* p, std::size_t bytes);
+constexpr bool hugePagesAvailable()
+{
+#if defined(__linux__)
+  return true;
+#else
+  return false;
+#endif
+}
+
+// A std::allocator that maps buffers of kMinHugeBuffer and more in huge pages (which of the two a
+// buffer came from follows from its size alone).
+template <typename T>
+struct HugePageAllocator
+{
+  using value_type = T;
+  HugePageAllocator() = default;
+  template <typename U>
+  HugePageAllocator(const HugePageAllocator<U>&) noexcept
+  {
+  }
+  static bool huge(std::size_t n) { return hugePagesAvailable() && n * sizeof(T) >= kMinHugeBuffer; }
+  T* allocate(std::size_t n)
+  {
+    return huge(n) ? static_cast<T*>(mapHugePages(n * sizeof(T))) : std::allocator<T>().allocate(n);
+  }
+  void deallocate(T* p, std::size_t n)
+  {
+    huge(n) ? unmapHugePages(p, n * sizeof(T)) : std::allocator<T>().deallocate(p, n);
+  }
+  template <typename U>
+  bool operator==(const HugePageAllocator<U>&) const noexcept
+  {
+    return true;
+  }
+  template <typename U>
+  bool operator!=(const HugePageAllocator<U>&) const noexcept
+  {
+    return false;
+  }
+};
+
+// A vector for buffers that may be megabytes: a cloud's points, trees and bins.
+template <typename T>
+using LargeVector = std::vector<T, HugePageAllocator<T>>;
+
+} // namespace shrinkwrap
+
+#endif

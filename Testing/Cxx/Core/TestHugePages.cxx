@@ -1,0 +1,64 @@
+// LargeVector (HugePages.h): buffers from a quarter of a huge page up come from their own mapping,
+// aligned to a huge page; smaller ones from the ordinary heap. Growing across that size, shrinking
+// back, copying and moving keep every value (a buffer freed the wrong way would crash here, and
+// under AddressSanitizer would be reported).
+#include "HugePages.h"
+#include "TestUtilities.h"
+
+#include <cstdint>
+
+namespace
+{
+using namespace shrinkwrap;
+
+bool holdsIndices(const LargeVector<std::int64_t>& v)
+{
+  for (std::size_t i = 0; i < v.size(); ++i)
+  {
+    if (v[i] != static_cast<std::int64_t>(i))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool alignedToHugePage(const void* p)
+{
+  return reinterpret_cast<std::uintptr_t>(p) % kHugePage == 0;
+}
+} // namespace
+
+int TestHugePages(int, char*[])
+{
+  const std::size_t large = kMinHugeBuffer / sizeof(std::int64_t); // the first size in huge pages
+  LargeVector<std::int64_t> v;
+  // Grown one by one from empty to three huge pages: reallocated across the threshold many times.
+  for (std::size_t i = 0; i < 3 * kHugePage / sizeof(std::int64_t) + 5; ++i)
+  {
+    v.push_back(static_cast<std::int64_t>(i));
+  }
+  SW_CHECK(holdsIndices(v), "growing across the threshold keeps every value");
+  SW_CHECK(!hugePagesAvailable() || alignedToHugePage(v.data()), "a large buffer starts on a huge page");
+
+  v.resize(large - 1);
+  v.shrink_to_fit(); // back to the heap
+  SW_CHECK(v.size() == large - 1 && holdsIndices(v), "shrinking below the threshold keeps every value");
+
+  LargeVector<std::int64_t> copy = v;
+  copy.resize(2 * large);
+  for (std::size_t i = large - 1; i < copy.size(); ++i)
+  {
+    copy[i] = static_cast<std::int64_t>(i);
+  }
+  SW_CHECK(holdsIndices(copy) && holdsIndices(v), "a copy grown past the threshold is its own");
+  SW_CHECK(!hugePagesAvailable() || alignedToHugePage(copy.data()), "so is its buffer");
+
+  LargeVector<std::int64_t> moved = std::move(copy);
+  SW_CHECK(moved.size() == 2 * large && holdsIndices(moved), "a move takes the buffer over");
+
+  // A buffer of exactly the threshold and one of many huge pages, written to the last element.
+  LargeVector<char> edge(kMinHugeBuffer, 1), big(5 * kHugePage + 3, 2);
+  SW_CHECK(edge.back() == 1 && big.back() == 2 && big.front() == 2, "the whole buffer is usable");
+  return testing::finish("TestHugePages");
+}

@@ -1,6 +1,7 @@
 #include "HugePages.h"
 
 #include <cstdint>
+#include <limits>
 #include <new>
 
 #if defined(__linux__)
@@ -23,6 +24,10 @@ void* mapHugePages(std::size_t bytes)
 {
   // mmap aligns to small pages only: a huge page more is mapped, and the ends beyond the aligned
   // range given back.
+  if (bytes > std::numeric_limits<std::size_t>::max() - 2 * kHugePage) // the rounding would wrap
+  {
+    throw std::bad_alloc();
+  }
   const std::size_t size = roundedUp(bytes);
   void* mapped = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (mapped == MAP_FAILED)

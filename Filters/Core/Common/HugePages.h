@@ -1,9 +1,9 @@
 // Large buffers in 2 MiB pages. Fresh memory is faulted in a page at a time on its first write, and on
-// a virtual machine a 4 KiB page's fault is slow: 3.8 ms a MB here, where the k-d tree, the bins and
-// the copy of a 200,000-point cloud were a tenth of its wrap (RESULTS.md, 2026-11-29). Linux's
-// transparent huge pages, asked for by madvise (Debian's default mode), fault in 2 MiB at a time for
-// about the cost of one small page. Buffers under kMinHugeBuffer, and systems without them, get
-// ordinary memory.
+// a virtual machine a 4 KiB page's fault is slow: 3-4 ms a MB here, where the copy, the k-d tree and
+// the bins of a 200,000-point cloud took some 3,500 faults of a 0.7 s wrap (RESULTS.md, 2026-11-29,
+// 11:10). Linux's transparent huge pages, asked for by madvise (Debian's default mode), fault in 2 MiB
+// at a time for about the cost of one small page. Buffers under kMinHugeBuffer, and systems other than
+// Linux, get ordinary memory; without huge pages a mapped buffer works the same.
 #ifndef ShrinkWrap_HugePages_h
 #define ShrinkWrap_HugePages_h
 
@@ -19,10 +19,10 @@ constexpr std::size_t kHugePage = std::size_t(2) << 20;
 constexpr std::size_t kMinHugeBuffer = kHugePage / 4;
 
 // Pages of at least `bytes` (rounded up to huge pages), aligned to kHugePage and advised to be huge;
-// throws std::bad_alloc when none are left. Only where hugePagesAvailable().
+// throws std::bad_alloc when none are left. Only where mapsLargeBuffers().
 void* mapHugePages(std::size_t bytes);
 void unmapHugePages(void* p, std::size_t bytes);
-constexpr bool hugePagesAvailable()
+constexpr bool mapsLargeBuffers()
 {
 #if defined(__linux__)
   return true;
@@ -42,7 +42,7 @@ struct HugePageAllocator
   HugePageAllocator(const HugePageAllocator<U>&) noexcept
   {
   }
-  static bool huge(std::size_t n) { return hugePagesAvailable() && n * sizeof(T) >= kMinHugeBuffer; }
+  static bool huge(std::size_t n) { return mapsLargeBuffers() && n * sizeof(T) >= kMinHugeBuffer; }
   T* allocate(std::size_t n)
   {
     return huge(n) ? static_cast<T*>(mapHugePages(n * sizeof(T))) : std::allocator<T>().allocate(n);

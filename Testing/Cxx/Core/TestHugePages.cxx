@@ -1,11 +1,13 @@
 // LargeVector (HugePages.h): buffers from a quarter of a huge page up come from their own mapping,
 // aligned to a huge page; smaller ones from the ordinary heap. Growing across that size, shrinking
 // back, copying and moving keep every value (a buffer freed the wrong way would crash here, and
-// under AddressSanitizer would be reported).
+// under AddressSanitizer would be reported); sizes no mapping can hold throw std::bad_alloc.
 #include "HugePages.h"
 #include "TestUtilities.h"
 
 #include <cstdint>
+#include <limits>
+#include <new>
 
 namespace
 {
@@ -39,7 +41,7 @@ int TestHugePages(int, char*[])
     v.push_back(static_cast<std::int64_t>(i));
   }
   SW_CHECK(holdsIndices(v), "growing across the threshold keeps every value");
-  SW_CHECK(!hugePagesAvailable() || alignedToHugePage(v.data()), "a large buffer starts on a huge page");
+  SW_CHECK(!mapsLargeBuffers() || alignedToHugePage(v.data()), "a large buffer starts on a huge page");
 
   v.resize(large - 1);
   v.shrink_to_fit(); // back to the heap
@@ -52,7 +54,7 @@ int TestHugePages(int, char*[])
     copy[i] = static_cast<std::int64_t>(i);
   }
   SW_CHECK(holdsIndices(copy) && holdsIndices(v), "a copy grown past the threshold is its own");
-  SW_CHECK(!hugePagesAvailable() || alignedToHugePage(copy.data()), "so is its buffer");
+  SW_CHECK(!mapsLargeBuffers() || alignedToHugePage(copy.data()), "so is its buffer");
 
   LargeVector<std::int64_t> moved = std::move(copy);
   SW_CHECK(moved.size() == 2 * large && holdsIndices(moved), "a move takes the buffer over");
@@ -60,5 +62,21 @@ int TestHugePages(int, char*[])
   // A buffer of exactly the threshold and one of many huge pages, written to the last element.
   LargeVector<char> edge(kMinHugeBuffer, 1), big(5 * kHugePage + 3, 2);
   SW_CHECK(edge.back() == 1 && big.back() == 2 && big.front() == 2, "the whole buffer is usable");
+
+  // Sizes no mapping can hold are refused, not rounded into a small one: one whose rounding up to
+  // huge pages would wrap, one beyond the address space.
+  for (const std::size_t bytes : { std::numeric_limits<std::size_t>::max() - 100, std::size_t(1) << 50 })
+  {
+    bool refused = false;
+    try
+    {
+      unmapHugePages(mapHugePages(bytes), bytes);
+    }
+    catch (const std::bad_alloc&)
+    {
+      refused = true;
+    }
+    SW_CHECK(refused, "mapping " << bytes << " bytes throws std::bad_alloc");
+  }
   return testing::finish("TestHugePages");
 }

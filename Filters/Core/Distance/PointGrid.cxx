@@ -6,15 +6,10 @@
 namespace shrinkwrap
 {
 
-PointGrid::PointGrid(const Vec3* points, std::size_t count, double cell)
-  : Cell(cell)
+PointGrid::PointGrid(const Vec3* points, std::size_t count, const Vec3& origin, double cell)
+  : Origin(origin)
+  , Cell(cell)
 {
-  Box box;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    box.extend(points[i]);
-  }
-  this->Origin = box.min;
   LargeVector<std::pair<std::int64_t, int>> keyed(count);
   for (std::size_t i = 0; i < count; ++i)
   {

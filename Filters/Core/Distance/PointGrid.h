@@ -21,7 +21,7 @@ public:
   // `cell` > 0: the bin size; radius queries are fastest with a cell about the radius.
   template <typename Points> // a std::vector<Vec3> or a PointList (PointTree.h)
   PointGrid(const Points& points, double cell)
-    : PointGrid(points.data(), points.size(), cell)
+    : PointGrid(points.data(), points.size(), Box::around(points).min, cell)
   {
   }
 
@@ -93,7 +93,7 @@ public:
   }
 
 private:
-  PointGrid(const Vec3* points, std::size_t count, double cell);
+  PointGrid(const Vec3* points, std::size_t count, const Vec3& origin, double cell);
 
   using Bin = std::array<std::int64_t, 3>;
   template <typename Keep, typename F>

@@ -1,7 +1,9 @@
 #include "HugePages.h"
 
 #include <cstdint>
+#include <fstream>
 #include <limits>
+#include <string>
 #include <new>
 
 #if defined(__linux__)
@@ -20,6 +22,18 @@ std::size_t roundedUp(std::size_t bytes)
 } // namespace
 
 #if defined(__linux__)
+bool hugePagesOffered()
+{
+  // A function's constant, fixed at its first call: the allocator frees a buffer the way it mapped it.
+  static const bool offered = []
+  {
+    std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
+    std::string line;
+    return std::getline(mode, line) && line.find("[never]") == std::string::npos;
+  }();
+  return offered;
+}
+
 void* mapHugePages(std::size_t bytes)
 {
   // mmap aligns to small pages only: a huge page more is mapped, and the ends beyond the aligned
@@ -54,6 +68,11 @@ void unmapHugePages(void* p, std::size_t bytes)
   munmap(p, roundedUp(bytes));
 }
 #else
+bool hugePagesOffered()
+{
+  return false;
+}
+
 void* mapHugePages(std::size_t)
 {
   throw std::bad_alloc();

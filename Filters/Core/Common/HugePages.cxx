@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <fstream>
 #include <limits>
-#include <string>
 #include <new>
+#include <string>
 
 #if defined(__linux__)
 #include <sys/mman.h>

@@ -2,8 +2,8 @@
 // a virtual machine a 4 KiB page's fault is slow: 3-4 ms a MB here, where the copy, the k-d tree and
 // the bins of a 200,000-point cloud took 4,500 faults (some 55 ms) of a 0.7 s wrap (RESULTS.md,
 // 2026-11-29, 11:10). Linux's transparent huge pages, asked for by madvise (Debian's default mode), fault in 2 MiB
-// at a time for about the cost of one small page. Buffers under kMinHugeBuffer, and systems other than
-// Linux, get ordinary memory; without huge pages a mapped buffer works the same.
+// at a time for about the cost of one small page. Buffers under kMinHugeBuffer, systems other than
+// Linux, kernels that give no huge pages and AddressSanitizer builds get ordinary memory.
 #ifndef ShrinkWrap_HugePages_h
 #define ShrinkWrap_HugePages_h
 

@@ -21,10 +21,20 @@ std::size_t roundedUp(std::size_t bytes)
 }
 } // namespace
 
+#if defined(__SANITIZE_ADDRESS__)
+#define SHRINKWRAP_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SHRINKWRAP_ADDRESS_SANITIZER 1
+#endif
+#endif
+
 #if defined(__linux__)
-bool hugePagesOffered()
+bool mapsLargeBuffers()
 {
-  // A function's constant, fixed at its first call: the allocator frees a buffer the way it mapped it.
+#if defined(SHRINKWRAP_ADDRESS_SANITIZER)
+  return false;
+#else
   static const bool offered = []
   {
     std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
@@ -32,6 +42,7 @@ bool hugePagesOffered()
     return std::getline(mode, line) && line.find("[never]") == std::string::npos;
   }();
   return offered;
+#endif
 }
 
 void* mapHugePages(std::size_t bytes)
@@ -68,7 +79,7 @@ void unmapHugePages(void* p, std::size_t bytes)
   munmap(p, roundedUp(bytes));
 }
 #else
-bool hugePagesOffered()
+bool mapsLargeBuffers()
 {
   return false;
 }

@@ -22,27 +22,12 @@ constexpr std::size_t kMinHugeBuffer = kHugePage / 4;
 // throws std::bad_alloc when none are left. Only where mapsLargeBuffers().
 void* mapHugePages(std::size_t bytes);
 void unmapHugePages(void* p, std::size_t bytes);
-#if defined(__SANITIZE_ADDRESS__)
-#define SHRINKWRAP_ADDRESS_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define SHRINKWRAP_ADDRESS_SANITIZER 1
-#endif
-#endif
-// Not under AddressSanitizer, which checks the heap's bounds but not those of a mapping.
-constexpr bool mapsLargeBuffers()
-{
-#if defined(__linux__) && !defined(SHRINKWRAP_ADDRESS_SANITIZER)
-  return true;
-#else
-  return false;
-#endif
-}
-
-// Whether the kernel gives huge pages to a mapping that asks (transparent huge pages not "never");
-// read once. Without them a mapped buffer is faulted in anew at every wrap where the heap's is reused
-// (2% slower, RESULTS.md 2026-11-29 11:10), so large buffers stay on the heap.
-bool hugePagesOffered();
+// Whether buffers of kMinHugeBuffer and more are mapped: on Linux where the kernel gives huge pages to
+// a mapping that asks (transparent huge pages not "never"; read once, so a buffer is always freed the
+// way it was allocated), and not under AddressSanitizer, which checks the heap's bounds but not a
+// mapping's. Without huge pages a mapped buffer is faulted in anew at every wrap where the heap's is
+// reused (2% slower, RESULTS.md 2026-11-29 11:10).
+bool mapsLargeBuffers();
 
 // A std::allocator that maps buffers of kMinHugeBuffer and more in huge pages (which of the two a
 // buffer came from follows from its size alone).
@@ -55,10 +40,7 @@ struct HugePageAllocator
   HugePageAllocator(const HugePageAllocator<U>&) noexcept
   {
   }
-  static bool huge(std::size_t n)
-  {
-    return mapsLargeBuffers() && n * sizeof(T) >= kMinHugeBuffer && hugePagesOffered();
-  }
+  static bool huge(std::size_t n) { return n * sizeof(T) >= kMinHugeBuffer && mapsLargeBuffers(); }
   T* allocate(std::size_t n)
   {
     return huge(n) ? static_cast<T*>(mapHugePages(n * sizeof(T))) : std::allocator<T>().allocate(n);

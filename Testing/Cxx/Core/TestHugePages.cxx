@@ -1,7 +1,8 @@
 // LargeVector (HugePages.h): buffers from a quarter of a huge page up come from their own mapping,
-// aligned to a huge page; smaller ones from the ordinary heap. Growing across that size, shrinking
-// back, copying and moving keep every value (a buffer freed the wrong way would crash here, and
-// under AddressSanitizer would be reported); sizes no mapping can hold throw std::bad_alloc.
+// aligned to a huge page, where mapsLargeBuffers(); smaller ones, and all elsewhere, from the heap.
+// Growing across that size, shrinking back, copying and moving keep every value (a buffer freed the
+// wrong way would crash here, and under AddressSanitizer would be reported); sizes no mapping can hold
+// throw std::bad_alloc.
 #include "HugePages.h"
 #include "TestUtilities.h"
 
@@ -34,8 +35,7 @@ bool alignedToHugePage(const void* p)
 int TestHugePages(int, char*[])
 {
   const std::size_t large = kMinHugeBuffer / sizeof(std::int64_t); // the first size in huge pages
-  // Mapped only on Linux, outside AddressSanitizer, where the kernel offers huge pages; else the heap.
-  const bool mapped = mapsLargeBuffers() && hugePagesOffered();
+  const bool mapped = mapsLargeBuffers();
   LargeVector<std::int64_t> v;
   // Grown one by one from empty to three huge pages: reallocated across the threshold many times.
   for (std::size_t i = 0; i < 3 * kHugePage / sizeof(std::int64_t) + 5; ++i)

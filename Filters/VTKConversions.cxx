@@ -292,6 +292,21 @@ Box boundsOf(vtkDataSet* data)
   return box;
 }
 
+Box pointBounds(vtkDataObject* input)
+{
+  Box box;
+  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
+  {
+    for (vtkIdType i = 0; i < leaf->GetNumberOfPoints(); ++i)
+    {
+      Vec3 p;
+      leaf->GetPoint(i, p.data());
+      box.extend(p);
+    }
+  }
+  return box;
+}
+
 Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid)
 {
   vtkDataArray* values = image ? image->GetPointData()->GetArray(name) : nullptr;

@@ -289,7 +289,7 @@ int vtkMeshSignedDistance::RequestInformation(
     }
     if (use.points)
     {
-      bounds.extend(shrinkwrap::Box::around(convert::pointsOf<std::vector<shrinkwrap::Vec3>>(input)));
+      bounds.extend(convert::pointBounds(input));
     }
   }
   shrinkwrap::GridLattice lattice;

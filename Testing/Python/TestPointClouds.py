@@ -19,7 +19,8 @@ from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import reference, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkStaticCellLocator, vtkUnstructuredGrid
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkPolyData, vtkStaticCellLocator, vtkUnstructuredGrid
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 
 from checks import check, finish
 
@@ -245,6 +246,18 @@ check(field.GetFieldData().GetArray("Signed").GetValue(0) == 0 and (values >= 0)
       np.all(values >= exact - 1e-5 * h) and np.abs(values - exact).mean() < 0.1 * h,
       "Mesh Signed Distance of points: unsigned, never below the exact distance, mean error %.4f h"
       % (np.abs(values - exact).mean() / h))
+
+# The grid the information pass announces (from the points' bounds alone) is the one the field fills.
+algorithm = MeshSignedDistance(Input=cloud(points), Resolution=24).GetClientSideObject()
+algorithm.UpdateInformation()
+announced = algorithm.GetOutputInformation(0)
+announced = (announced.Get(vtkStreamingDemandDrivenPipeline.WHOLE_EXTENT()), announced.Get(vtkDataObject.ORIGIN()),
+             announced.Get(vtkDataObject.SPACING()))
+algorithm.Update()
+made = algorithm.GetOutput()
+check(announced == (made.GetExtent(), made.GetOrigin(), made.GetSpacing()),
+      "Mesh Signed Distance of points: the grid announced %s, the grid made %s"
+      % (announced, (made.GetExtent(), made.GetOrigin(), made.GetSpacing())))
 
 # Input Geometry: a sphere's triangles with three loose points (vertex cells) beside it. Polygons: the
 # signed field of the triangles alone; Points: the unsigned distance to the nearest of all points;

@@ -164,22 +164,40 @@ PolygonMeshes polygonMeshes(vtkDataObject* input)
   return found;
 }
 
+namespace
+{
+// f(leaf's point count) for each leaf, then f(p) for each of its points.
+template <typename Leaf, typename Point>
+void forEachPoint(vtkDataObject* input, Leaf&& leafFound, Point&& f)
+{
+  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
+  {
+    const vtkIdType n = leaf->GetNumberOfPoints();
+    leafFound(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      Vec3 p;
+      leaf->GetPoint(i, p.data());
+      f(p);
+    }
+  }
+}
+} // namespace
+
 template <typename Points>
 Points pointsOf(vtkDataObject* input)
 {
   Points points;
-  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
-  {
-    const vtkIdType n = leaf->GetNumberOfPoints();
-    points.reserve(points.size() + n);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double p[3];
-      leaf->GetPoint(i, p);
-      points.emplace_back(p[0], p[1], p[2]);
-    }
-  }
+  forEachPoint(
+    input, [&](vtkIdType n) { points.reserve(points.size() + n); }, [&](const Vec3& p) { points.push_back(p); });
   return points;
+}
+
+Box pointBounds(vtkDataObject* input)
+{
+  Box box;
+  forEachPoint(input, [](vtkIdType) {}, [&](const Vec3& p) { box.extend(p); });
+  return box;
 }
 
 template std::vector<Vec3> pointsOf<std::vector<Vec3>>(vtkDataObject*);
@@ -288,21 +306,6 @@ Box boundsOf(vtkDataSet* data)
   {
     box.extend(Vec3(b[0], b[2], b[4]));
     box.extend(Vec3(b[1], b[3], b[5]));
-  }
-  return box;
-}
-
-Box pointBounds(vtkDataObject* input)
-{
-  Box box;
-  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
-  {
-    for (vtkIdType i = 0; i < leaf->GetNumberOfPoints(); ++i)
-    {
-      Vec3 p;
-      leaf->GetPoint(i, p.data());
-      box.extend(p);
-    }
   }
   return box;
 }

@@ -80,7 +80,7 @@ Status surfaceOf(vtkPolyData* mesh, TriangleSurface& surface);
 Box surfaceBounds(const std::vector<vtkPolyData*>& meshes);
 // Bounds of all the points of a dataset.
 Box boundsOf(vtkDataSet* data);
-// Bounds of pointsOf(input), without the copy (non-finite coordinates count as there).
+// Box::around(pointsOf(input)), without the copy.
 Box pointBounds(vtkDataObject* input);
 
 // The point array `name` of an image as a grid: one component, at least 2 nodes and a positive spacing

@@ -166,14 +166,12 @@ PolygonMeshes polygonMeshes(vtkDataObject* input)
 
 namespace
 {
-// f(leaf's point count) for each leaf, then f(p) for each of its points.
-template <typename Leaf, typename Point>
-void forEachPoint(vtkDataObject* input, Leaf&& leafFound, Point&& f)
+template <typename F>
+void forEachPoint(vtkDataObject* input, F&& f)
 {
   for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(input))
   {
     const vtkIdType n = leaf->GetNumberOfPoints();
-    leafFound(n);
     for (vtkIdType i = 0; i < n; ++i)
     {
       Vec3 p;
@@ -188,15 +186,15 @@ template <typename Points>
 Points pointsOf(vtkDataObject* input)
 {
   Points points;
-  forEachPoint(
-    input, [&](vtkIdType n) { points.reserve(points.size() + n); }, [&](const Vec3& p) { points.push_back(p); });
+  points.reserve(input ? input->GetNumberOfElements(vtkDataObject::POINT) : 0);
+  forEachPoint(input, [&](const Vec3& p) { points.push_back(p); });
   return points;
 }
 
 Box pointBounds(vtkDataObject* input)
 {
   Box box;
-  forEachPoint(input, [](vtkIdType) {}, [&](const Vec3& p) { box.extend(p); });
+  forEachPoint(input, [&](const Vec3& p) { box.extend(p); });
   return box;
 }
 

@@ -21,6 +21,9 @@ namespace shrinkwrap
 // about this many per chunk: VTK 9.2's STDThread backend starts a loop's threads anew each time (tens of
 // microseconds each on a virtual machine), so a loop over a few thousand of them is faster on one.
 constexpr vtkIdType kCheapGrain = 16384;
+// Items of a grid query and a few exact tests each (a triangle's neighbours) pay for threads from a
+// few hundred.
+constexpr vtkIdType kQueryGrain = 512;
 
 // body(b, e) over chunks [b, e) of [first, last); grain 0 lets vtkSMPTools choose the chunk size, and
 // a grain of at least last - first runs body on the calling thread.

@@ -206,7 +206,8 @@ private:
   bool solve(const Controls& c, const std::vector<Vec3>& vt, std::vector<Vec3>& next);
   StepReport accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool converged);
   StepReport check(const std::vector<Vec3>& y) const;
-  int holdBack(std::vector<Vec3>& next) const;
+  // Appends to HeldNear where it held vertices against a crossing.
+  int holdBack(std::vector<Vec3>& next);
   int coverRims(); // RimCoverage.h: the vertices moved
   std::vector<Vec3> scaledRimSamples() const;
   void adjustConnectivity(StepReport& report); // remeshing, flips, then collapses, as the settings ask
@@ -225,6 +226,9 @@ private:
   // Where the edits of the last kRememberedSteps steps crossed (CheckedEdits.h): guarded from the start.
   static constexpr std::size_t kRememberedSteps = 3;
   std::deque<std::vector<Box>> RecentCrossings;
+  // Where the hold-back kept two parts of the surface from crossing since the last edits: they nearly
+  // touch there, and the next edits are guarded there from their first try.
+  std::vector<Box> HeldNear;
   int Steps = 0;
   std::vector<double> Potential; // the volume redistribution's warm start
   std::unique_ptr<Solver> Linear;

@@ -171,21 +171,30 @@ std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid, const 
 {
   const double margin = roundingMargin(grid);
   std::vector<std::pair<int, int>> pairs;
-  for (int s : changed)
-  {
-    const Facet fs = facetOf(x, triangles[s]);
-    const Box near = widened(boxOf(fs.p), margin);
-    grid.forEachNear(near, [&](int t) {
-      // A pair of two changed triangles is met twice; it is kept once.
-      const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
-      const auto& c = triangles[t];
-      if (t != s && !counted && near.overlaps(widened(boxOf(std::array<Vec3, 3>{ x[c[0]], x[c[1]], x[c[2]] }), margin)) &&
-        crosses(fs, facetOf(x, c), margin))
-      {
-        pairs.emplace_back(s, t);
-      }
-    });
-  }
+  std::mutex lock;
+  parallelFor(0, static_cast<vtkIdType>(changed.size()), kQueryGrain, [&](vtkIdType b, vtkIdType e) {
+    std::vector<std::pair<int, int>> crossing;
+    for (vtkIdType n = b; n < e; ++n)
+    {
+      const int s = changed[n];
+      const Facet fs = facetOf(x, triangles[s]);
+      const Box near = widened(boxOf(fs.p), margin);
+      grid.forEachNear(near, [&](int t) {
+        // A pair of two changed triangles is met twice; it is kept once.
+        const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
+        const auto& c = triangles[t];
+        if (t != s && !counted &&
+          near.overlaps(widened(boxOf(std::array<Vec3, 3>{ x[c[0]], x[c[1]], x[c[2]] }), margin)) &&
+          crosses(fs, facetOf(x, c), margin))
+        {
+          crossing.emplace_back(s, t);
+        }
+      });
+    }
+    const std::lock_guard<std::mutex> guard(lock);
+    pairs.insert(pairs.end(), crossing.begin(), crossing.end());
+  });
+  std::sort(pairs.begin(), pairs.end()); // the same order whatever the threads did
   return pairs;
 }
 
@@ -305,12 +314,58 @@ std::vector<Box> boxesAround(const std::vector<Vec3>& points, const std::vector<
   return boxes;
 }
 
+std::vector<Box> cellsCovering(const std::vector<Box>& boxes, double cell)
+{
+  if (!(cell > 0) || !std::isfinite(cell))
+  {
+    return boxes;
+  }
+  std::vector<std::array<std::int64_t, 3>> cells;
+  for (const Box& box : boxes)
+  {
+    if (box.empty() || !box.min.allFinite() || !box.max.allFinite())
+    {
+      continue;
+    }
+    const Eigen::Array3d lo = (box.min / cell).array().floor(), hi = (box.max / cell).array().floor();
+    // Cells far smaller than the boxes (the boxes themselves are the fewer), or beyond integers.
+    if (((hi - lo) > 64).any() || (lo.abs() > 1e15).any() || (hi.abs() > 1e15).any())
+    {
+      return boxes;
+    }
+    for (double k = lo[2]; k <= hi[2]; ++k)
+      for (double j = lo[1]; j <= hi[1]; ++j)
+        for (double i = lo[0]; i <= hi[0]; ++i)
+        {
+          cells.push_back({ static_cast<std::int64_t>(i), static_cast<std::int64_t>(j), static_cast<std::int64_t>(k) });
+        }
+  }
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  std::vector<Box> covering;
+  for (const auto& c : cells)
+  {
+    const Vec3 corner = cell * Vec3(static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2]));
+    covering.push_back({ corner, corner + Vec3::Constant(cell) });
+  }
+  return covering;
+}
+
 CrossingGuard::CrossingGuard(
   const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles, std::vector<Box> only)
   : Points(points)
   , Triangles(triangles)
   , Only(std::move(only))
 {
+  if (!this->Only.empty())
+  {
+    double size = 0;
+    for (const Box& box : this->Only)
+    {
+      size += box.size().maxCoeff() / static_cast<double>(this->Only.size());
+    }
+    this->OnlyBinned = std::make_unique<TriangleGrid>(this->Only, size);
+  }
 }
 
 const TriangleGrid& CrossingGuard::grid()
@@ -400,8 +455,16 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
   {
     all.extend(m.box);
   }
-  if (!this->Only.empty() &&
-    std::none_of(this->Only.begin(), this->Only.end(), [&all](const Box& box) { return box.overlaps(all); }))
+  bool guarded = this->Only.empty();
+  if (!guarded && !this->OnlyBinned->empty())
+  {
+    this->OnlyBinned->forEachNear(all, [&guarded](int) { guarded = true; });
+  }
+  else if (!guarded) // boxes the grid cannot bin (degenerate, not finite)
+  {
+    guarded = std::any_of(this->Only.begin(), this->Only.end(), [&all](const Box& box) { return box.overlaps(all); });
+  }
+  if (!guarded)
   {
     return false;
   }
@@ -474,7 +537,7 @@ void CrossingGuard::add(const std::vector<Made>& made)
 }
 
 int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
-  const std::vector<std::array<int, 3>>& triangles)
+  const std::vector<std::array<int, 3>>& triangles, std::vector<int>* crossing)
 {
   const int nt = static_cast<int>(triangles.size());
   std::vector<Box> swept(nt);
@@ -514,6 +577,10 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
       if (!isNew(st.first, st.second))
       {
         continue;
+      }
+      if (crossing)
+      {
+        crossing->insert(crossing->end(), { st.first, st.second });
       }
       for (int t : { st.first, st.second })
       {

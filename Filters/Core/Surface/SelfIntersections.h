@@ -40,13 +40,17 @@ SelfIntersections findNewSelfIntersections(
 // not at `previous` (the same triangles) go back to their `previous` positions, again until no new
 // crossing is left (at worst every vertex of a crossing stays where it was). One grid of the boxes swept
 // over the step serves every round; a round re-tests only the triangles it moved. Returns how many
-// vertices were held.
+// vertices were held; `crossing`, if given, gets the triangles of the crossings they were held for.
 int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
-  const std::vector<std::array<int, 3>>& triangles);
+  const std::vector<std::array<int, 3>>& triangles, std::vector<int>* crossing = nullptr);
 
 // Boxes `reach` around the triangles that `found` marks: where the edits that made them must be guarded.
 std::vector<Box> boxesAround(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
   const SelfIntersections& found, double reach);
+
+// The cells of size `cell` (a lattice through the origin) that any of `boxes` overlaps, one box each:
+// many small overlapping boxes covered by few.
+std::vector<Box> cellsCovering(const std::vector<Box>& boxes, double cell);
 
 // For the local edits of a pass (collapses, flips): whether the triangles an edit would make cross the
 // surface: the surface as it was when the pass began (points and triangles the guard only refers to:
@@ -87,6 +91,7 @@ private:
   const std::vector<Vec3>& Points;
   const std::vector<std::array<int, 3>>& Triangles;
   std::vector<Box> Only;
+  std::unique_ptr<TriangleGrid> OnlyBinned; // Only in a grid: it may hold thousands
   std::unique_ptr<TriangleGrid> Grid;
   std::vector<Made> Edits;
   std::vector<char> Merged;                  // per vertex: merged by the pass (its old triangles are gone)

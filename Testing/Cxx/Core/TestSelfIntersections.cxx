@@ -2,10 +2,11 @@
 // cross along a circle, and exactly the triangles near it are flagged; one vertex pushed through the
 // opposite side makes its fan cross; shared vertices and edges are never counted.
 // The grid behind them reports every overlapping box once (against brute force); fronts that meet are
-// held back pair by pair; the guard of a pass's edits refuses a flip whose new triangles would cross
-// the surface, and remembers the pass's own edits, and a guard limited to boxes checks only what reaches
-// into them; the crossings edits made are found from the triangles they made alone; a round of edits is
-// checked once and made again guarded near its crossings, then everywhere.
+// held back pair by pair, and named; many small boxes are covered by few lattice cells; the guard of a
+// pass's edits refuses a flip whose new triangles would cross the surface, and remembers the pass's own
+// edits, and a guard limited to boxes (thousands of them) checks only what reaches into them; the
+// crossings edits made are found from the triangles they made alone; a round of edits is checked once
+// and made again guarded near its crossings, then everywhere.
 // And TargetDistance: near the target, d and grad d are the exact distance and direction to it.
 #include "CheckedEdits.h"
 #include "Icosphere.h"
@@ -134,7 +135,8 @@ void heldFronts()
   }
   next[0] = -1.3 * sphere.points[0]; // and one through the other side
   SW_CHECK(findSelfIntersections(next, sphere.triangles).pairs > 0, "the step would cross");
-  const int held = holdNewCrossings(sphere.points, next, sphere.triangles);
+  std::vector<int> crossing;
+  const int held = holdNewCrossings(sphere.points, next, sphere.triangles, &crossing);
   int unmoved = 0;
   for (std::size_t v = 0; v < next.size(); ++v)
   {
@@ -145,6 +147,68 @@ void heldFronts()
   SW_CHECK(findSelfIntersections(next, sphere.triangles).pairs == 0 && next[0] == sphere.points[0],
     "the crossing vertex is held, and no crossing is left");
   SW_CHECK(held == unmoved && held < 30, "only the vertices of crossing pairs are held");
+  // The triangles it names are those of the crossings: the pushed vertex's fan among them, and every one
+  // with a vertex it held.
+  bool fan = false, allHeld = !crossing.empty();
+  for (int t : crossing)
+  {
+    const auto& c = sphere.triangles[t];
+    fan = fan || c[0] == 0 || c[1] == 0 || c[2] == 0;
+    bool some = false;
+    for (int v : c)
+    {
+      some = some || next[v] == sphere.points[v]; // every vertex moved: one at its old position was held
+    }
+    allHeld = allHeld && some;
+  }
+  SW_CHECK(fan && allHeld, "the crossings held are named by their triangles (" << crossing.size() << ")");
+}
+
+// Many small boxes, overlapping in clusters, covered by the lattice cells they touch: every point of
+// every box lies in a cell, no cell twice, far fewer cells than boxes, and no cell that no box touches.
+void coveringCells()
+{
+  unsigned state = 11;
+  auto random = [&] { return (state = state * 1664525u + 1013904223u) / 4294967296.0; };
+  std::vector<Box> boxes;
+  for (int b = 0; b < 2000; ++b)
+  {
+    const Vec3 c = Vec3(random() < 0.5 ? 0.0 : 3.0, 0, 0) + 0.5 * Vec3(random(), random(), random());
+    boxes.push_back({ c, c + 0.05 * Vec3(random(), random(), random()) });
+  }
+  const double cell = 0.1;
+  const std::vector<Box> cells = cellsCovering(boxes, cell);
+  int outside = 0, touched = 0;
+  for (const Box& box : boxes)
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      const Vec3 corner((k & 1) ? box.max.x() : box.min.x(), (k & 2) ? box.max.y() : box.min.y(),
+        (k & 4) ? box.max.z() : box.min.z());
+      const Vec3 inside = box.min + (box.max - box.min).cwiseProduct(Vec3(random(), random(), random()));
+      for (const Vec3& p : { corner, inside })
+      {
+        outside += std::none_of(cells.begin(), cells.end(), [&](const Box& c) { return c.squaredDistance(p) == 0; });
+      }
+    }
+  }
+  std::vector<Box> sorted = cells;
+  auto less = [](const Box& a, const Box& b) {
+    return std::lexicographical_compare(a.min.data(), a.min.data() + 3, b.min.data(), b.min.data() + 3);
+  };
+  std::sort(sorted.begin(), sorted.end(), less);
+  const bool distinct = std::adjacent_find(sorted.begin(), sorted.end(), [](const Box& a, const Box& b) {
+    return a.min == b.min;
+  }) == sorted.end();
+  for (const Box& c : cells)
+  {
+    const Box inner{ c.min + Vec3::Constant(1e-9), c.max - Vec3::Constant(1e-9) };
+    touched += std::any_of(boxes.begin(), boxes.end(), [&](const Box& b) { return b.overlaps(inner); });
+  }
+  std::printf("2000 small boxes in two clusters: covered by %zu cells of %g, %d points outside\n", cells.size(),
+    cell, outside);
+  SW_CHECK(outside == 0 && distinct && touched == static_cast<int>(cells.size()) && cells.size() < 500,
+    "the cells cover every box, once each, and only cells a box touches");
 }
 
 void guardedEdits()
@@ -170,6 +234,18 @@ void guardedEdits()
   CrossingGuard near(x, withPost, { elsewhere, there }), away(x, withPost, { elsewhere });
   SW_CHECK(near.flipCrosses(0, 1, 2, 3), "a guard whose boxes hold the flip refuses it");
   SW_CHECK(!away.flipCrosses(0, 1, 2, 3), "a guard whose boxes miss the flip lets it be");
+  // Thousands of boxes (where the hold-back kept two parts apart), looked up through their own grid.
+  std::vector<Box> many;
+  for (int k = 0; k < 3000; ++k)
+  {
+    const Vec3 c(2.0 + 0.01 * (k % 50), 2.0 + 0.01 * (k / 50), 0.0);
+    many.push_back({ c, c + Vec3::Constant(0.02) });
+  }
+  CrossingGuard manyAway(x, withPost, many);
+  many.push_back(there);
+  CrossingGuard manyNear(x, withPost, many);
+  SW_CHECK(manyNear.flipCrosses(0, 1, 2, 3) && !manyAway.flipCrosses(0, 1, 2, 3),
+    "among thousands of boxes, the one that holds the flip guards it");
 }
 
 // The crossings edits made, from the triangles the edits made: a vertex pushed through the sphere (its
@@ -296,6 +372,7 @@ int TestSelfIntersections(int, char*[])
   selfIntersections();
   triangleGrid();
   heldFronts();
+  coveringCells();
   guardedEdits();
   newCrossings();
   checkedEdits();

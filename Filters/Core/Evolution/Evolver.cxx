@@ -519,8 +519,9 @@ void Evolver::adjustConnectivity(StepReport& report)
   {
     // The edits behind a crossing lie within about two edges of it. Where the hold-back kept two parts
     // apart, the edits crossed the other part at nearly every late step (the camel's legs at
-    // Resolution 200: 17 rounds of 42 made again, a sixth of the wrap's time); guarded there from the
-    // first try, 2 of 28.
+    // Resolution 200: 17 rounds of 42 made again, a sixth of the wrap's time). While crossings are
+    // recent, the edits there are guarded from the first try (5 of 31 made again); not before, where
+    // guarding costs more than the rare redo.
     const double reach = TriangleGrid::cellSizeFor(this->Mesh.points(), this->Mesh.triangles());
     std::vector<Box> recent;
     for (const auto& boxes : this->RecentCrossings)

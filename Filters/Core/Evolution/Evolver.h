@@ -227,7 +227,7 @@ private:
   static constexpr std::size_t kRememberedSteps = 3;
   std::deque<std::vector<Box>> RecentCrossings;
   // Where the hold-back kept two parts of the surface from crossing since the last edits: they nearly
-  // touch there, and the next edits are guarded there from their first try.
+  // touch there, and while crossings are recent the next edits are guarded there from the first try.
   std::vector<Box> HeldNear;
   int Steps = 0;
   std::vector<double> Potential; // the volume redistribution's warm start

@@ -357,7 +357,9 @@ CrossingGuard::CrossingGuard(
   , Triangles(triangles)
   , Only(std::move(only))
 {
-  if (!this->Only.empty())
+  const bool binnable = std::all_of(this->Only.begin(), this->Only.end(),
+    [](const Box& box) { return !box.empty() && box.min.allFinite() && box.max.allFinite(); });
+  if (!this->Only.empty() && binnable)
   {
     double size = 0;
     for (const Box& box : this->Only)
@@ -456,11 +458,11 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
     all.extend(m.box);
   }
   bool guarded = this->Only.empty();
-  if (!guarded && !this->OnlyBinned->empty())
+  if (!guarded && this->OnlyBinned && !this->OnlyBinned->empty())
   {
     this->OnlyBinned->forEachNear(all, [&guarded](int) { guarded = true; });
   }
-  else if (!guarded) // boxes the grid cannot bin (degenerate, not finite)
+  else if (!guarded) // boxes the grid cannot bin (empty, degenerate, not finite)
   {
     guarded = std::any_of(this->Only.begin(), this->Only.end(), [&all](const Box& box) { return box.overlaps(all); });
   }

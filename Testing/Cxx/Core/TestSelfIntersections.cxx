@@ -17,6 +17,7 @@
 #include "TriangleGrid.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace
 {
@@ -246,6 +247,12 @@ void guardedEdits()
   CrossingGuard manyNear(x, withPost, many);
   SW_CHECK(manyNear.flipCrosses(0, 1, 2, 3) && !manyAway.flipCrosses(0, 1, 2, 3),
     "among thousands of boxes, the one that holds the flip guards it");
+  // Boxes no grid can bin (an empty one, one without finite bounds) are asked one by one.
+  many.push_back(Box{});
+  const double inf = std::numeric_limits<double>::infinity();
+  many.push_back({ Vec3::Constant(-inf), Vec3::Constant(inf) });
+  CrossingGuard unbinnable(x, withPost, many);
+  SW_CHECK(unbinnable.flipCrosses(0, 1, 2, 3), "with boxes no grid bins, the flip is still guarded");
 }
 
 // The crossings edits made, from the triangles the edits made: a vertex pushed through the sphere (its

@@ -45,6 +45,10 @@ struct Box
     const Vec3 s = this->size();
     return s.x() * s.y() + s.y() * s.z() + s.z() * s.x();
   }
+  Box widened(double margin) const // by margin on every side
+  {
+    return { this->min - Vec3::Constant(margin), this->max + Vec3::Constant(margin) };
+  }
   bool overlaps(const Box& b) const
   {
     return (this->min.array() <= b.max.array()).all() && (b.min.array() <= this->max.array()).all();

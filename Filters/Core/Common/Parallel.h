@@ -21,8 +21,8 @@ namespace shrinkwrap
 // about this many per chunk: VTK 9.2's STDThread backend starts a loop's threads anew each time (tens of
 // microseconds each on a virtual machine), so a loop over a few thousand of them is faster on one.
 constexpr vtkIdType kCheapGrain = 16384;
-// Items of a grid query and a few exact tests each (a triangle's neighbours) pay for threads from a
-// few hundred.
+// Items of a grid query and a few exact tests each (a triangle against its neighbours): chunks of 512 put
+// a fine wrap's checks of changed triangles on both cores (the camel's at Resolution 200: 0.90 -> 0.53 s).
 constexpr vtkIdType kQueryGrain = 512;
 
 // body(b, e) over chunks [b, e) of [first, last); grain 0 lets vtkSMPTools choose the chunk size, and

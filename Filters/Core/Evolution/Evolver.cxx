@@ -432,16 +432,10 @@ int Evolver::holdBack(std::vector<Vec3>& next)
       break;
     }
   }
-  if (!crossed.empty())
+  for (int t : crossed)
   {
-    SelfIntersections crossing;
-    crossing.intersecting.assign(triangles.size(), 0);
-    for (int t : crossed)
-    {
-      crossing.intersecting[t] = 1;
-    }
-    const std::vector<Box> near = boxesAround(y, triangles, crossing, 0);
-    this->HeldNear.insert(this->HeldNear.end(), near.begin(), near.end());
+    const auto& c = triangles[t];
+    this->HeldNear.push_back(Box::around(std::array<Vec3, 3>{ y[c[0]], y[c[1]], y[c[2]] }));
   }
   return held;
 }
@@ -530,11 +524,9 @@ void Evolver::adjustConnectivity(StepReport& report)
     }
     if (!recent.empty())
     {
-      for (Box box : cellsCovering(this->HeldNear, reach))
+      for (const Box& cell : cellsCovering(this->HeldNear, reach))
       {
-        box.min.array() -= reach;
-        box.max.array() += reach;
-        recent.push_back(box);
+        recent.push_back(cell.widened(reach));
       }
     }
     this->HeldNear.clear();

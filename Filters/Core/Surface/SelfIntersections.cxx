@@ -109,30 +109,27 @@ bool crosses(const Facet& s, const Facet& t, double margin)
   return edgesThrough(s, t) || edgesThrough(t, s);
 }
 
-template <typename Corners>
-Box boxOf(const Corners& p)
-{
-  Box box;
-  for (const Vec3& q : p)
-  {
-    box.extend(q);
-  }
-  return box;
-}
-
 // Closer to a plane than this goes the exact way (orientations) rather than the plane test.
 double roundingMargin(const TriangleGrid& grid)
 {
   return 1e-7 * grid.cell();
 }
 
-// Two triangles cross only where both boxes hold the crossing point: boxes at the positions tested,
-// widened by the margin against rounding, rule a pair out before its planes are asked.
-Box widened(Box box, double margin)
+// The pairs each(b, e, out) finds over chunks [b, e) of [0, n), from all threads, in one order whatever
+// the threads did.
+template <typename Each>
+std::vector<std::pair<int, int>> pairsInParallel(vtkIdType n, vtkIdType grain, Each&& each)
 {
-  box.min -= Vec3::Constant(margin);
-  box.max += Vec3::Constant(margin);
-  return box;
+  std::vector<std::pair<int, int>> pairs;
+  std::mutex lock;
+  parallelFor(0, n, grain, [&](vtkIdType b, vtkIdType e) {
+    std::vector<std::pair<int, int>> found;
+    each(b, e, found);
+    const std::lock_guard<std::mutex> guard(lock);
+    pairs.insert(pairs.end(), found.begin(), found.end());
+  });
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
 }
 
 // The pairs of triangles that cross at x, found through the grid (boxes at x or containing them).
@@ -141,28 +138,25 @@ std::vector<std::pair<int, int>> crossingPairs(
 {
   const double margin = roundingMargin(grid);
   std::vector<Facet> facets(triangles.size());
-  std::vector<Box> boxes(triangles.size()); // at x: the grid's may be wider (swept over a step)
+  // Two triangles cross only where both boxes hold the crossing point: boxes at x (the grid's may be
+  // wider, swept over a step), widened by the margin against rounding, rule a pair out before its planes
+  // are asked.
+  std::vector<Box> boxes(triangles.size());
   parallelFor(0, static_cast<vtkIdType>(triangles.size()), kCheapGrain, [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType t = b; t < e; ++t)
     {
       facets[t] = facetOf(x, triangles[t]);
-      boxes[t] = widened(boxOf(facets[t].p), margin);
+      boxes[t] = Box::around(facets[t].p).widened(margin);
     }
   });
-  std::vector<std::pair<int, int>> pairs;
-  std::mutex lock;
-  parallelFor(0, grid.bucketCount(), [&](int begin, int end) {
-    std::vector<std::pair<int, int>> crossing;
-    grid.forEachOverlappingPair(begin, end, [&](int s, int t) {
+  return pairsInParallel(grid.bucketCount(), 0, [&](vtkIdType b, vtkIdType e, std::vector<std::pair<int, int>>& found) {
+    grid.forEachOverlappingPair(static_cast<int>(b), static_cast<int>(e), [&](int s, int t) {
       if (boxes[s].overlaps(boxes[t]) && crosses(facets[s], facets[t], margin))
       {
-        crossing.emplace_back(s, t);
+        found.emplace_back(s, t);
       }
     });
-    const std::lock_guard<std::mutex> guard(lock);
-    pairs.insert(pairs.end(), crossing.begin(), crossing.end());
   });
-  return pairs;
 }
 
 // The pairs that cross at x with a triangle in `changed` (sorted), each once.
@@ -170,32 +164,25 @@ std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid, const 
   const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& changed)
 {
   const double margin = roundingMargin(grid);
-  std::vector<std::pair<int, int>> pairs;
-  std::mutex lock;
-  parallelFor(0, static_cast<vtkIdType>(changed.size()), kQueryGrain, [&](vtkIdType b, vtkIdType e) {
-    std::vector<std::pair<int, int>> crossing;
-    for (vtkIdType n = b; n < e; ++n)
+  const auto n = static_cast<vtkIdType>(changed.size());
+  return pairsInParallel(n, kQueryGrain, [&](vtkIdType b, vtkIdType e, std::vector<std::pair<int, int>>& found) {
+    for (vtkIdType k = b; k < e; ++k)
     {
-      const int s = changed[n];
+      const int s = changed[k];
       const Facet fs = facetOf(x, triangles[s]);
-      const Box near = widened(boxOf(fs.p), margin);
+      const Box near = Box::around(fs.p).widened(margin);
       grid.forEachNear(near, [&](int t) {
         // A pair of two changed triangles is met twice; it is kept once.
         const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
         const auto& c = triangles[t];
-        if (t != s && !counted &&
-          near.overlaps(widened(boxOf(std::array<Vec3, 3>{ x[c[0]], x[c[1]], x[c[2]] }), margin)) &&
+        if (t != s && !counted && near.overlaps(Box::around(std::array<Vec3, 3>{ x[c[0]], x[c[1]], x[c[2]] }).widened(margin)) &&
           crosses(fs, facetOf(x, c), margin))
         {
-          crossing.emplace_back(s, t);
+          found.emplace_back(s, t);
         }
       });
     }
-    const std::lock_guard<std::mutex> guard(lock);
-    pairs.insert(pairs.end(), crossing.begin(), crossing.end());
   });
-  std::sort(pairs.begin(), pairs.end()); // the same order whatever the threads did
-  return pairs;
 }
 
 // Few changed triangles (a step's touch-ups, a round of edits) are tested alone; many, all pairs in
@@ -305,10 +292,8 @@ std::vector<Box> boxesAround(const std::vector<Vec3>& points, const std::vector<
   {
     if (found.intersecting[t])
     {
-      Box box = boxOf(std::array<Vec3, 3>{ points[triangles[t][0]], points[triangles[t][1]], points[triangles[t][2]] });
-      box.min.array() -= reach;
-      box.max.array() += reach;
-      boxes.push_back(box);
+      const auto& c = triangles[t];
+      boxes.push_back(Box::around(std::array<Vec3, 3>{ points[c[0]], points[c[1]], points[c[2]] }).widened(reach));
     }
   }
   return boxes;
@@ -409,7 +394,7 @@ std::vector<CrossingGuard::Made> CrossingGuard::fan(
   for (const auto& uw : rim)
   {
     const std::array<Vec3, 3> p{ m, this->position(uw[0]), this->position(uw[1]) };
-    made.push_back({ p, { keep, uw[0], uw[1] }, boxOf(p) });
+    made.push_back({ p, { keep, uw[0], uw[1] }, Box::around(p) });
   }
   return made;
 }
@@ -419,7 +404,7 @@ std::vector<CrossingGuard::Made> CrossingGuard::flipped(int i, int j, int c, int
 {
   const std::vector<Vec3>& x = this->Points;
   const std::array<Vec3, 3> p{ x[i], x[c], x[d] }, q{ x[j], x[d], x[c] };
-  return { { p, { i, c, d }, boxOf(p) }, { q, { j, d, c }, boxOf(q) } };
+  return { { p, { i, c, d }, Box::around(p) }, { q, { j, d, c }, Box::around(q) } };
 }
 
 bool CrossingGuard::collapseCrosses(int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim)

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace shrinkwrap
 {
@@ -33,6 +34,16 @@ struct Box
     for (const Vec3& p : points)
     {
       box.extend(p);
+    }
+    return box;
+  }
+  template <typename Ids>
+  static Box around(const std::vector<Vec3>& points, const Ids& ids) // the bounds of points[ids] (a triangle's)
+  {
+    Box box;
+    for (const auto id : ids)
+    {
+      box.extend(points[id]);
     }
     return box;
   }

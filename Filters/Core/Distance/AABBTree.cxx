@@ -60,11 +60,7 @@ AABBTree::AABBTree(const TriangleSoup& soup, const AABBTreeSettings& settings)
   std::vector<Prim> prims(soup.triangles.size());
   for (std::size_t t = 0; t < prims.size(); ++t)
   {
-    Box box;
-    for (int v : soup.triangles[t])
-    {
-      box.extend(soup.points[v]);
-    }
+    const Box box = Box::around(soup.points, soup.triangles[t]);
     prims[t] = { box, box.center(), static_cast<int>(t) };
   }
   this->Nodes.reserve(2 * prims.size() / std::max(1, settings.leafSize) + 1);

@@ -434,8 +434,7 @@ int Evolver::holdBack(std::vector<Vec3>& next)
   }
   for (int t : crossed)
   {
-    const auto& c = triangles[t];
-    this->HeldNear.push_back(Box::around(std::array<Vec3, 3>{ y[c[0]], y[c[1]], y[c[2]] }));
+    this->HeldNear.push_back(Box::around(y, triangles[t]));
   }
   return held;
 }

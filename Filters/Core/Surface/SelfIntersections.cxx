@@ -174,9 +174,8 @@ std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid, const 
       grid.forEachNear(near, [&](int t) {
         // A pair of two changed triangles is met twice; it is kept once.
         const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
-        const auto& c = triangles[t];
-        if (t != s && !counted && near.overlaps(Box::around(std::array<Vec3, 3>{ x[c[0]], x[c[1]], x[c[2]] }).widened(margin)) &&
-          crosses(fs, facetOf(x, c), margin))
+        if (t != s && !counted && near.overlaps(Box::around(x, triangles[t]).widened(margin)) &&
+          crosses(fs, facetOf(x, triangles[t]), margin))
         {
           found.emplace_back(s, t);
         }
@@ -292,8 +291,7 @@ std::vector<Box> boxesAround(const std::vector<Vec3>& points, const std::vector<
   {
     if (found.intersecting[t])
     {
-      const auto& c = triangles[t];
-      boxes.push_back(Box::around(std::array<Vec3, 3>{ points[c[0]], points[c[1]], points[c[2]] }).widened(reach));
+      boxes.push_back(Box::around(points, triangles[t]).widened(reach));
     }
   }
   return boxes;

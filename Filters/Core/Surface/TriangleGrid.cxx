@@ -32,10 +32,7 @@ std::vector<Box> boxesOf(const std::vector<Vec3>& x, const std::vector<std::arra
   std::vector<Box> boxes(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
-    for (int v : triangles[t])
-    {
-      boxes[t].extend(x[v]);
-    }
+    boxes[t] = Box::around(x, triangles[t]);
   }
   return boxes;
 }

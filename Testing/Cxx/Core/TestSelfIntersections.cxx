@@ -253,6 +253,10 @@ void guardedEdits()
   many.push_back({ Vec3::Constant(-inf), Vec3::Constant(inf) });
   CrossingGuard unbinnable(x, withPost, many);
   SW_CHECK(unbinnable.flipCrosses(0, 1, 2, 3), "with boxes no grid bins, the flip is still guarded");
+  // Asked one by one, the finite boxes still decide: an empty box guards nothing.
+  CrossingGuard emptyAway(x, withPost, { elsewhere, Box{} }), emptyNear(x, withPost, { Box{}, there });
+  SW_CHECK(!emptyAway.flipCrosses(0, 1, 2, 3) && emptyNear.flipCrosses(0, 1, 2, 3),
+    "beside an empty box, only the box that holds the flip guards it");
 }
 
 // The crossings edits made, from the triangles the edits made: a vertex pushed through the sphere (its

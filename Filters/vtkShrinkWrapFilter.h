@@ -250,7 +250,8 @@ public:
   /// The narrowest gap or hole that stays open, in the target's units: narrower ones are bridged (the
   /// wrap moves on the distance to the target's morphological closing by a ball of GapSize / 2).
   /// Default 0: automatic, the target's bounding-box diagonal / 50; for points, 8 median
-  /// nearest-neighbour distances and at least 1.5 cells of the field (for a dense cloud the field is
+  /// nearest-neighbour distances (of their sparsest part where their density varies: a scan's far
+  /// side) and at least 1.5 cells of the field (for a dense cloud the field is
   /// made finer, see Resolution). A value below half a cell of the distance field bridges nothing.
   vtkSetClampMacro(GapSize, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(GapSize, double);

@@ -1,7 +1,7 @@
 // Shrink Wrap beside CGAL's alpha_wrap_3 in one run, on CGAL meshes with thin parts, fingers and legs,
 // holes, an open mesh and CAD parts with sharp edges (issue #10).
 //   BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b,...] [--set Name=value ...]
-//     [--points N [--noise percent] [--draw K]] [--repeat N]  (issue #13: N points sampled on each mesh wrapped instead)
+//     [--points N [--noise percent] [--draw K] [--ramp R]] [--repeat N]  (issue #13: N points sampled on each mesh wrapped instead)
 // Ours: the defaults, and Target Edge Length diagonal / 25 and / 100 (the field's Resolution follows
 // L, so that a cell stays below L); the time includes the distance field. CGAL: alpha = diagonal / 20,
 // / 50, / 100, offset = alpha / 30 (CGAL's examples). Every wrap is judged the same way
@@ -18,7 +18,9 @@
 // times and reports the fastest (this machine's times vary by 20% from run to run; the fastest of a
 // few is the one least disturbed), each of ours by a new filter, so that none reuses another's work.
 // --draw K samples the points (and their noise) with other seeds: a largest distance depends on where
-// the points fall, and one draw cannot tell a trend from luck.
+// the points fall, and one draw cannot tell a trend from luck. --ramp R makes the points' density fall R
+// times along x (a scan's far side): a sample is kept with a probability from 1 at the box's largest x
+// to 1 / R at its smallest.
 #include "TestUtilities.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
@@ -161,25 +163,57 @@ vtkSmartPointer<vtkShrinkWrapFilter> configuredWrap(
   return wrap;
 }
 
-// Points sampled uniformly by area on the target (seeded), with Gaussian noise of `noise` % of the
-// diagonal, wrapped by ours at its defaults, alpha_wrap_3 on the same points (alpha = diagonal / 20,
+// How a benchmark's cloud is sampled (the options --points, --noise, --draw and --ramp).
+struct CloudSampling
+{
+  int count = 0;    // points
+  double noise = 0; // Gaussian noise, % of the diagonal
+  int draw = 0;     // another sample of the points and their noise (0: the usual one)
+  double ramp = 1;  // density falling this many times along x (1: uniform)
+};
+
+// `sampling.count` points sampled on the target by area (seeded), kept with a probability falling
+// `sampling.ramp` times along x, with Gaussian noise.
+std::vector<Vec3> sampledCloud(const TriangleSoup& target, const CloudSampling& sampling)
+{
+  const shrinkwrap::Box box = target.bounds();
+  const double ramp = std::max(1.0, sampling.ramp);
+  // Enough samples that the kept ones reach the count: at least one in `ramp` is kept.
+  const int drawn = static_cast<int>(std::ceil(sampling.count * ramp));
+  std::vector<Vec3> samples = testing::samplePoints(target, drawn, 7 + sampling.draw);
+  samples.erase(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(target.points.size())); // samples only
+  std::mt19937_64 random(11 + sampling.draw);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Vec3> cloud;
+  const double width = std::max(box.max.x() - box.min.x(), std::numeric_limits<double>::min());
+  for (const Vec3& p : samples)
+  {
+    const double keep = 1 / ramp + (1 - 1 / ramp) * (p.x() - box.min.x()) / width;
+    if (static_cast<int>(cloud.size()) < sampling.count && (ramp == 1 || unit(random) < keep))
+    {
+      cloud.push_back(p);
+    }
+  }
+  std::normal_distribution<double> gauss(0, sampling.noise / 100 * box.diagonal());
+  for (Vec3& p : cloud)
+  {
+    p += sampling.noise > 0 ? Vec3(gauss(random), gauss(random), gauss(random)) : Vec3::Zero();
+  }
+  return cloud;
+}
+
+// Points sampled on the target (sampledCloud), wrapped by ours at its defaults, alpha_wrap_3 on the same points (alpha = diagonal / 20,
 // / 50, / 100, offset alpha / 30) and VTK's vtkSurfaceReconstructionFilter + contour at 0; every wrap
 // judged against the original mesh (the truth). With `out`, the cloud and the wraps are written as
 // <out>_target.vtp, <out>_shrinkwrap.vtp, <out>_alphawrap_<divisor>.vtp.
-void cloudRows(const TriangleSoup& target, int count, double noise, const std::vector<std::pair<std::string, double>>& sets,
-  const std::string& out, bool peers, bool withReconstruction, int repeats, int draw)
+void cloudRows(const TriangleSoup& target, const CloudSampling& sampling, const std::vector<std::pair<std::string, double>>& sets,
+  const std::string& out, bool peers, bool withReconstruction, int repeats)
 {
   const double diagonal = target.bounds().diagonal();
-  std::vector<Vec3> cloud = testing::samplePoints(target, count, 7 + draw);
-  cloud.erase(cloud.begin(), cloud.begin() + static_cast<std::ptrdiff_t>(target.points.size())); // samples only
-  std::mt19937_64 random(11 + draw);
-  std::normal_distribution<double> gauss(0, noise / 100 * diagonal);
-  for (Vec3& p : cloud)
-  {
-    p += noise > 0 ? Vec3(gauss(random), gauss(random), gauss(random)) : Vec3::Zero();
-  }
-  std::printf("(%d points, noise %.2f%% of the diagonal%s)\n", count, noise,
-    draw > 0 ? (", draw " + std::to_string(draw)).c_str() : "");
+  const std::vector<Vec3> cloud = sampledCloud(target, sampling);
+  std::printf("(%zu points, noise %.2f%% of the diagonal%s", cloud.size(), sampling.noise,
+    sampling.draw > 0 ? (", draw " + std::to_string(sampling.draw)).c_str() : "");
+  std::printf(sampling.ramp > 1 ? ", density falling %g times along x)\n" : ")\n", sampling.ramp);
   vtkNew<vtkPoints> points;
   for (const Vec3& p : cloud)
   {
@@ -287,7 +321,7 @@ int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::cerr << "usage: BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b] [--set Name=value] [--points N [--noise percent] [--draw K]] [--repeat N] [--defaults-only] [--time-only] [--no-reconstruction]\n";
+    std::cerr << "usage: BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b] [--set Name=value] [--points N [--noise percent] [--draw K] [--ramp R]] [--repeat N] [--defaults-only] [--time-only] [--no-reconstruction]\n";
     return 2;
   }
   const std::string folder = argv[1];
@@ -299,9 +333,8 @@ int main(int argc, char* argv[])
   bool timeOnly = false;
   bool withReconstruction = true; // --no-reconstruction
   int repeats = 1;    // --repeat: the fastest of this many runs of every wrap
-  int draw = 0;       // --draw: another sample of the points and their noise (0: the usual one)
-  int cloudSize = 0;  // --points: wrap this many points sampled on each mesh instead of the mesh (issue #13)
-  double noise = 0;   // --noise: Gaussian noise on them, in % of the diagonal
+  CloudSampling sampling; // --points (wrap that many points sampled on each mesh instead of it), --noise,
+                          // --draw, --ramp
   for (int a = 2; a < argc; ++a)
   {
     const std::string arg = argv[a];
@@ -331,11 +364,11 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--points" && a + 1 < argc)
     {
-      cloudSize = std::atoi(argv[++a]);
+      sampling.count = std::atoi(argv[++a]);
     }
     else if (arg == "--draw" && a + 1 < argc)
     {
-      draw = std::max(0, std::atoi(argv[++a]));
+      sampling.draw = std::max(0, std::atoi(argv[++a]));
     }
     else if (arg == "--repeat" && a + 1 < argc)
     {
@@ -343,7 +376,11 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--noise" && a + 1 < argc)
     {
-      noise = std::stod(argv[++a]);
+      sampling.noise = std::stod(argv[++a]);
+    }
+    else if (arg == "--ramp" && a + 1 < argc)
+    {
+      sampling.ramp = std::max(1.0, std::stod(argv[++a]));
     }
     else if (arg == "--defaults-only")
     {
@@ -382,10 +419,10 @@ int main(int argc, char* argv[])
       std::printf("\n%s: %zu triangles, distances in %% of the diagonal %.4g\n\n", name.c_str(), target.triangles.size(), diagonal);
       header();
     }
-    if (cloudSize > 0)
+    if (sampling.count > 0)
     {
-      cloudRows(target, cloudSize, noise, sets, out.empty() ? out : out + "/" + name + "_points", !timeOnly,
-        withReconstruction, repeats, draw);
+      cloudRows(target, sampling, sets, out.empty() ? out : out + "/" + name + "_points", !timeOnly,
+        withReconstruction, repeats);
       continue;
     }
 

@@ -2,7 +2,8 @@
 manifold surface of the right genus that lies on the sampled shape (distances both ways on points
 sampled over both surfaces, as the wrap benchmark measures them, in % of the diagonal); the wrap's
 Distance array is the distance to the nearest input point; a noisy sphere (noise of 0.25% of the
-diagonal) and a noisy thin ring (0.5%) wrap inside their noise bands; a cloud is measured once while its points stay (a run after a property changed wraps as a new
+diagonal) and a noisy thin ring (0.5%) wrap inside their noise bands; a sphere sampled 4 times
+sparser on one side than the other (a scan's far side) wraps to one layer, not entered; a cloud is measured once while its points stay (a run after a property changed wraps as a new
 filter does, and changed points are measured anew); Mesh Signed Distance gives the unsigned
 distance to the points, and Input Geometry chooses polygons, points or both of a mixed input (for both filters); bad point input gets a clear error and an empty output, and the pipeline
 lives on.
@@ -187,6 +188,26 @@ ring_tube = 0.1
 sigma = 0.005 * math.sqrt(2 * (2 * (1 + ring_tube)) ** 2 + (2 * ring_tube) ** 2)
 check_inside_noise("noisy thin ring", torus_points(200000, tube=ring_tube) + rng.normal(scale=sigma, size=(200000, 3)),
                    sigma, lambda x: np.abs(np.hypot(np.hypot(x[:, 0], x[:, 1]) - 1.0, x[:, 2]) - ring_tube), 1)
+
+# A scan's density falls away from the scanner: 5,000 points on the unit sphere, kept with a probability
+# falling 4 times from one side to the other (their own generator, so that the draws above stay). With
+# the Gap Size from the median spacing alone the wrap entered through the sparse side and lined the
+# inside too (a second layer: genus 2, twice the vertices); from the sparse part's spacing
+# (PointSpacing) it wraps one layer on the sphere, as a uniform cloud.
+thin = np.random.default_rng(29)
+ramp = thin.normal(size=(40000, 3))
+ramp /= np.linalg.norm(ramp, axis=1)[:, None]
+ramp = ramp[thin.random(len(ramp)) < 0.25 + 0.75 * 0.5 * (1 + ramp[:, 0])][:5000]
+out = wrapped(cloud(ramp))
+uniform = wrapped(cloud(sphere_points(5000)))
+g, closed = genus(out) if out.GetNumberOfPoints() else (None, False)
+radii = np.linalg.norm(vtk_to_numpy(out.GetPoints().GetData()), axis=1) if out.GetNumberOfPoints() else np.zeros(1)
+low, high = np.quantile(radii, 0.01), radii.max()
+check(len(ramp) == 5000 and closed and g == 0 and low > 0.97 and high < 1.03 and
+      out.GetNumberOfPoints() < 1.3 * uniform.GetNumberOfPoints(),
+      "a sphere's 5,000 points, 4 times sparser on one side: closed, genus 0 (%s), one layer: 99%% of the vertices "
+      "%.3f-%.3f from the centre (0.97-1.03), %d vertices (a uniform cloud's wrap %d; under 1.3 times)"
+      % (g, low, high, out.GetNumberOfPoints(), uniform.GetNumberOfPoints()))
 
 # The panel's Field Cell Size for points, before the run (the cloud shown, as in the GUI), is the cell
 # the run moves on.

@@ -12,6 +12,16 @@
 namespace shrinkwrap
 {
 
+// How far apart a point set's points lie, over up to 20,000 of them (0 and 0 when all coincide):
+// `median`, the median distance from a point to its nearest neighbour at another position; and
+// `sparse`, as much or more: that spacing where the points are sparsest (a scan's far side), from the
+// 99th percentile of its local mean, so that a gap sized by it spans the sampling's holes there too.
+struct PointSpacing
+{
+  double median = 0;
+  double sparse = 0;
+};
+
 class PointSource : public DistanceSource
 {
 public:
@@ -23,8 +33,8 @@ public:
   // The nearest input point; side 0 and not sure: a point has no inside.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   const PointList& points() const { return this->Points; }
-  // See medianNeighbourDistance below (from this source's tree).
-  double medianNeighbourDistance() const;
+  // How far apart the points lie, from this source's tree (PointSpacing above).
+  PointSpacing spacing() const;
 
 private:
   PointList Points;
@@ -32,8 +42,7 @@ private:
   PointTree Tree;
 };
 
-// The median distance from a point to its nearest neighbour at another position (over up to 20,000
-// of the points); 0 when the points have no such neighbours (all coincide).
+// PointSpacing's median, for a list of points.
 double medianNeighbourDistance(const std::vector<Vec3>& points);
 
 } // namespace shrinkwrap

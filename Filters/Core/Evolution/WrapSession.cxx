@@ -25,7 +25,8 @@ namespace
 constexpr double kFitWidthPerSpacing = 3;
 // The automatic Gap Size of a point cloud, in median nearest-neighbour distances: the union of balls of
 // half of it covers the random gaps of a uniform sample (its covering radius is about 3.5 of them for
-// 4,000-200,000 points), so the wrap spans them and enters no hole the sampling left.
+// 4,000-200,000 points), so the wrap spans them and enters no hole the sampling left. Where the points
+// are sparser in part (PointSpacing::sparse), in the spacing there.
 constexpr double kPointGapPerNeighbourDistance = 8;
 // ... and in cells of the field at least: a closing by a ball below a cell or so is lost in the grid's
 // interpolation, and the wrap then meets sub-cell tunnels in it (handles the points do not have). 1.5
@@ -218,7 +219,9 @@ PointCloud measureCloud(PointList points)
 {
   PointCloud cloud;
   cloud.points = std::make_shared<const PointSource>(std::move(points));
-  cloud.spacing = cloud.points->medianNeighbourDistance();
+  const PointSpacing spacing = cloud.points->spacing();
+  cloud.spacing = spacing.median;
+  cloud.sparseSpacing = spacing.sparse;
   if (cloud.spacing > 0)
   {
     cloud.surface = std::make_shared<const PointSurface>(cloud.points, kFitWidthPerSpacing * cloud.spacing);
@@ -243,7 +246,7 @@ WrapSettings withPointSizes(WrapSettings settings, const Box& box, const PointCl
   {
     return settings;
   }
-  const double spacingGap = kPointGapPerNeighbourDistance * spacing;
+  const double spacingGap = kPointGapPerNeighbourDistance * std::max(spacing, cloud.sparseSpacing);
   settings.gapSize = spacingGap;
   // A dense cloud's spacing gap lies under the grid's floor: a finer field lowers the floor. A sparser
   // clean one's may span too few cells for the closing: a finer field resolves it.

@@ -83,13 +83,15 @@ Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const Distan
 // 1e-6 of their extent), so they enclose nothing. (checkPoints first: finite, not empty.)
 Status checkPointsEnclose(const PointList& points);
 // A point cloud as a wrap takes it, measured once: the nearest point, the median neighbour distance
-// (medianNeighbourDistance) and the surface the points sample (PointSurface, fitted at a few spacings;
-// none where the spacing is 0), which also measures their noise.
+// and that of the cloud's sparsest part (PointSpacing), and the surface the points sample
+// (PointSurface, fitted at a few spacings; none where the spacing is 0), which also measures their
+// noise.
 struct PointCloud
 {
   std::shared_ptr<const PointSource> points;
   std::shared_ptr<const PointSurface> surface;
   double spacing = 0;
+  double sparseSpacing = 0; // at least `spacing` where measured; 0 (none) counts as `spacing`
   double noise() const; // PointSurface::typicalNoise, 0 without a surface
 };
 PointCloud measureCloud(PointList points);

@@ -14,8 +14,9 @@ namespace shrinkwrap
 
 // How far apart a point set's points lie, over up to 20,000 of them (0 and 0 when all coincide):
 // `median`, the median distance from a point to its nearest neighbour at another position; and
-// `sparse`, as much or more: that spacing where the points are sparsest (a scan's far side), from the
-// 99th percentile of its local mean, so that a gap sized by it spans the sampling's holes there too.
+// `sparse`, as much or more: that spacing where the points are sparsest (a scan's far side; strays,
+// such as its outliers, aside), from the 99th percentile of its local mean, so that a gap sized by it
+// spans the sampling's holes there too.
 struct PointSpacing
 {
   double median = 0;

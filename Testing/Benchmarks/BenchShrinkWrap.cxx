@@ -202,10 +202,11 @@ std::vector<Vec3> sampledCloud(const TriangleSoup& target, const CloudSampling& 
   return cloud;
 }
 
-// Points sampled on the target (sampledCloud), wrapped by ours at its defaults, alpha_wrap_3 on the same points (alpha = diagonal / 20,
-// / 50, / 100, offset alpha / 30) and VTK's vtkSurfaceReconstructionFilter + contour at 0; every wrap
-// judged against the original mesh (the truth). With `out`, the cloud and the wraps are written as
-// <out>_target.vtp, <out>_shrinkwrap.vtp, <out>_alphawrap_<divisor>.vtp.
+// Points sampled on the target (sampledCloud), wrapped by ours at its defaults, alpha_wrap_3 on the
+// same points (alpha = diagonal / 20, / 50, / 100, offset alpha / 30) and VTK's
+// vtkSurfaceReconstructionFilter + contour at 0; every wrap judged against the original mesh (the
+// truth). With `out`, the cloud and the wraps are written as <out>_target.vtp, <out>_shrinkwrap.vtp,
+// <out>_alphawrap_<divisor>.vtp.
 void cloudRows(const TriangleSoup& target, const CloudSampling& sampling, const std::vector<std::pair<std::string, double>>& sets,
   const std::string& out, bool peers, bool withReconstruction, int repeats)
 {

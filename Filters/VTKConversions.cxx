@@ -522,10 +522,10 @@ void addStepFields(int step, double time, const std::string& status, vtkPolyData
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
 }
 
-WrapSummary summarize(vtkPolyData* output, double cell, int steps, double seconds)
+WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, double seconds)
 {
   WrapSummary summary;
-  summary.cell = cell;
+  summary.sizes = sizes;
   summary.steps = steps;
   summary.seconds = seconds;
   summary.vertices = static_cast<int>(output->GetNumberOfPoints());
@@ -559,14 +559,14 @@ WrapSummary summarize(vtkPolyData* output, double cell, int steps, double second
 std::string WrapSummary::text() const
 {
   char line[512];
-  const double c = this->cell > 0 ? this->cell : 1.0;
+  const double c = this->sizes.cell > 0 ? this->sizes.cell : 1.0;
   std::snprintf(line, sizeof(line),
     "%d steps in %.2f s, %d vertices: |distance| to the target median %.3g (%.2g cells), 95%% %.3g (%.2g cells), "
     "largest %.3g (%.2g cells); %.2f%% of triangles under 20 degrees; closed 2-manifold, %lld self-intersecting "
-    "triangle pairs",
+    "triangle pairs; Gap Size %.3g, Target Edge Length %.3g, field cell %.3g",
     this->steps, this->seconds, this->vertices, this->distance[0], this->distance[0] / c, this->distance[1],
     this->distance[1] / c, this->distance[2], this->distance[2] / c, 100 * this->smallAngleShare,
-    this->selfIntersections);
+    this->selfIntersections, this->sizes.gap, this->sizes.length, this->sizes.cell);
   return line;
 }
 
@@ -581,10 +581,12 @@ void addSummary(const WrapSummary& summary, vtkPolyData* output)
     fields->AddArray(a);
   };
   const std::array<double, 3>& d = summary.distance;
-  const double c = summary.cell > 0 ? summary.cell : 1.0;
+  const double c = summary.sizes.cell > 0 ? summary.sizes.cell : 1.0;
   add("DistancePercentiles", { d[0], d[1], d[2] });
   add("DistancePercentilesInCells", { d[0] / c, d[1] / c, d[2] / c });
-  add("FieldCellSize", { summary.cell });
+  add("FieldCellSize", { summary.sizes.cell });
+  add("GapSize", { summary.sizes.gap });
+  add("TargetEdgeLength", { summary.sizes.length });
   add("SmallAngleShare", { summary.smallAngleShare });
   add("ComputeSeconds", { summary.seconds });
   vtkNew<vtkStringArray> text;

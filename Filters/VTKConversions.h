@@ -107,22 +107,32 @@ void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const Tar
 // (the number of crossing pairs).
 void addSelfIntersections(const SelfIntersections& crossings, vtkPolyData* output);
 
+// The sizes a wrap runs with, the automatic ones resolved (the panel's Field Cell Size, Chosen Gap
+// Size and Chosen Target Edge Length); 0 where unknown.
+struct WrapSizes
+{
+  double cell = 0;   // of the distance field moved on
+  double gap = 0;    // Gap Size
+  double length = 0; // Target Edge Length L
+};
+
 // A wrap's figures as a user reads them, from its output's own arrays: |Distance| at the vertices
 // (median, 95th percentile, largest; in the target's units and in cells of the field), the share of
-// triangles with MinAngle under 20 degrees, self-intersecting pairs (SelfIntersections).
+// triangles with MinAngle under 20 degrees, self-intersecting pairs (SelfIntersections), and the
+// sizes the run used.
 struct WrapSummary
 {
   std::array<double, 3> distance{}; // median, 95th percentile (value at rank floor(p (n - 1))), largest
-  double cell = 0;                  // of the distance field
+  WrapSizes sizes;
   double smallAngleShare = 0;       // of the triangles
   long long selfIntersections = 0;
   int vertices = 0, steps = 0;
   double seconds = 0;               // computing (fields, start and steps) in this session
   std::string text() const;         // one line: what the output messages show at the end of a run
 };
-WrapSummary summarize(vtkPolyData* output, double cell, int steps, double seconds);
-// As field data: DistancePercentiles, DistancePercentilesInCells (3 each), FieldCellSize,
-// SmallAngleShare, ComputeSeconds, Summary (the text).
+WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, double seconds);
+// As field data: DistancePercentiles, DistancePercentilesInCells (3 each), FieldCellSize, GapSize,
+// TargetEdgeLength, SmallAngleShare, ComputeSeconds, Summary (the text).
 void addSummary(const WrapSummary& summary, vtkPolyData* output);
 
 // A filter's output object (REQUEST_DATA_OBJECT): a composite of the same kind as `composite`, or,

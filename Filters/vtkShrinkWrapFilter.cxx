@@ -305,16 +305,24 @@ int vtkShrinkWrapFilter::RequestInformation(
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), n + 1);
   const double range[2] = { 0.0, n * tau };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  onAllCores([&] { this->FieldCellSize = this->PlannedFieldCell(inputVector); }); // its points' spacing is threaded
+  onAllCores([&] { this->ShowSizes(this->PlannedSizes(inputVector)); }); // its points' spacing is threaded
   return 1;
 }
 
+void vtkShrinkWrapFilter::ShowSizes(const convert::WrapSizes& sizes)
+{
+  this->FieldCellSize = sizes.cell;
+  this->ChosenGapSize = sizes.gap;
+  this->ChosenTargetEdgeLength = sizes.length;
+}
+
 // ParaView reads information properties after RequestInformation, not after RequestData, so the
-// cell is worked out here from the inputs as they stand (in the GUI the target has been shown by then;
+// sizes are worked out here from the inputs as they stand (in the GUI the target has been shown by then;
 // an update from here would break the composite executive's block-by-block pass): a connected field's
-// spacing as its pipeline information gives it, or the field placed as FieldsOf will place it. 0
-// while the target has not been computed yet; RequestData then sets the cell of the run.
-double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
+// spacing as its pipeline information gives it, or the field placed as FieldsOf will place it; the
+// automatic gap and edge length resolved as StartSession resolves them. 0 while the target has not
+// been computed yet; RequestData then sets the run's.
+convert::WrapSizes vtkShrinkWrapFilter::PlannedSizes(vtkInformationVector** inputVector)
 {
   std::vector<vtkDataObject*> inputs[2];
   for (int port = 0; port < 2; ++port)
@@ -327,31 +335,16 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
   vtkDataObject* target = nullptr;
   vtkImageData* field = nullptr;
   targetAndField(inputs[0], inputs[1].empty() ? nullptr : vtkImageData::SafeDownCast(inputs[1][0]), target, field);
-  if (field)
+  if (vtkCompositeDataSet::SafeDownCast(target) && !this->WrapBlocksTogether && !field)
   {
-    for (int port = 0; port < 2; ++port)
-    {
-      for (int c = 0; c < inputVector[port]->GetNumberOfInformationObjects(); ++c)
-      {
-        vtkInformation* info = inputVector[port]->GetInformationObject(c);
-        if (info->Get(vtkDataObject::DATA_OBJECT()) == field && info->Has(vtkDataObject::SPACING()))
-        {
-          return info->Get(vtkDataObject::SPACING())[0];
-        }
-      }
-    }
-    return field->GetSpacing()[0];
-  }
-  if (vtkCompositeDataSet::SafeDownCast(target) && !this->WrapBlocksTogether)
-  {
-    return 0; // each block has a field of its own
+    return {}; // each block has sizes of its own
   }
   const bool givenStart = this->GetNumberOfInputConnections(2) > 0;
   const convert::PolygonMeshes meshes = convert::polygonMeshes(target);
   Box box = convert::surfaceBounds(meshes.meshes);
   WrapSettings chosen = this->CoreSettings();
   const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, !box.empty());
-  if (target && use.points) // as StartSession
+  if (target && use.points && !field) // as StartSession
   {
     PointList points = wrappedPoints(target, meshes.meshes.empty() ? nullptr : meshes.meshes[0], use);
     if (checkPoints(points))
@@ -364,12 +357,35 @@ double vtkShrinkWrapFilter::PlannedFieldCell(vtkInformationVector** inputVector)
     }
     else if (!use.polygons) // no points: no field (StartSession says why); beside polygons: the polygons'
     {
-      return 0;
+      return {};
     }
   }
-  GridLattice lattice;
   const WrapSettings settings = chosen.resolved(box);
-  return placeGrid(box, settings.fieldPlacement(box, givenStart), lattice) ? lattice.spacing.x() : 0.0;
+  convert::WrapSizes sizes;
+  if (!box.empty())
+  {
+    sizes = { 0, settings.gapSize, settings.targetLength };
+  }
+  if (field)
+  {
+    sizes.cell = field->GetSpacing()[0];
+    for (int port = 0; port < 2; ++port)
+    {
+      for (int c = 0; c < inputVector[port]->GetNumberOfInformationObjects(); ++c)
+      {
+        vtkInformation* info = inputVector[port]->GetInformationObject(c);
+        if (info->Get(vtkDataObject::DATA_OBJECT()) == field && info->Has(vtkDataObject::SPACING()))
+        {
+          sizes.cell = info->Get(vtkDataObject::SPACING())[0];
+        }
+      }
+    }
+  }
+  else if (GridLattice lattice; !box.empty() && placeGrid(box, settings.fieldPlacement(box, givenStart), lattice))
+  {
+    sizes.cell = lattice.spacing.x();
+  }
+  return sizes;
 }
 
 int vtkShrinkWrapFilter::RequestUpdateExtent(
@@ -771,7 +787,7 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
     output->SetDataSet(block, wrap);
   }
   this->SetProgressShiftScale(0, 1);
-  this->FieldCellSize = 0; // each block had a field of its own
+  this->ShowSizes({}); // each block had sizes of its own
 }
 
 void vtkShrinkWrapFilter::Execute(const std::function<bool()>& start, vtkInformation* outInfo, vtkPolyData* output)
@@ -881,9 +897,9 @@ void vtkShrinkWrapFilter::WriteOutput(int wanted, bool finished, vtkPolyData* ou
                                            << " triangle pairs cross; cell array SelfIntersecting).");
   }
   convert::addStepFields(surface.step, surface.step * this->TimeStep, status, output);
-  this->FieldCellSize = s.fields().driving.grid().lattice().spacing.x();
-  const convert::WrapSummary summary =
-    convert::summarize(output, this->FieldCellSize, surface.step, this->ComputeSeconds);
+  this->ShowSizes({ s.fields().driving.grid().lattice().spacing.x(), s.settings().gapSize, s.settings().targetLength });
+  const convert::WrapSummary summary = convert::summarize(
+    output, { this->FieldCellSize, this->ChosenGapSize, this->ChosenTargetEdgeLength }, surface.step, this->ComputeSeconds);
   convert::addSummary(summary, output);
   if (finished)
   {
@@ -929,4 +945,6 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "WrapBlocksTogether: " << this->WrapBlocksTogether << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "FieldCellSize: " << this->FieldCellSize << "\n";
+  os << indent << "ChosenGapSize: " << this->ChosenGapSize << "\n";
+  os << indent << "ChosenTargetEdgeLength: " << this->ChosenTargetEdgeLength << "\n";
 }

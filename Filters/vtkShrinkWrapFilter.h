@@ -31,9 +31,9 @@
  * step; later times then show the last good surface), and a run summary from these arrays: Summary (one
  * line, also sent to the output window at the end of a run), DistancePercentiles and
  * DistancePercentilesInCells (median, 95th percentile and largest |Distance| at the vertices),
- * FieldCellSize, SmallAngleShare (triangles with MinAngle under 20 degrees), SelfIntersections and
- * ComputeSeconds. Under MPI the surface is piece 0; other pieces
- * are empty.
+ * FieldCellSize, GapSize and TargetEdgeLength (as used, automatic ones resolved), SmallAngleShare
+ * (triangles with MinAngle under 20 degrees), SelfIntersections and ComputeSeconds. Under MPI the
+ * surface is piece 0; other pieces are empty.
  *
  * A composite target (multiblock, partitioned) is wrapped block by block, each block as if alone, with
  * a session and a step cache of its own (time moves every block; CacheMemoryLimit applies per block);
@@ -80,6 +80,7 @@ namespace shrinkwrap
 namespace convert
 {
 struct GatheredInput;
+struct WrapSizes;
 }
 struct PointCloud;
 class WrapSession;
@@ -328,6 +329,13 @@ public:
   /// by block: each block has a field of its own), and the run's once it ran. Shown in the panel
   /// (Field Cell Size).
   vtkGetMacro(FieldCellSize, double);
+  /// The Gap Size and the Target Edge Length the wrap runs with: the properties' values, or where they
+  /// are 0 the automatic ones (for a point cloud from its spacing), planned and then the run's as
+  /// FieldCellSize is; 0 for a composite target wrapped block by block. Shown in the panel (Chosen
+  /// Gap Size, Chosen Target Edge Length), a start for setting either by hand. L is used when
+  /// Remeshing is on.
+  vtkGetMacro(ChosenGapSize, double);
+  vtkGetMacro(ChosenTargetEdgeLength, double);
 
   ///@{
   /// Wrap a composite target's blocks together, as one target (one surface of all of them, as after
@@ -439,8 +447,9 @@ private:
   void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
   // A distributed target as gathered on this rank (convert::wholeInput).
   std::unique_ptr<shrinkwrap::convert::GatheredInput> Gathered;
-  // The cell size of the field the next run will move on (FieldCellSize).
-  double PlannedFieldCell(vtkInformationVector** inputVector);
+  // The sizes the next run will use (FieldCellSize, ChosenGapSize, ChosenTargetEdgeLength).
+  shrinkwrap::convert::WrapSizes PlannedSizes(vtkInformationVector** inputVector);
+  void ShowSizes(const shrinkwrap::convert::WrapSizes& sizes);
   bool StartSession(vtkDataSet* target, vtkImageData* field, vtkPolyData* initial);
   bool FieldsOf(vtkPolyData* target, vtkImageData* image, bool givenStart, const shrinkwrap::WrapSettings& settings,
     shrinkwrap::WrapFields& fields);
@@ -452,7 +461,9 @@ private:
   std::unique_ptr<shrinkwrap::WrapSession> Current;
   vtkMTimeType CurrentKey = 0;
   double ComputeSeconds = 0; // fields, start and steps of the current session
-  double FieldCellSize = 0;  // planned in RequestInformation, the run's in RequestData
+  double FieldCellSize = 0;  // planned in RequestInformation, the run's in RequestData; as are
+  double ChosenGapSize = 0;  // these two
+  double ChosenTargetEdgeLength = 0;
   // The sessions of a composite target's blocks (by flat index), swapped into Current while each runs.
   struct BlockSession
   {

@@ -138,6 +138,7 @@ public:
   Status edit(const std::function<void(SurfaceMesh&)>& change);
 
   const WrapFields& fields() const { return this->Fields; }
+  const WrapSettings& settings() const { return this->Settings; }
   const Evolver& evolver() const { return *this->Evolution; }
   int computedSteps() const { return this->Computed; }
   int lastGood() const { return this->LastGood; }

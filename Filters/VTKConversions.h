@@ -108,7 +108,7 @@ void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const Tar
 void addSelfIntersections(const SelfIntersections& crossings, vtkPolyData* output);
 
 // The sizes a wrap runs with, the automatic ones resolved (the panel's Field Cell Size, Chosen Gap
-// Size and Chosen Target Edge Length); 0 where unknown.
+// Size and Chosen Edge Length); 0 where unknown.
 struct WrapSizes
 {
   double cell = 0;   // of the distance field moved on

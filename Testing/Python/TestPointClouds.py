@@ -220,7 +220,7 @@ planned.UpdatePipeline(planned.NumberOfSteps * planned.TimeStep)
 ran = servermanager.Fetch(planned).GetFieldData().GetArray("FieldCellSize").GetValue(0)
 check(shown > 0 and shown == ran, "Field Cell Size of points before the run: %.6g, the run's: %.6g" % (shown, ran))
 
-# The panel's Chosen Gap Size and Chosen Target Edge Length: before the run as after it (field data
+# The panel's Chosen Gap Size and Chosen Edge Length: before the run as after it (field data
 # GapSize, TargetEdgeLength, and the summary line), the automatic ones from the points' median
 # nearest-neighbour distance (8 and 10 of it, withPointSizes; a uniform cloud's sparse part is its
 # median), and a Gap Size set by hand as set.
@@ -230,13 +230,13 @@ squared = ((sample[:, None, :] - sample[None, :, :]) ** 2).sum(axis=2)
 np.fill_diagonal(squared, np.inf)
 median = np.sort(np.sqrt(squared.min(axis=1)))[len(sample) // 2]
 diagonal = np.linalg.norm(sample.max(axis=0) - sample.min(axis=0))
-gap, length = planned.ChosenGapSize, planned.ChosenTargetEdgeLength
+gap, length = planned.ChosenGapSize, planned.ChosenEdgeLength
 expected_gap = max(8 * median, 1.5 * shown)
 expected_length = min(max(10 * median, diagonal / 200), diagonal / 50)
 check(abs(gap - expected_gap) < 1e-9 * gap and abs(length - expected_length) < 1e-9 * length and
       fd.GetArray("GapSize").GetValue(0) == gap and fd.GetArray("TargetEdgeLength").GetValue(0) == length and
       ("Gap Size %.3g" % gap) in fd.GetAbstractArray("Summary").GetValue(0),
-      "Chosen Gap Size %.6g (8 median spacings or 1.5 cells: %.6g), Chosen Target Edge Length %.6g (10 median "
+      "Chosen Gap Size %.6g (8 median spacings or 1.5 cells: %.6g), Chosen Edge Length %.6g (10 median "
       "spacings within diagonal / 200 and / 50: %.6g), before the run as in the run's field data and summary"
       % (gap, expected_gap, length, expected_length))
 planned.GapSize = 0.3

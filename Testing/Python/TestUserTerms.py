@@ -144,11 +144,11 @@ check(shown_before > 0 and shown_before == moved_on,
 bounds = fetched(surface).GetBounds()
 diagonal = float(np.linalg.norm(np.array(bounds[1::2]) - np.array(bounds[0::2])))
 ran = fetched(own).GetFieldData()
-check(own.ChosenGapSize == own.ChosenTargetEdgeLength and abs(own.ChosenGapSize - diagonal / 50) < 1e-9 * diagonal and
+check(own.ChosenGapSize == own.ChosenEdgeLength and abs(own.ChosenGapSize - diagonal / 50) < 1e-9 * diagonal and
       ran.GetArray("GapSize").GetValue(0) == own.ChosenGapSize and
-      ran.GetArray("TargetEdgeLength").GetValue(0) == own.ChosenTargetEdgeLength,
-      "a mesh's Chosen Gap Size and Chosen Target Edge Length are the automatic diagonal / 50 (%.6g, %.6g; "
-      "diagonal %.6g), before the run as in it" % (own.ChosenGapSize, own.ChosenTargetEdgeLength, diagonal))
+      ran.GetArray("TargetEdgeLength").GetValue(0) == own.ChosenEdgeLength,
+      "a mesh's Chosen Gap Size and Chosen Edge Length are the automatic diagonal / 50 (%.6g, %.6g; "
+      "diagonal %.6g), before the run as in it" % (own.ChosenGapSize, own.ChosenEdgeLength, diagonal))
 reused = ShrinkWrap(Input=surface, DistanceField=grid)
 reused.UpdatePipelineInformation()
 check(reused.FieldCellSize == spacing and

@@ -360,9 +360,10 @@ convert::WrapSizes vtkShrinkWrapFilter::PlannedSizes(vtkInformationVector** inpu
       return {};
     }
   }
+  const bool sized = !box.empty() && box.min.allFinite() && box.max.allFinite(); // as StartSession checks
   const WrapSettings settings = chosen.resolved(box);
   convert::WrapSizes sizes;
-  if (!box.empty())
+  if (sized)
   {
     sizes = { 0, settings.gapSize, settings.targetLength };
   }
@@ -381,7 +382,7 @@ convert::WrapSizes vtkShrinkWrapFilter::PlannedSizes(vtkInformationVector** inpu
       }
     }
   }
-  else if (GridLattice lattice; !box.empty() && placeGrid(box, settings.fieldPlacement(box, givenStart), lattice))
+  else if (GridLattice lattice; sized && placeGrid(box, settings.fieldPlacement(box, givenStart), lattice))
   {
     sizes.cell = lattice.spacing.x();
   }

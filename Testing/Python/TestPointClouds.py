@@ -414,10 +414,15 @@ for name, coordinates, said in bad:
     wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
     text = " ".join(said_errors)
     out = servermanager.Fetch(wrap)
-    check(out.GetNumberOfPoints() == 0 and said in text,
-          "Shrink Wrap of %s: an error that says '%s', an empty output" % (name, said))
+    sizes = (wrap.FieldCellSize, wrap.ChosenGapSize, wrap.ChosenEdgeLength)
+    check(out.GetNumberOfPoints() == 0 and said in text and all(math.isfinite(v) and v >= 0 for v in sizes),
+          "Shrink Wrap of %s: an error that says '%s', an empty output, the panel's sizes finite (%s)"
+          % (name, said, sizes))
     wrap.Input = cloud(sphere_points(2000))
     wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
-    check(servermanager.Fetch(wrap).GetNumberOfPoints() > 0, "... and the pipeline lives on: it wraps a sphere's points")
+    good = servermanager.Fetch(wrap)
+    check(good.GetNumberOfPoints() > 0 and good.GetFieldData().GetArray("GapSize").GetValue(0) > 0,
+          "... and the pipeline lives on: it wraps a sphere's points (its Gap Size %.4g)"
+          % good.GetFieldData().GetArray("GapSize").GetValue(0))
 
 finish()

@@ -254,6 +254,7 @@ public:
   /// nearest-neighbour distances (of their sparsest part where their density varies: a scan's far
   /// side) and at least 1.5 cells of the field (for a dense cloud the field is
   /// made finer, see Resolution). A value below half a cell of the distance field bridges nothing.
+  /// ChosenGapSize reports the value used.
   vtkSetClampMacro(GapSize, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(GapSize, double);
   ///@}
@@ -278,7 +279,7 @@ public:
   /// L in the target's units. Default 0: automatic, the target's bounding-box diagonal / 50; for
   /// points, 10 median nearest-neighbour distances, between diagonal / 200 and diagonal / 50, or on a
   /// noisy cloud up to 16 times its noise (the RMS height of the points over their fitted surface),
-  /// at most diagonal / 30.
+  /// at most diagonal / 30. ChosenTargetEdgeLength reports the value used.
   vtkSetClampMacro(TargetEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(TargetEdgeLength, double);
   /// Adaptive edge length, in units of TargetEdgeLength L: the edges may shorten to

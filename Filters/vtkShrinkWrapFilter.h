@@ -333,8 +333,8 @@ public:
   /// The Gap Size and the Target Edge Length the wrap runs with: the properties' values, or where they
   /// are 0 the automatic ones (for a point cloud from its spacing), planned and then the run's as
   /// FieldCellSize is; 0 for a composite target wrapped block by block. Shown in the panel (Chosen
-  /// Gap Size, Chosen Edge Length), a start for setting either by hand. L is used when
-  /// Remeshing is on.
+  /// Gap Size, Chosen Edge Length; pvpython: ChosenGapSize, ChosenEdgeLength, the run's after
+  /// UpdatePropertyInformation()), a start for setting either by hand. L is used when Remeshing is on.
   vtkGetMacro(ChosenGapSize, double);
   vtkGetMacro(ChosenTargetEdgeLength, double);
 

@@ -420,9 +420,14 @@ for name, coordinates, said in bad:
           % (name, said, sizes))
     wrap.Input = cloud(sphere_points(2000))
     wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+    # Its input was not computed when its information was updated (nothing planned): the panel's
+    # sizes are the run's once read again, as the field data holds them.
     good = servermanager.Fetch(wrap)
-    check(good.GetNumberOfPoints() > 0 and good.GetFieldData().GetArray("GapSize").GetValue(0) > 0,
-          "... and the pipeline lives on: it wraps a sphere's points (its Gap Size %.4g)"
-          % good.GetFieldData().GetArray("GapSize").GetValue(0))
+    wrap.UpdatePropertyInformation()
+    ran_gap = good.GetFieldData().GetArray("GapSize").GetValue(0)
+    check(good.GetNumberOfPoints() > 0 and ran_gap > 0 and wrap.ChosenGapSize == ran_gap and
+          wrap.ChosenEdgeLength == good.GetFieldData().GetArray("TargetEdgeLength").GetValue(0),
+          "... and the pipeline lives on: it wraps a sphere's points (its Gap Size %.4g; the panel's, read "
+          "again after the run, %.4g)" % (ran_gap, wrap.ChosenGapSize))
 
 finish()

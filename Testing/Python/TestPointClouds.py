@@ -403,6 +403,7 @@ bad = (("one point", [[1, 2, 3]], "coincide"), ("all points equal", [[1, 2, 3]] 
        ("a NaN point", [[0, 0, 0], [math.nan, 1, 1], [1, 0, 1], [0, 1, 1]], "NaN"))
 for name, coordinates, said in bad:
     source = cloud(np.array(coordinates, dtype=float))
+    source.UpdatePipeline()  # shown first, as in the GUI: the panel's sizes are planned on these points
     wrap = ShrinkWrap(Input=source)
     said_errors = []
 

@@ -560,13 +560,18 @@ std::string WrapSummary::text() const
 {
   char line[512];
   const double c = this->sizes.cell > 0 ? this->sizes.cell : 1.0;
+  char length[64] = "Remeshing off"; // no L is used then
+  if (this->sizes.length > 0)
+  {
+    std::snprintf(length, sizeof(length), "Target Edge Length %.3g", this->sizes.length);
+  }
   std::snprintf(line, sizeof(line),
     "%d steps in %.2f s, %d vertices: |distance| to the target median %.3g (%.2g cells), 95%% %.3g (%.2g cells), "
     "largest %.3g (%.2g cells); %.2f%% of triangles under 20 degrees; closed 2-manifold, %lld self-intersecting "
-    "triangle pairs; Gap Size %.3g, Target Edge Length %.3g, field cell %.3g",
+    "triangle pairs; Gap Size %.3g, %s, field cell %.3g",
     this->steps, this->seconds, this->vertices, this->distance[0], this->distance[0] / c, this->distance[1],
     this->distance[1] / c, this->distance[2], this->distance[2] / c, 100 * this->smallAngleShare,
-    this->selfIntersections, this->sizes.gap, this->sizes.length, this->sizes.cell);
+    this->selfIntersections, this->sizes.gap, length, this->sizes.cell);
   return line;
 }
 

@@ -113,7 +113,7 @@ struct WrapSizes
 {
   double cell = 0;   // of the distance field moved on
   double gap = 0;    // Gap Size
-  double length = 0; // Target Edge Length L
+  double length = 0; // Target Edge Length L (0 with Remeshing off)
 };
 
 // A wrap's figures as a user reads them, from its output's own arrays: |Distance| at the vertices

@@ -365,7 +365,7 @@ convert::WrapSizes vtkShrinkWrapFilter::PlannedSizes(vtkInformationVector** inpu
   convert::WrapSizes sizes;
   if (sized)
   {
-    sizes = { 0, settings.gapSize, settings.targetLength };
+    sizes = { 0, settings.gapSize, settings.evolution.remeshing.targetLength }; // 0: Remeshing off
   }
   if (field)
   {
@@ -898,7 +898,8 @@ void vtkShrinkWrapFilter::WriteOutput(int wanted, bool finished, vtkPolyData* ou
                                            << " triangle pairs cross; cell array SelfIntersecting).");
   }
   convert::addStepFields(surface.step, surface.step * this->TimeStep, status, output);
-  this->ShowSizes({ s.fields().driving.grid().lattice().spacing.x(), s.settings().gapSize, s.settings().targetLength });
+  this->ShowSizes({ s.fields().driving.grid().lattice().spacing.x(), s.settings().gapSize,
+    s.settings().evolution.remeshing.targetLength });
   const convert::WrapSummary summary = convert::summarize(
     output, { this->FieldCellSize, this->ChosenGapSize, this->ChosenTargetEdgeLength }, surface.step, this->ComputeSeconds);
   convert::addSummary(summary, output);

@@ -334,7 +334,8 @@ public:
   /// are 0 the automatic ones (for a point cloud from its spacing), planned and then the run's as
   /// FieldCellSize is; 0 for a composite target wrapped block by block. Shown in the panel (Chosen
   /// Gap Size, Chosen Edge Length; pvpython: ChosenGapSize, ChosenEdgeLength, the run's after
-  /// UpdatePropertyInformation()), a start for setting either by hand. L is used when Remeshing is on.
+  /// UpdatePropertyInformation()), a start for setting either by hand. The edge length is 0 when
+  /// Remeshing is off: no L is used then.
   vtkGetMacro(ChosenGapSize, double);
   vtkGetMacro(ChosenTargetEdgeLength, double);
 

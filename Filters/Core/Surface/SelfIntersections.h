@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -83,6 +84,7 @@ private:
   // Whether any of `made` crosses a triangle of the surface not incident to a or b (the edit's
   // vertices whose triangles it replaces; -1: none), or an earlier edit's triangle.
   bool anyCrosses(const std::vector<Made>& made, int a, int b);
+  bool guards(const Box& box) const; // whether edits overlapping `box` are checked
   void add(const std::vector<Made>& made);
   const TriangleGrid& grid(); // built at the first question, with the edits so far indexed
   void index(int edit);       // into EditCells
@@ -92,11 +94,23 @@ private:
   const std::vector<std::array<int, 3>>& Triangles;
   std::vector<Box> Only;
   std::unique_ptr<TriangleGrid> OnlyBinned; // Only in a grid: it may hold thousands
+  Box OnlyAround;                           // the box around them, when binned
+  // The surface's triangles a question may meet (Ids: which), and the edits in the grid's cells: all,
+  // or where a few boxes are guarded, those within Reach of them (a question's box overlaps a guarded
+  // one and is at most Reach wide), until a wider question asks for all (IndexAll). A pass that
+  // collapses a whole contour makes tens of thousands of edits, few near the guarded boxes.
   std::unique_ptr<TriangleGrid> Grid;
-  std::vector<Made> Edits;
-  std::vector<char> Merged;                  // per vertex: merged by the pass (its old triangles are gone)
-  std::unordered_map<int, Vec3> MovedTo;     // the kept vertices of the pass's merges
-  std::unordered_map<std::uint64_t, std::vector<int>> EditCells; // in the grid's cells
+  std::vector<int> Ids;
+  std::deque<Made> Edits; // no copies as it grows
+  // Per vertex: merged by the pass (its old triangles are gone), as the merge's kept vertex, at
+  // MovedTo, or as the gone one.
+  enum : char { kUntouched = 0, kGone = 1, kKept = 2 };
+  std::vector<char> Merged;
+  std::vector<Vec3> MovedTo;
+  std::unordered_map<std::uint64_t, std::vector<int>> EditCells;
+  double Cell = 0; // the grid's
+  double Reach = 0;
+  bool IndexAll = false;
 };
 
 } // namespace shrinkwrap

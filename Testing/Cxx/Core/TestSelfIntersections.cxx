@@ -4,9 +4,10 @@
 // The grid behind them reports every overlapping box once (against brute force); fronts that meet are
 // held back pair by pair, and named; many small boxes are covered by few lattice cells; the guard of a
 // pass's edits refuses a flip whose new triangles would cross the surface, and remembers the pass's own
-// edits, and a guard limited to boxes (thousands of them) checks only what reaches into them; the
-// crossings edits made are found from the triangles they made alone; a round of edits is checked once
-// and made again guarded near its crossings, then everywhere.
+// edits, and a guard limited to boxes (thousands of them) checks only what reaches into them, looking
+// everywhere when a question reaches far; the crossings edits made are found from the triangles they
+// made alone; a round of edits is checked once and made again guarded near its crossings, then
+// everywhere.
 // And TargetDistance: near the target, d and grad d are the exact distance and direction to it.
 #include "CheckedEdits.h"
 #include "Icosphere.h"
@@ -259,6 +260,60 @@ void guardedEdits()
     "beside an empty box, only the box that holds the flip guards it");
 }
 
+// A guard limited to a box looks only at the triangles and edits within reach of it, as far as its
+// questions are narrow; a wide question (a fan from the box to the far side of the surface) makes it
+// look at all of them, as a guard of everything does.
+void guardReach()
+{
+  // A flat sheet at z = 0 over [0, 10]^2 (edges of 0.5, so the reach is a few units), then loose
+  // vertices for the edits and questions.
+  std::vector<Vec3> x;
+  std::vector<std::array<int, 3>> sheet;
+  const int n = 20;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+    {
+      x.emplace_back(0.5 * i, 0.5 * j, 0.0);
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+    {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      sheet.push_back({ a, b, d });
+      sheet.push_back({ a, d, c });
+    }
+  auto loose = [&](const Vec3& p) {
+    x.push_back(p);
+    return static_cast<int>(x.size()) - 1;
+  };
+  // Near A = (1, 1): a small triangle above the sheet, and one through it.
+  const int keepA = loose({ 1, 1, 1 }), goneA = loose({ 1, 1, 1 }), a1 = loose({ 1.2, 1, 1 }), a2 = loose({ 1, 1.2, 1 });
+  const int b1 = loose({ 1.2, 1, -0.3 }), b2 = loose({ 1, 1.2, -0.3 });
+  // Near B = (9, 9): a pass's edit, a flat triangle at z = 1 over (9, 9).
+  const int keepB = loose({ 8.5, 8.5, 1 }), goneB = loose({ 8.5, 8.5, 1 }), p = loose({ 9.8, 8.8, 1 }), q = loose({ 8.8, 9.8, 1 });
+  // The wide question: a fan triangle from A to a vertical edge through that edit at (9, 9).
+  const int u = loose({ 9, 9, 0.5 }), w = loose({ 9, 9, 1.5 });
+  const Box atA{ Vec3(0.5, 0.5, -0.5), Vec3(1.5, 1.5, 1.5) };
+
+  auto ask = [&](CrossingGuard& guard) {
+    std::array<bool, 3> answers{};
+    answers[0] = guard.collapseCrosses(keepA, goneA, x[keepA], { { a1, a2 } }); // narrow, above: no
+    answers[1] = guard.collapseCrosses(keepA, goneA, Vec3(1, 1, 0.3), { { b1, b2 } }); // narrow, through the sheet
+    guard.addCollapse(keepB, goneB, x[keepB], { { p, q } });
+    answers[2] = guard.collapseCrosses(keepA, goneA, x[keepA], { { u, w } }); // wide, through B's edit
+    return answers;
+  };
+  CrossingGuard everything(x, sheet), limited(x, sheet, { atA });
+  const std::array<bool, 3> all = ask(everything), some = ask(limited);
+  SW_CHECK(!all[0] && all[1] && all[2], "a guard of everything: the narrow triangle above the sheet passes, the one "
+                                        "through it and the wide fan through the far edit are refused");
+  SW_CHECK(some == all, "a guard of a box at A answers the same: the far edit, indexed nowhere while the questions "
+                        "were narrow, is seen by the wide one (" << some[0] << some[1] << some[2] << ")");
+  CrossingGuard elsewhere(x, sheet, { Box{ Vec3(4, 4, -1), Vec3(5, 5, 1) } });
+  SW_CHECK(!elsewhere.collapseCrosses(keepA, goneA, Vec3(1, 1, 0.3), { { b1, b2 } }),
+    "a guard of a box away from A lets the crossing at A be");
+}
+
 // The crossings edits made, from the triangles the edits made: a vertex pushed through the sphere (its
 // fan is new), the same surface renumbered (nothing new), a split (its halves are new, and cross
 // nothing).
@@ -385,6 +440,7 @@ int TestSelfIntersections(int, char*[])
   heldFronts();
   coveringCells();
   guardedEdits();
+  guardReach();
   newCrossings();
   checkedEdits();
   exactNearTarget();

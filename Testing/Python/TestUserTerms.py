@@ -151,14 +151,15 @@ check(own.ChosenGapSize == own.ChosenEdgeLength and abs(own.ChosenGapSize - diag
       "diagonal %.6g), before the run as in it" % (own.ChosenGapSize, own.ChosenEdgeLength, diagonal))
 fixed = ShrinkWrap(Input=surface, Resolution=48, Remeshing=0, NumberOfSteps=5)
 fixed.UpdatePipelineInformation()
-planned = fixed.ChosenEdgeLength
+planned, planned_gap = fixed.ChosenEdgeLength, fixed.ChosenGapSize  # the gap shows the sizes were planned
 fixed_run = fetched(fixed).GetFieldData()
 fixed_summary = fixed_run.GetAbstractArray("Summary").GetValue(0)
-check(planned == 0 and fixed_run.GetArray("TargetEdgeLength").GetValue(0) == 0 and
+check(planned == 0 and planned_gap == own.ChosenGapSize and fixed_run.GetArray("TargetEdgeLength").GetValue(0) == 0 and
       "Remeshing off" in fixed_summary and "Target Edge Length" not in fixed_summary and
       fixed_run.GetArray("GapSize").GetValue(0) == own.ChosenGapSize,
-      "with Remeshing off no edge length is used: Chosen Edge Length %.6g, field data 0, the summary says "
-      "'Remeshing off' (%s)" % (planned, fixed_summary[fixed_summary.find("Gap Size"):]))
+      "with Remeshing off no edge length is used: Chosen Edge Length %.6g beside a planned Chosen Gap Size %.6g, "
+      "field data 0, the summary says 'Remeshing off' (%s)"
+      % (planned, planned_gap, fixed_summary[fixed_summary.find("Gap Size"):]))
 reused = ShrinkWrap(Input=surface, DistanceField=grid)
 reused.UpdatePipelineInformation()
 check(reused.FieldCellSize == spacing and

@@ -357,12 +357,9 @@ CrossingGuard::CrossingGuard(
     for (const Box& box : this->Only)
     {
       size += box.size().maxCoeff() / static_cast<double>(this->Only.size());
-    }
-    this->OnlyBinned = std::make_unique<TriangleGrid>(this->Only, size);
-    for (const Box& box : this->Only)
-    {
       this->OnlyAround.extend(box);
     }
+    this->OnlyBinned = std::make_unique<TriangleGrid>(this->Only, size);
   }
 }
 

@@ -5,7 +5,7 @@
 #ifndef ShrinkWrap_RankInputs_h
 #define ShrinkWrap_RankInputs_h
 
-#include "SlabDistance.h"
+#include "Distance/SlabDistance.h"
 
 #include <vtkSmartPointer.h>
 

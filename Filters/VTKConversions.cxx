@@ -1,8 +1,8 @@
 #include "VTKConversions.h"
 
-#include "ContourTopology.h"
+#include "Distance/ContourTopology.h"
 
-#include "MeshQuality.h"
+#include "Surface/MeshQuality.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>

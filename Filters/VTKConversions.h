@@ -4,14 +4,14 @@
 #ifndef ShrinkWrap_VTKConversions_h
 #define ShrinkWrap_VTKConversions_h
 
-#include "DistanceGrid.h"
-#include "PointTree.h"
-#include "TargetDistance.h"
-#include "SelfIntersections.h"
-#include "Status.h"
-#include "SurfaceGeometry.h"
-#include "TriangleSoup.h"
-#include "TriangleSurface.h"
+#include "Distance/DistanceGrid.h"
+#include "Distance/PointTree.h"
+#include "Distance/TargetDistance.h"
+#include "Surface/SelfIntersections.h"
+#include "Common/Status.h"
+#include "Surface/SurfaceGeometry.h"
+#include "Distance/TriangleSoup.h"
+#include "Surface/TriangleSurface.h"
 
 #include <vtkCompositeDataSet.h>
 #include <vtkInformation.h>

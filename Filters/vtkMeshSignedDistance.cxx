@@ -1,8 +1,8 @@
 #include "vtkMeshSignedDistance.h"
 
-#include "Parallel.h"
-#include "SignedDistance.h"
-#include "SlabDistance.h"
+#include "Common/Parallel.h"
+#include "Distance/SignedDistance.h"
+#include "Distance/SlabDistance.h"
 #include "VTKConversions.h"
 #include "RankInputs.h"
 

@@ -2,8 +2,8 @@
 // finest shrinking-sphere test of Section 4.2 end to end (2562 vertices, 384 steps), for both linear
 // solvers: conjugate gradients on the symmetric form (default) and the paper's BiCGSTAB.
 //   BenchEvolver [--steps N]
-#include "Evolver.h"
-#include "Icosphere.h"
+#include "Evolution/Evolver.h"
+#include "Surface/Icosphere.h"
 
 #include <vtkSMPTools.h>
 

@@ -10,8 +10,8 @@
 // whole grid, by maskSdf), and VTK's vtkImplicitPolyDataDistance at every node where it finishes in
 // about a minute. Accuracy (mean and max |error| in cells against exact distances from the AABB tree)
 // is shown for the fields that cover the whole grid. Prints a Markdown table.
-#include "Parallel.h"
-#include "SignedDistance.h"
+#include "Common/Parallel.h"
+#include "Distance/SignedDistance.h"
 #include "TestUtilities.h"
 #include "WrapEvaluation.h"
 #include "vtkMeshSignedDistance.h"

@@ -2,13 +2,13 @@
 #ifndef ShrinkWrap_TestUtilities_h
 #define ShrinkWrap_TestUtilities_h
 
-#include "AABBTree.h"
-#include "SurfaceMesh.h"
+#include "Distance/AABBTree.h"
+#include "Surface/SurfaceMesh.h"
 #include "VTKConversions.h"
-#include "GridLattice.h"
-#include "TriangleDistance.h"
-#include "TriangleSoup.h"
-#include "WindingNumber.h"
+#include "Distance/GridLattice.h"
+#include "Distance/TriangleDistance.h"
+#include "Distance/TriangleSoup.h"
+#include "Distance/WindingNumber.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>

@@ -5,11 +5,11 @@
 #ifndef ShrinkWrap_WrapEvaluation_h
 #define ShrinkWrap_WrapEvaluation_h
 
-#include "AABBTree.h"
-#include "MeshQuality.h"
-#include "SelfIntersections.h"
-#include "SurfaceMesh.h"
-#include "TriangleSoup.h"
+#include "Distance/AABBTree.h"
+#include "Surface/MeshQuality.h"
+#include "Surface/SelfIntersections.h"
+#include "Surface/SurfaceMesh.h"
+#include "Distance/TriangleSoup.h"
 
 #include <functional>
 #include <random>

@@ -2,7 +2,7 @@
 #ifndef ShrinkWrap_Box_h
 #define ShrinkWrap_Box_h
 
-#include "Vec3.h"
+#include "Common/Vec3.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "HugePages.h"
+#include "Common/HugePages.h"
 
 #include <cstdint>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "IndexedTriangles.h"
+#include "Common/IndexedTriangles.h"
 
 #include <algorithm>
 

@@ -4,7 +4,7 @@
 #ifndef ShrinkWrap_IndexedTriangles_h
 #define ShrinkWrap_IndexedTriangles_h
 
-#include "Box.h"
+#include "Common/Box.h"
 
 #include <array>
 #include <vector>

@@ -48,7 +48,7 @@ bool forChunks(long long n, int chunks, const Progress& progress, Body&& body);
 
 } // namespace shrinkwrap
 
-#include "Parallel.h"
+#include "Common/Parallel.h"
 
 template <typename Body>
 bool shrinkwrap::forChunks(long long n, int chunks, const Progress& progress, Body&& body)
@@ -57,7 +57,7 @@ bool shrinkwrap::forChunks(long long n, int chunks, const Progress& progress, Bo
   for (int c = 0; c < chunks; ++c)
   {
     const long long first = n * c / chunks, last = n * (c + 1) / chunks;
-    parallelFor(first, last, [&](vtkIdType b, vtkIdType e) { body(b, e); });
+    parallelFor(first, last, [&](Index b, Index e) { body(b, e); });
     if (!progress.report(static_cast<double>(c + 1) / chunks))
     {
       return false;

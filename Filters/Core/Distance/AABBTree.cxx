@@ -1,7 +1,6 @@
-#include "AABBTree.h"
-#include "Parallel.h"
+#include "Distance/AABBTree.h"
+#include "Common/Parallel.h"
 
-#include <vtkSMPTools.h>
 
 #include <algorithm>
 #include <numeric>

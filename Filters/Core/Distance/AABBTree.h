@@ -6,9 +6,9 @@
 #ifndef ShrinkWrap_AABBTree_h
 #define ShrinkWrap_AABBTree_h
 
-#include "BoxHierarchy.h"
-#include "TriangleDistance.h"
-#include "TriangleSoup.h"
+#include "Distance/BoxHierarchy.h"
+#include "Distance/TriangleDistance.h"
+#include "Distance/TriangleSoup.h"
 
 #include <array>
 #include <limits>

@@ -4,7 +4,7 @@
 #ifndef ShrinkWrap_BoxHierarchy_h
 #define ShrinkWrap_BoxHierarchy_h
 
-#include "Box.h"
+#include "Common/Box.h"
 
 #include <vector>
 

@@ -1,8 +1,6 @@
-#include "ClosestPointSweep.h"
-#include "Parallel.h"
+#include "Distance/ClosestPointSweep.h"
+#include "Common/Parallel.h"
 
-#include <vtkSMPThreadLocal.h>
-#include <vtkSMPTools.h>
 
 #include <algorithm>
 #include <array>
@@ -173,9 +171,9 @@ void envelopePass(
   const auto& d = lattice.dims;
   const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2; // the two other axes, u varying fastest
   const std::int64_t strides[3] = { 1, d[0], static_cast<std::int64_t>(d[0]) * d[1] };
-  vtkSMPThreadLocal<Envelope> scratch;
+  ThreadLocal<Envelope> scratch;
   parallelFor(0, static_cast<long long>(d[w]), [&](long long b, long long e) {
-    Envelope& envelope = scratch.Local();
+    Envelope& envelope = scratch.local();
     for (long long lw = b; lw < e; ++lw)
     {
       const double cw = lattice.origin[w] + lw * lattice.spacing[w];
@@ -232,10 +230,10 @@ void forEachColumn(const SlabPlanes& planes, std::int32_t* siteOfNode, F&& f)
   const GridLattice& whole = planes.whole;
   const int nx = whole.dims[0], ny = whole.dims[1];
   const std::int64_t plane = static_cast<std::int64_t>(nx) * ny;
-  vtkSMPThreadLocal<Envelope> scratch;
-  parallelFor(0, ny, [&](vtkIdType b, vtkIdType e) {
-    Envelope& envelope = scratch.Local();
-    for (vtkIdType j = b; j < e; ++j)
+  ThreadLocal<Envelope> scratch;
+  parallelFor(0, ny, [&](Index b, Index e) {
+    Envelope& envelope = scratch.local();
+    for (Index j = b; j < e; ++j)
     {
       for (int i = 0; i < nx; ++i)
       {

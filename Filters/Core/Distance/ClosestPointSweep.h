@@ -8,8 +8,8 @@
 #ifndef ShrinkWrap_ClosestPointSweep_h
 #define ShrinkWrap_ClosestPointSweep_h
 
-#include "GridLattice.h"
-#include "Progress.h"
+#include "Distance/GridLattice.h"
+#include "Common/Progress.h"
 
 #include <array>
 #include <cstdint>

@@ -1,7 +1,7 @@
-#include "ConfirmedSides.h"
+#include "Distance/ConfirmedSides.h"
 
-#include "Parallel.h"
-#include "SelfIntersections.h"
+#include "Common/Parallel.h"
+#include "Surface/SelfIntersections.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -75,8 +75,8 @@ std::vector<char> patchesOk(const TriangleSoup& welded, const WindingNumber& win
 {
   const std::vector<int> samples = samplesOf(patch, welded.points.size());
   std::vector<char> sampleOk(samples.size());
-  parallelFor(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType s = b; s < e; ++s)
+  parallelFor(0, static_cast<Index>(samples.size()), [&](Index b, Index e) {
+    for (Index s = b; s < e; ++s)
     {
       const auto& tri = welded.triangles[samples[s]];
       const Vec3 c = (welded.points[tri[0]] + welded.points[tri[1]] + welded.points[tri[2]]) / 3.0;

@@ -7,8 +7,8 @@
 #ifndef ShrinkWrap_ConfirmedSides_h
 #define ShrinkWrap_ConfirmedSides_h
 
-#include "TriangleSoup.h"
-#include "WindingNumber.h"
+#include "Distance/TriangleSoup.h"
+#include "Distance/WindingNumber.h"
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-#include "ConsistentOrientation.h"
+#include "Distance/ConsistentOrientation.h"
 
 #include <algorithm>
 #include <cstdint>

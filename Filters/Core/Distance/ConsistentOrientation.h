@@ -7,7 +7,7 @@
 #ifndef ShrinkWrap_ConsistentOrientation_h
 #define ShrinkWrap_ConsistentOrientation_h
 
-#include "TriangleSoup.h"
+#include "Distance/TriangleSoup.h"
 
 namespace shrinkwrap
 {

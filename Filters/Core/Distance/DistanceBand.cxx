@@ -1,9 +1,8 @@
-#include "DistanceBand.h"
-#include "Parallel.h"
+#include "Distance/DistanceBand.h"
+#include "Common/Parallel.h"
 
-#include "TriangleBoxOverlap.h"
+#include "Distance/TriangleBoxOverlap.h"
 
-#include <vtkSMPThreadLocal.h>
 
 #include <algorithm>
 #include <cmath>

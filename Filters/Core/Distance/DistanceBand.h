@@ -4,9 +4,9 @@
 #ifndef ShrinkWrap_DistanceBand_h
 #define ShrinkWrap_DistanceBand_h
 
-#include "DistanceSource.h"
-#include "GridLattice.h"
-#include "Progress.h"
+#include "Distance/DistanceSource.h"
+#include "Distance/GridLattice.h"
+#include "Common/Progress.h"
 
 #include <array>
 #include <cstdint>

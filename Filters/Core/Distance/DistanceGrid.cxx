@@ -1,6 +1,6 @@
-#include "DistanceGrid.h"
+#include "Distance/DistanceGrid.h"
 
-#include "Parallel.h"
+#include "Common/Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +54,7 @@ DistanceGrid DistanceGrid::refined() const
   }
   std::vector<float> values(fine.nodeCount());
   const auto at = [this](int i, int j, int k) { return this->Values[this->Lattice.index(i, j, k)]; };
-  parallelFor(0, fine.dims[2], 1, [&](vtkIdType kb, vtkIdType ke) {
+  parallelFor(0, fine.dims[2], 1, [&](Index kb, Index ke) {
     for (int k = static_cast<int>(kb); k < ke; ++k)
     {
       for (int j = 0; j < fine.dims[1]; ++j)

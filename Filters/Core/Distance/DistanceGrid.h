@@ -4,7 +4,7 @@
 #ifndef ShrinkWrap_DistanceGrid_h
 #define ShrinkWrap_DistanceGrid_h
 
-#include "GridLattice.h"
+#include "Distance/GridLattice.h"
 
 #include <vector>
 

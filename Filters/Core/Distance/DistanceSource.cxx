@@ -1,8 +1,8 @@
-#include "DistanceSource.h"
+#include "Distance/DistanceSource.h"
 
-#include "ConfirmedSides.h"
-#include "ConsistentOrientation.h"
-#include "Outline.h"
+#include "Distance/ConfirmedSides.h"
+#include "Distance/ConsistentOrientation.h"
+#include "Distance/Outline.h"
 
 #include <cmath>
 

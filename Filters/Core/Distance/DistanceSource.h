@@ -8,12 +8,12 @@
 #ifndef ShrinkWrap_DistanceSource_h
 #define ShrinkWrap_DistanceSource_h
 
-#include "AABBTree.h"
-#include "GridLattice.h"
-#include "Progress.h"
-#include "PseudoNormals.h"
-#include "TriangleSoup.h"
-#include "WindingNumber.h"
+#include "Distance/AABBTree.h"
+#include "Distance/GridLattice.h"
+#include "Common/Progress.h"
+#include "Distance/PseudoNormals.h"
+#include "Distance/TriangleSoup.h"
+#include "Distance/WindingNumber.h"
 
 #include <cstdint>
 #include <limits>

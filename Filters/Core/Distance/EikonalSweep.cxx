@@ -1,8 +1,6 @@
-#include "EikonalSweep.h"
-#include "Parallel.h"
+#include "Distance/EikonalSweep.h"
+#include "Common/Parallel.h"
 
-#include <vtkSMPThreadLocal.h>
-#include <vtkSMPTools.h>
 
 #include <algorithm>
 #include <array>

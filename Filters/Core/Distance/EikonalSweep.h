@@ -3,8 +3,8 @@
 #ifndef ShrinkWrap_EikonalSweep_h
 #define ShrinkWrap_EikonalSweep_h
 
-#include "GridLattice.h"
-#include "Progress.h"
+#include "Distance/GridLattice.h"
+#include "Common/Progress.h"
 
 #include <cstdint>
 

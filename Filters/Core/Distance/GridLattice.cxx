@@ -1,4 +1,4 @@
-#include "GridLattice.h"
+#include "Distance/GridLattice.h"
 
 #include <cmath>
 #include <limits>

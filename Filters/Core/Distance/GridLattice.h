@@ -3,8 +3,8 @@
 #ifndef ShrinkWrap_GridLattice_h
 #define ShrinkWrap_GridLattice_h
 
-#include "Box.h"
-#include "Status.h"
+#include "Common/Box.h"
+#include "Common/Status.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "GridRegions.h"
+#include "Distance/GridRegions.h"
 
 #include <algorithm>
 #include <array>

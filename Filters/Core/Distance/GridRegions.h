@@ -5,7 +5,7 @@
 #ifndef ShrinkWrap_GridRegions_h
 #define ShrinkWrap_GridRegions_h
 
-#include "GridLattice.h"
+#include "Distance/GridLattice.h"
 
 #include <vector>
 

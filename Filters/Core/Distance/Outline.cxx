@@ -1,9 +1,8 @@
-#include "Outline.h"
-#include "Parallel.h"
+#include "Distance/Outline.h"
+#include "Common/Parallel.h"
 
-#include "TriangleBoxOverlap.h"
+#include "Distance/TriangleBoxOverlap.h"
 
-#include <vtkSMPThreadLocal.h>
 
 #include <cmath>
 #include <iterator>
@@ -99,19 +98,17 @@ bool outlineCells(const TriangleSoup& soup, const GridLattice& lattice, const Pr
   }
   for (int depth = 0; size > 1; ++depth, size /= 2)
   {
-    vtkSMPThreadLocal<std::vector<OctreeNode>> next;
+    ThreadLocal<std::vector<OctreeNode>> next;
     parallelFor(0, static_cast<long long>(level.size()), 1, [&](long long b, long long e) {
-      auto& out = next.Local();
+      auto& out = next.local();
       for (long long n = b; n < e; ++n)
       {
         subdivide(soup, lattice, last, level[n], out);
       }
     });
     level.clear();
-    for (auto& part : next)
-    {
-      std::move(part.begin(), part.end(), std::back_inserter(level));
-    }
+    next.forEach(
+      [&](std::vector<OctreeNode>& part) { std::move(part.begin(), part.end(), std::back_inserter(level)); });
     if (!progress.report(static_cast<double>(depth + 1) / levels))
     {
       return false;

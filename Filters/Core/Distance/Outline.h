@@ -3,9 +3,9 @@
 #ifndef ShrinkWrap_Outline_h
 #define ShrinkWrap_Outline_h
 
-#include "GridLattice.h"
-#include "Progress.h"
-#include "TriangleSoup.h"
+#include "Distance/GridLattice.h"
+#include "Common/Progress.h"
+#include "Distance/TriangleSoup.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "PointGrid.h"
+#include "Distance/PointGrid.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 #ifndef ShrinkWrap_PointGrid_h
 #define ShrinkWrap_PointGrid_h
 
-#include "Box.h"
-#include "HugePages.h"
+#include "Common/Box.h"
+#include "Common/HugePages.h"
 
 #include <array>
 #include <cmath>

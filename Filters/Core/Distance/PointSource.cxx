@@ -1,8 +1,8 @@
-#include "PointSource.h"
+#include "Distance/PointSource.h"
 
-#include "Parallel.h"
-#include "PointGrid.h"
-#include "PointTree.h"
+#include "Common/Parallel.h"
+#include "Distance/PointGrid.h"
+#include "Distance/PointTree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -111,8 +111,8 @@ double sparseFactor(const std::vector<Vec3>& sample, const std::vector<double>& 
   const std::size_t every = std::max<std::size_t>(1, sample.size() / kLocalMeans);
   std::vector<double> local((sample.size() + every - 1) / every);
   constexpr double kStray = -1;
-  parallelFor(0, static_cast<vtkIdType>(local.size()), [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType k = b; k < e; ++k)
+  parallelFor(0, static_cast<Index>(local.size()), [&](Index b, Index e) {
+    for (Index k = b; k < e; ++k)
     {
       double sum = 0;
       int count = 0;
@@ -150,8 +150,8 @@ PointSpacing PointSource::spacing() const
   }
   const std::size_t stride = std::max<std::size_t>(1, n / 20000);
   std::vector<double> nearest((n + stride - 1) / stride);
-  parallelFor(0, static_cast<vtkIdType>(nearest.size()), [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType k = b; k < e; ++k)
+  parallelFor(0, static_cast<Index>(nearest.size()), [&](Index b, Index e) {
+    for (Index k = b; k < e; ++k)
     {
       const Vec3& p = points[k * stride];
       nearest[k] = std::sqrt(tree.nearest(p, std::numeric_limits<double>::infinity(), true).squaredDistance);

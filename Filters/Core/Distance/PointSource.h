@@ -4,8 +4,8 @@
 #ifndef ShrinkWrap_PointSource_h
 #define ShrinkWrap_PointSource_h
 
-#include "DistanceSource.h"
-#include "PointTree.h"
+#include "Distance/DistanceSource.h"
+#include "Distance/PointTree.h"
 
 #include <vector>
 

@@ -1,6 +1,6 @@
-#include "PointSurface.h"
+#include "Distance/PointSurface.h"
 
-#include "Parallel.h"
+#include "Common/Parallel.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -97,8 +97,8 @@ PointSurface::PointSurface(std::shared_ptr<const PointSource> points, double wid
 {
   const PointList& all = this->Points->points();
   this->Scales.resize(kScales);
-  parallelFor(0, kScales, 1, [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType s = b; s < e; ++s)
+  parallelFor(0, kScales, 1, [&](Index b, Index e) {
+    for (Index s = b; s < e; ++s)
     {
       if (s == 0) // every point: binned from the source's own (a copy is fresh memory, and slow)
       {
@@ -278,9 +278,9 @@ void PointSurface::measureTypical()
   }
   std::vector<int> scales(sample.size());
   std::vector<double> roughnesses(sample.size(), -1); // -1: no plane fits
-  parallelFor(0, static_cast<vtkIdType>(sample.size()), 0, [&](vtkIdType b, vtkIdType e) {
+  parallelFor(0, static_cast<Index>(sample.size()), 0, [&](Index b, Index e) {
     Neighbourhood around;
-    for (vtkIdType k = b; k < e; ++k)
+    for (Index k = b; k < e; ++k)
     {
       Patch patch;
       const int s = this->flatScale(all[sample[k]], around, patch);

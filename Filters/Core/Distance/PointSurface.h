@@ -15,8 +15,8 @@
 #ifndef ShrinkWrap_PointSurface_h
 #define ShrinkWrap_PointSurface_h
 
-#include "PointGrid.h"
-#include "PointSource.h"
+#include "Distance/PointGrid.h"
+#include "Distance/PointSource.h"
 
 #include <atomic>
 #include <cstdint>

@@ -1,6 +1,6 @@
-#include "PointTree.h"
+#include "Distance/PointTree.h"
 
-#include "Parallel.h"
+#include "Common/Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,8 +94,8 @@ PointTree::PointTree(const Vec3* points, std::size_t count, int leafSize)
     const Box box = boxOf(entries, 0, n);
     const int middle = splitAtMedian(entries, 0, n, box);
     std::vector<HierarchyNode> halves[2];
-    parallelFor(0, 2, 1, [&](vtkIdType b, vtkIdType e) {
-      for (vtkIdType h = b; h < e; ++h)
+    parallelFor(0, 2, 1, [&](Index b, Index e) {
+      for (Index h = b; h < e; ++h)
       {
         halves[h].reserve(2 * n / leafSize + 2); // leaves of at least leafSize / 2 of n / 2 points
         buildSubtree(entries, h == 0 ? 0 : middle, h == 0 ? middle : n, 1, leafSize, halves[h]);

@@ -5,8 +5,8 @@
 #ifndef ShrinkWrap_PointTree_h
 #define ShrinkWrap_PointTree_h
 
-#include "BoxHierarchy.h"
-#include "HugePages.h"
+#include "Distance/BoxHierarchy.h"
+#include "Common/HugePages.h"
 
 #include <limits>
 #include <vector>

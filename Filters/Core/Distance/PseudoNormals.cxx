@@ -1,4 +1,4 @@
-#include "PseudoNormals.h"
+#include "Distance/PseudoNormals.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,8 @@
 #ifndef ShrinkWrap_PseudoNormals_h
 #define ShrinkWrap_PseudoNormals_h
 
-#include "TriangleDistance.h"
-#include "TriangleSoup.h"
+#include "Distance/TriangleDistance.h"
+#include "Distance/TriangleSoup.h"
 
 #include <array>
 #include <cstdint>

@@ -1,7 +1,6 @@
-#include "SignVotes.h"
-#include "Parallel.h"
+#include "Distance/SignVotes.h"
+#include "Common/Parallel.h"
 
-#include <vtkSMPTools.h>
 
 namespace shrinkwrap
 {

@@ -8,7 +8,7 @@
 #ifndef ShrinkWrap_SignVotes_h
 #define ShrinkWrap_SignVotes_h
 
-#include "DistanceBand.h"
+#include "Distance/DistanceBand.h"
 
 #include <array>
 #include <cstdint>

@@ -1,17 +1,17 @@
-#include "SignedDistance.h"
-#include "Parallel.h"
+#include "Distance/SignedDistance.h"
 
-#include "DistanceSource.h"
-#include "DistanceBand.h"
-#include "ClosestPointSweep.h"
-#include "EikonalSweep.h"
-#include "PointSource.h"
-#include "UnionSource.h"
-#include "SignVotes.h"
-#include "WindingSign.h"
+#include "Common/Memory.h"
+#include "Common/Parallel.h"
 
-#include <vtksys/SystemInformation.hxx>
-#include <vtkSMPTools.h>
+#include "Distance/DistanceSource.h"
+#include "Distance/DistanceBand.h"
+#include "Distance/ClosestPointSweep.h"
+#include "Distance/EikonalSweep.h"
+#include "Distance/PointSource.h"
+#include "Distance/UnionSource.h"
+#include "Distance/SignVotes.h"
+#include "Distance/WindingSign.h"
+
 
 #include <chrono>
 #include <cmath>
@@ -360,9 +360,7 @@ Status checkMemory(const GridLattice& lattice, const SignedDistanceSettings& set
   // In floating point: the node count of an absurd grid overflows 64-bit integers.
   const double nodes = static_cast<double>(lattice.dims[0]) * lattice.dims[1] * lattice.dims[2];
   const double needed = nodes * (sizeof(float) + workingBytesPerNode(settings));
-  vtksys::SystemInformation system;
-  system.RunMemoryCheck();
-  const double available = 1024.0 * 1024.0 * static_cast<double>(system.GetAvailablePhysicalMemory());
+  const double available = availableMemory();
   if (needed > 0.8 * available)
   {
     std::ostringstream why;

@@ -2,13 +2,13 @@
 #ifndef ShrinkWrap_SignedDistance_h
 #define ShrinkWrap_SignedDistance_h
 
-#include "DistanceGrid.h"
-#include "DistanceSource.h"
-#include "GridLattice.h"
-#include "PointSource.h"
-#include "Progress.h"
-#include "Status.h"
-#include "TriangleSoup.h"
+#include "Distance/DistanceGrid.h"
+#include "Distance/DistanceSource.h"
+#include "Distance/GridLattice.h"
+#include "Distance/PointSource.h"
+#include "Common/Progress.h"
+#include "Common/Status.h"
+#include "Distance/TriangleSoup.h"
 
 #include <cstdint>
 #include <memory>

@@ -1,11 +1,11 @@
-#include "SlabDistance.h"
+#include "Distance/SlabDistance.h"
 
-#include "ClosestPointSweep.h"
-#include "DistanceBand.h"
-#include "PointSource.h"
-#include "UnionSource.h"
-#include "SignVotes.h"
-#include "WindingSign.h"
+#include "Distance/ClosestPointSweep.h"
+#include "Distance/DistanceBand.h"
+#include "Distance/PointSource.h"
+#include "Distance/UnionSource.h"
+#include "Distance/SignVotes.h"
+#include "Distance/WindingSign.h"
 
 #include <algorithm>
 #include <cstring>

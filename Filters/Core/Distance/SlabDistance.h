@@ -9,7 +9,7 @@
 #ifndef ShrinkWrap_SlabDistance_h
 #define ShrinkWrap_SlabDistance_h
 
-#include "SignedDistance.h"
+#include "Distance/SignedDistance.h"
 
 #include <vector>
 

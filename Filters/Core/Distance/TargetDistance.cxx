@@ -1,4 +1,4 @@
-#include "TargetDistance.h"
+#include "Distance/TargetDistance.h"
 
 #include <algorithm>
 #include <cmath>

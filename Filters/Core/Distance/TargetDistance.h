@@ -6,8 +6,8 @@
 #ifndef ShrinkWrap_TargetDistance_h
 #define ShrinkWrap_TargetDistance_h
 
-#include "DistanceGrid.h"
-#include "DistanceSource.h"
+#include "Distance/DistanceGrid.h"
+#include "Distance/DistanceSource.h"
 
 #include <memory>
 

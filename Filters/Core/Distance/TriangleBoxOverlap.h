@@ -4,7 +4,7 @@
 #ifndef ShrinkWrap_TriangleBoxOverlap_h
 #define ShrinkWrap_TriangleBoxOverlap_h
 
-#include "Box.h"
+#include "Common/Box.h"
 
 #include <cmath>
 

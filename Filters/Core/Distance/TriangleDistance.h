@@ -4,7 +4,7 @@
 #ifndef ShrinkWrap_TriangleDistance_h
 #define ShrinkWrap_TriangleDistance_h
 
-#include "Box.h"
+#include "Common/Box.h"
 
 #include <cstdint>
 

@@ -1,4 +1,4 @@
-#include "TriangleSoup.h"
+#include "Distance/TriangleSoup.h"
 
 #include <algorithm>
 #include <cmath>

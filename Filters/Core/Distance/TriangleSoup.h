@@ -4,7 +4,7 @@
 #ifndef ShrinkWrap_TriangleSoup_h
 #define ShrinkWrap_TriangleSoup_h
 
-#include "IndexedTriangles.h"
+#include "Common/IndexedTriangles.h"
 
 #include <cstdint>
 #include <functional>

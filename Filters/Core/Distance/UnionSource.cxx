@@ -1,4 +1,4 @@
-#include "UnionSource.h"
+#include "Distance/UnionSource.h"
 
 #include <algorithm>
 #include <utility>

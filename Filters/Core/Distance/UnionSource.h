@@ -5,7 +5,7 @@
 #ifndef ShrinkWrap_UnionSource_h
 #define ShrinkWrap_UnionSource_h
 
-#include "DistanceSource.h"
+#include "Distance/DistanceSource.h"
 
 #include <memory>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "WindingNumber.h"
+#include "Distance/WindingNumber.h"
 
 #include <algorithm>
 #include <cmath>

@@ -10,8 +10,8 @@
 #ifndef ShrinkWrap_WindingNumber_h
 #define ShrinkWrap_WindingNumber_h
 
-#include "AABBTree.h"
-#include "TriangleSoup.h"
+#include "Distance/AABBTree.h"
+#include "Distance/TriangleSoup.h"
 
 #include <array>
 #include <vector>

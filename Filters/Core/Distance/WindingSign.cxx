@@ -1,6 +1,6 @@
-#include "WindingSign.h"
+#include "Distance/WindingSign.h"
 
-#include "Parallel.h"
+#include "Common/Parallel.h"
 
 #include <atomic>
 #include <cmath>
@@ -15,8 +15,8 @@ std::vector<Vec3> trustedNormals(const DistanceSource& source, const DistanceBan
   const std::vector<char>& confirmed = source.sidesConfirmed();
   const std::size_t nb = band.nodes.size();
   std::vector<Vec3> normal(nb);
-  parallelFor(0, static_cast<vtkIdType>(nb), [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType k = b; k < e; ++k)
+  parallelFor(0, static_cast<Index>(nb), [&](Index b, Index e) {
+    for (Index k = b; k < e; ++k)
     {
       const int t = band.element[k];
       const bool trusted = band.sure[k] && t >= 0 && t < static_cast<int>(confirmed.size()) && confirmed[t];

@@ -8,8 +8,8 @@
 #ifndef ShrinkWrap_WindingSign_h
 #define ShrinkWrap_WindingSign_h
 
-#include "DistanceBand.h"
-#include "DistanceSource.h"
+#include "Distance/DistanceBand.h"
+#include "Distance/DistanceSource.h"
 
 #include <cstdint>
 

@@ -1,12 +1,12 @@
-#include "Evolver.h"
+#include "Evolution/Evolver.h"
 
-#include "CheckedEdits.h"
-#include "ControlFunctions.h"
-#include "CotanLaplacian.h"
-#include "EdgeFlips.h"
-#include "Parallel.h"
-#include "SelfIntersections.h"
-#include "TangentialRedistribution.h"
+#include "Remeshing/CheckedEdits.h"
+#include "Evolution/ControlFunctions.h"
+#include "Surface/CotanLaplacian.h"
+#include "Remeshing/EdgeFlips.h"
+#include "Common/Parallel.h"
+#include "Surface/SelfIntersections.h"
+#include "Evolution/TangentialRedistribution.h"
 
 #include <Eigen/IterativeLinearSolvers>
 

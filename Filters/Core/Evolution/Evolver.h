@@ -14,14 +14,14 @@
 #ifndef ShrinkWrap_Evolver_h
 #define ShrinkWrap_Evolver_h
 
-#include "EdgeCollapses.h"
-#include "EdgeFlips.h"
-#include "Progress.h"
-#include "Remesher.h"
-#include "RimCoverage.h"
-#include "Status.h"
-#include "SurfaceGeometry.h"
-#include "TargetDistance.h"
+#include "Remeshing/EdgeCollapses.h"
+#include "Remeshing/EdgeFlips.h"
+#include "Common/Progress.h"
+#include "Remeshing/Remesher.h"
+#include "Evolution/RimCoverage.h"
+#include "Common/Status.h"
+#include "Surface/SurfaceGeometry.h"
+#include "Distance/TargetDistance.h"
 
 #include <deque>
 #include <functional>

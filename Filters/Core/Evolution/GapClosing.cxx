@@ -1,9 +1,9 @@
-#include "GapClosing.h"
+#include "Evolution/GapClosing.h"
 
-#include "ClosestPointSweep.h"
-#include "DistanceSource.h"
-#include "GridRegions.h"
-#include "Parallel.h"
+#include "Distance/ClosestPointSweep.h"
+#include "Distance/DistanceSource.h"
+#include "Distance/GridRegions.h"
+#include "Common/Parallel.h"
 
 #include <algorithm>
 #include <cmath>

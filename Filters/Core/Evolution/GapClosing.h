@@ -14,8 +14,8 @@
 #ifndef ShrinkWrap_GapClosing_h
 #define ShrinkWrap_GapClosing_h
 
-#include "DistanceGrid.h"
-#include "Status.h"
+#include "Distance/DistanceGrid.h"
+#include "Common/Status.h"
 
 namespace shrinkwrap
 {

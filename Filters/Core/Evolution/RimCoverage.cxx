@@ -1,8 +1,8 @@
-#include "RimCoverage.h"
+#include "Evolution/RimCoverage.h"
 
-#include "Parallel.h"
-#include "TriangleDistance.h"
-#include "TriangleGrid.h"
+#include "Common/Parallel.h"
+#include "Distance/TriangleDistance.h"
+#include "Surface/TriangleGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -112,8 +112,8 @@ std::vector<Nearest> nearestPoints(const SurfaceMesh& mesh, const std::vector<Ve
   const auto& triangles = mesh.triangles();
   const TriangleGrid grid(y, triangles);
   std::vector<Nearest> hits(samples.size());
-  parallelFor(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType i = b; i < e; ++i)
+  parallelFor(0, static_cast<Index>(samples.size()), [&](Index b, Index e) {
+    for (Index i = b; i < e; ++i)
     {
       const Vec3& p = samples[i];
       Nearest& hit = hits[i];

@@ -7,7 +7,7 @@
 #ifndef ShrinkWrap_RimCoverage_h
 #define ShrinkWrap_RimCoverage_h
 
-#include "SurfaceMesh.h"
+#include "Surface/SurfaceMesh.h"
 
 #include <array>
 #include <vector>

@@ -1,6 +1,6 @@
-#include "StabilityScaling.h"
+#include "Evolution/StabilityScaling.h"
 
-#include "Icosphere.h"
+#include "Surface/Icosphere.h"
 
 #include <cmath>
 

@@ -1,13 +1,13 @@
-#include "StartingSurface.h"
+#include "Evolution/StartingSurface.h"
 
-#include "CheckedEdits.h"
-#include "ContourTopology.h"
-#include "Components.h"
-#include "Icosphere.h"
-#include "Relaxation.h"
-#include "Remesher.h"
-#include "SelfIntersections.h"
-#include "SurfaceGeometry.h"
+#include "Remeshing/CheckedEdits.h"
+#include "Distance/ContourTopology.h"
+#include "Surface/Components.h"
+#include "Surface/Icosphere.h"
+#include "Remeshing/Relaxation.h"
+#include "Remeshing/Remesher.h"
+#include "Surface/SelfIntersections.h"
+#include "Surface/SurfaceGeometry.h"
 
 #include <algorithm>
 

@@ -4,11 +4,11 @@
 #ifndef ShrinkWrap_StartingSurface_h
 #define ShrinkWrap_StartingSurface_h
 
-#include "DistanceGrid.h"
-#include "EdgeFlips.h"
-#include "Status.h"
-#include "SurfaceMesh.h"
-#include "TriangleSurface.h"
+#include "Distance/DistanceGrid.h"
+#include "Remeshing/EdgeFlips.h"
+#include "Common/Status.h"
+#include "Surface/SurfaceMesh.h"
+#include "Surface/TriangleSurface.h"
 
 #include <functional>
 #include <limits>

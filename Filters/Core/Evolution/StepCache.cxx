@@ -1,4 +1,4 @@
-#include "StepCache.h"
+#include "Evolution/StepCache.h"
 
 #include <set>
 

@@ -4,7 +4,7 @@
 #ifndef ShrinkWrap_StepCache_h
 #define ShrinkWrap_StepCache_h
 
-#include "Vec3.h"
+#include "Common/Vec3.h"
 
 #include <array>
 #include <map>

@@ -1,9 +1,8 @@
-#include "TangentialRedistribution.h"
-#include "CotanLaplacian.h"
-#include "Parallel.h"
+#include "Evolution/TangentialRedistribution.h"
+#include "Surface/CotanLaplacian.h"
+#include "Common/Parallel.h"
 
 #include <Eigen/IterativeLinearSolvers>
-#include <vtkSMPTools.h>
 
 namespace shrinkwrap
 {

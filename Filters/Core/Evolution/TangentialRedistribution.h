@@ -9,7 +9,7 @@
 #ifndef ShrinkWrap_TangentialRedistribution_h
 #define ShrinkWrap_TangentialRedistribution_h
 
-#include "SurfaceGeometry.h"
+#include "Surface/SurfaceGeometry.h"
 
 #include <Eigen/SparseCore>
 

@@ -1,10 +1,10 @@
-#include "WrapSession.h"
+#include "Evolution/WrapSession.h"
 
-#include "GapClosing.h"
-#include "Parallel.h"
-#include "PointSurface.h"
-#include "UnionSource.h"
-#include "StabilityScaling.h"
+#include "Evolution/GapClosing.h"
+#include "Common/Parallel.h"
+#include "Distance/PointSurface.h"
+#include "Distance/UnionSource.h"
+#include "Evolution/StabilityScaling.h"
 
 #include <Eigen/Eigenvalues>
 

@@ -4,11 +4,11 @@
 #ifndef ShrinkWrap_WrapSession_h
 #define ShrinkWrap_WrapSession_h
 
-#include "Evolver.h"
-#include "PointSource.h"
-#include "PointSurface.h"
-#include "StartingSurface.h"
-#include "StepCache.h"
+#include "Evolution/Evolver.h"
+#include "Distance/PointSource.h"
+#include "Distance/PointSurface.h"
+#include "Evolution/StartingSurface.h"
+#include "Evolution/StepCache.h"
 
 #include <array>
 #include <memory>

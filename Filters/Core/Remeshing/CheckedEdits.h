@@ -7,9 +7,9 @@
 #ifndef ShrinkWrap_CheckedEdits_h
 #define ShrinkWrap_CheckedEdits_h
 
-#include "Box.h"
-#include "SelfIntersections.h"
-#include "SurfaceMesh.h"
+#include "Common/Box.h"
+#include "Surface/SelfIntersections.h"
+#include "Surface/SurfaceMesh.h"
 
 #include <utility>
 #include <vector>

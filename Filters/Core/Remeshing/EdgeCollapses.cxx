@@ -1,6 +1,6 @@
-#include "EdgeCollapses.h"
+#include "Remeshing/EdgeCollapses.h"
 
-#include "SurfaceGeometry.h"
+#include "Surface/SurfaceGeometry.h"
 
 #include <utility>
 

@@ -6,8 +6,8 @@
 #ifndef ShrinkWrap_EdgeCollapses_h
 #define ShrinkWrap_EdgeCollapses_h
 
-#include "SelfIntersections.h"
-#include "SurfaceMesh.h"
+#include "Surface/SelfIntersections.h"
+#include "Surface/SurfaceMesh.h"
 
 #include <array>
 #include <vector>

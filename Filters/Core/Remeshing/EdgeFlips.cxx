@@ -1,7 +1,7 @@
-#include "EdgeFlips.h"
+#include "Remeshing/EdgeFlips.h"
 
-#include "SelfIntersections.h"
-#include "SurfaceGeometry.h"
+#include "Surface/SelfIntersections.h"
+#include "Surface/SurfaceGeometry.h"
 
 #include <algorithm>
 #include <cmath>

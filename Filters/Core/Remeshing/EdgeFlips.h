@@ -6,8 +6,8 @@
 #ifndef ShrinkWrap_EdgeFlips_h
 #define ShrinkWrap_EdgeFlips_h
 
-#include "Box.h"
-#include "SurfaceMesh.h"
+#include "Common/Box.h"
+#include "Surface/SurfaceMesh.h"
 
 #include <array>
 #include <cmath>

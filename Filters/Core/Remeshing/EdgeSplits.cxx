@@ -1,4 +1,4 @@
-#include "EdgeSplits.h"
+#include "Remeshing/EdgeSplits.h"
 
 namespace shrinkwrap
 {

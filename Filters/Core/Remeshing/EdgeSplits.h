@@ -3,7 +3,7 @@
 #ifndef ShrinkWrap_EdgeSplits_h
 #define ShrinkWrap_EdgeSplits_h
 
-#include "SurfaceMesh.h"
+#include "Surface/SurfaceMesh.h"
 
 #include <array>
 #include <vector>

@@ -1,6 +1,6 @@
-#include "Relaxation.h"
+#include "Remeshing/Relaxation.h"
 
-#include "SurfaceGeometry.h"
+#include "Surface/SurfaceGeometry.h"
 
 namespace shrinkwrap
 {

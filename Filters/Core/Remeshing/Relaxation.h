@@ -4,8 +4,8 @@
 #ifndef ShrinkWrap_Relaxation_h
 #define ShrinkWrap_Relaxation_h
 
-#include "EdgeFlips.h"
-#include "SurfaceMesh.h"
+#include "Remeshing/EdgeFlips.h"
+#include "Surface/SurfaceMesh.h"
 
 namespace shrinkwrap
 {

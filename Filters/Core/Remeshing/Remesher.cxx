@@ -1,9 +1,9 @@
-#include "Remesher.h"
+#include "Remeshing/Remesher.h"
 
-#include "EdgeSplits.h"
-#include "Relaxation.h"
-#include "SelfIntersections.h"
-#include "SurfaceGeometry.h"
+#include "Remeshing/EdgeSplits.h"
+#include "Remeshing/Relaxation.h"
+#include "Surface/SelfIntersections.h"
+#include "Surface/SurfaceGeometry.h"
 
 #include <algorithm>
 #include <cmath>

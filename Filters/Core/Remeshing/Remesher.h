@@ -7,10 +7,10 @@
 #ifndef ShrinkWrap_Remesher_h
 #define ShrinkWrap_Remesher_h
 
-#include "EdgeCollapses.h"
-#include "EdgeFlips.h"
-#include "Status.h"
-#include "SurfaceMesh.h"
+#include "Remeshing/EdgeCollapses.h"
+#include "Remeshing/EdgeFlips.h"
+#include "Common/Status.h"
+#include "Surface/SurfaceMesh.h"
 
 namespace shrinkwrap
 {

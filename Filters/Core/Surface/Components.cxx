@@ -1,4 +1,4 @@
-#include "Components.h"
+#include "Surface/Components.h"
 
 #include <algorithm>
 #include <numeric>

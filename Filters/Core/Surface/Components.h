@@ -4,7 +4,7 @@
 #ifndef ShrinkWrap_Components_h
 #define ShrinkWrap_Components_h
 
-#include "TriangleSurface.h"
+#include "Surface/TriangleSurface.h"
 
 namespace shrinkwrap
 {

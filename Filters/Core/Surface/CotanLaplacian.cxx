@@ -1,4 +1,4 @@
-#include "CotanLaplacian.h"
+#include "Surface/CotanLaplacian.h"
 
 #include <algorithm>
 

@@ -7,7 +7,7 @@
 #ifndef ShrinkWrap_CotanLaplacian_h
 #define ShrinkWrap_CotanLaplacian_h
 
-#include "SurfaceMesh.h"
+#include "Surface/SurfaceMesh.h"
 
 #include <Eigen/SparseCore>
 

@@ -1,4 +1,4 @@
-#include "Icosphere.h"
+#include "Surface/Icosphere.h"
 
 #include <cmath>
 #include <cstdint>

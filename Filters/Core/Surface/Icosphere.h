@@ -4,7 +4,7 @@
 #ifndef ShrinkWrap_Icosphere_h
 #define ShrinkWrap_Icosphere_h
 
-#include "TriangleSurface.h"
+#include "Surface/TriangleSurface.h"
 
 namespace shrinkwrap
 {

@@ -1,6 +1,6 @@
-#include "MeshQuality.h"
+#include "Surface/MeshQuality.h"
 
-#include "SurfaceGeometry.h"
+#include "Surface/SurfaceGeometry.h"
 
 #include <cmath>
 #include <limits>

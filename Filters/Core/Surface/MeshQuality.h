@@ -5,7 +5,7 @@
 #ifndef ShrinkWrap_MeshQuality_h
 #define ShrinkWrap_MeshQuality_h
 
-#include "Box.h"
+#include "Common/Box.h"
 
 namespace shrinkwrap
 {

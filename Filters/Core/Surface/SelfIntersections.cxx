@@ -1,8 +1,8 @@
-#include "SelfIntersections.h"
+#include "Surface/SelfIntersections.h"
 
-#include "Box.h"
-#include "Parallel.h"
-#include "TriangleGrid.h"
+#include "Common/Box.h"
+#include "Common/Parallel.h"
+#include "Surface/TriangleGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -126,11 +126,11 @@ double roundingMargin(const TriangleGrid& grid)
 // The pairs each(b, e, out) finds over chunks [b, e) of [0, n), from all threads, in one order whatever
 // the threads did.
 template <typename Each>
-std::vector<std::pair<int, int>> pairsInParallel(vtkIdType n, vtkIdType grain, Each&& each)
+std::vector<std::pair<int, int>> pairsInParallel(Index n, Index grain, Each&& each)
 {
   std::vector<std::pair<int, int>> pairs;
   std::mutex lock;
-  parallelFor(0, n, grain, [&](vtkIdType b, vtkIdType e) {
+  parallelFor(0, n, grain, [&](Index b, Index e) {
     std::vector<std::pair<int, int>> found;
     each(b, e, found);
     const std::lock_guard<std::mutex> guard(lock);
@@ -150,14 +150,14 @@ std::vector<std::pair<int, int>> crossingPairs(
   // wider, swept over a step), widened by the margin against rounding, rule a pair out before its planes
   // are asked.
   std::vector<Box> boxes(triangles.size());
-  parallelFor(0, static_cast<vtkIdType>(triangles.size()), kCheapGrain, [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType t = b; t < e; ++t)
+  parallelFor(0, static_cast<Index>(triangles.size()), kCheapGrain, [&](Index b, Index e) {
+    for (Index t = b; t < e; ++t)
     {
       facets[t] = facetOf(x, triangles[t]);
       boxes[t] = Box::around(facets[t].p).widened(margin);
     }
   });
-  return pairsInParallel(grid.bucketCount(), 0, [&](vtkIdType b, vtkIdType e, std::vector<std::pair<int, int>>& found) {
+  return pairsInParallel(grid.bucketCount(), 0, [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
     grid.forEachOverlappingPair(static_cast<int>(b), static_cast<int>(e), [&](int s, int t) {
       if (boxes[s].overlaps(boxes[t]) && crosses(facets[s], facets[t], margin))
       {
@@ -172,9 +172,9 @@ std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid, const 
   const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& changed)
 {
   const double margin = roundingMargin(grid);
-  const auto n = static_cast<vtkIdType>(changed.size());
-  return pairsInParallel(n, kQueryGrain, [&](vtkIdType b, vtkIdType e, std::vector<std::pair<int, int>>& found) {
-    for (vtkIdType k = b; k < e; ++k)
+  const auto n = static_cast<Index>(changed.size());
+  return pairsInParallel(n, kQueryGrain, [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
+    for (Index k = b; k < e; ++k)
     {
       const int s = changed[k];
       const Facet fs = facetOf(x, triangles[s]);

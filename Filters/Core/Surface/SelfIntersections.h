@@ -6,10 +6,10 @@
 #ifndef ShrinkWrap_SelfIntersections_h
 #define ShrinkWrap_SelfIntersections_h
 
-#include "Box.h"
-#include "SurfaceMesh.h"
-#include "TriangleGrid.h"
-#include "Vec3.h"
+#include "Common/Box.h"
+#include "Surface/SurfaceMesh.h"
+#include "Surface/TriangleGrid.h"
+#include "Common/Vec3.h"
 
 #include <array>
 #include <cstdint>

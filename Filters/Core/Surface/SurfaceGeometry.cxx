@@ -1,7 +1,6 @@
-#include "SurfaceGeometry.h"
-#include "Parallel.h"
+#include "Surface/SurfaceGeometry.h"
+#include "Common/Parallel.h"
 
-#include <vtkSMPTools.h>
 
 #include <cmath>
 

@@ -5,7 +5,7 @@
 #ifndef ShrinkWrap_SurfaceGeometry_h
 #define ShrinkWrap_SurfaceGeometry_h
 
-#include "SurfaceMesh.h"
+#include "Surface/SurfaceMesh.h"
 
 #include <cmath>
 #include <vector>

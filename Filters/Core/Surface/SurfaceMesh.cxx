@@ -1,6 +1,6 @@
-#include "SurfaceMesh.h"
+#include "Surface/SurfaceMesh.h"
 
-#include "Parallel.h"
+#include "Common/Parallel.h"
 
 #include <algorithm>
 #include <atomic>
@@ -305,7 +305,7 @@ Status SurfaceMesh::connect()
       this->RingTriangle.data() + bucket[v]);
   };
   std::atomic<int> firstFailing{ nv };
-  parallelFor(0, nv, 1024, [&](vtkIdType b, vtkIdType e) {
+  parallelFor(0, nv, 1024, [&](Index b, Index e) {
     for (int v = static_cast<int>(b); v < static_cast<int>(e); ++v)
     {
       if (!walk(v))

@@ -12,8 +12,8 @@
 #ifndef ShrinkWrap_SurfaceMesh_h
 #define ShrinkWrap_SurfaceMesh_h
 
-#include "Status.h"
-#include "Vec3.h"
+#include "Common/Status.h"
+#include "Common/Vec3.h"
 
 #include <array>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "TriangleGrid.h"
+#include "Surface/TriangleGrid.h"
 
 #include <algorithm>
 #include <cmath>

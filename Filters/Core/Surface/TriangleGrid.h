@@ -5,8 +5,8 @@
 #ifndef ShrinkWrap_TriangleGrid_h
 #define ShrinkWrap_TriangleGrid_h
 
-#include "Box.h"
-#include "Vec3.h"
+#include "Common/Box.h"
+#include "Common/Vec3.h"
 
 #include <algorithm>
 #include <array>

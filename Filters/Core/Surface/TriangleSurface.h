@@ -3,7 +3,7 @@
 #ifndef ShrinkWrap_TriangleSurface_h
 #define ShrinkWrap_TriangleSurface_h
 
-#include "IndexedTriangles.h"
+#include "Common/IndexedTriangles.h"
 
 namespace shrinkwrap
 {

@@ -1,8 +1,8 @@
 // The AABB tree (Algorithm 1, line 1): its closest point equals the brute-force closest point over
 // every triangle, for points near and far, on a soup with noise, duplicates and a degenerate triangle,
 // and within a search radius it finds nothing beyond it.
-#include "AABBTree.h"
-#include "Icosphere.h"
+#include "Distance/AABBTree.h"
+#include "Surface/Icosphere.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>

@@ -1,7 +1,7 @@
 // Connected components of a starting surface: specks smaller than the size asked are removed, and
 // only those; the walls of cavities (facing the other way from the largest piece) too.
-#include "Components.h"
-#include "Icosphere.h"
+#include "Surface/Components.h"
+#include "Surface/Icosphere.h"
 #include "TestUtilities.h"
 
 namespace

@@ -1,5 +1,5 @@
 // Trilinear sampling of a distance grid: value and gradient exact for a linear field.
-#include "DistanceGrid.h"
+#include "Distance/DistanceGrid.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>

@@ -1,7 +1,7 @@
 // Edge collapses: needles and caps merged away, the genus and the link condition kept.
-#include "EdgeCollapses.h"
-#include "Icosphere.h"
-#include "SurfaceGeometry.h"
+#include "Remeshing/EdgeCollapses.h"
+#include "Surface/Icosphere.h"
+#include "Surface/SurfaceGeometry.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>

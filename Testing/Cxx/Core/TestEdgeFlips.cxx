@@ -1,10 +1,10 @@
 // Edge flips: thin triangles of a stretched icosphere mended without changing the shape, and in the
 // evolver after every step; the remesher's valence flips leave alone what the angle flips would undo.
-#include "EdgeFlips.h"
-#include "Evolver.h"
-#include "Icosphere.h"
-#include "Remesher.h"
-#include "SurfaceGeometry.h"
+#include "Remeshing/EdgeFlips.h"
+#include "Evolution/Evolver.h"
+#include "Surface/Icosphere.h"
+#include "Remeshing/Remesher.h"
+#include "Surface/SurfaceGeometry.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>

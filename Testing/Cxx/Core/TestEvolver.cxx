@@ -3,12 +3,12 @@
 // steps (issue #9: a split surface evolves as the same surface given from the start); a point cloud's
 // automatic sizes (issue #13); vertices that land off the target by their edges' sagitta
 // (EvolverSettings::facetFit).
-#include "Evolver.h"
-#include "EdgeSplits.h"
-#include "Icosphere.h"
-#include "DistanceSource.h"
-#include "SignedDistance.h"
-#include "WrapSession.h"
+#include "Evolution/Evolver.h"
+#include "Remeshing/EdgeSplits.h"
+#include "Surface/Icosphere.h"
+#include "Distance/DistanceSource.h"
+#include "Distance/SignedDistance.h"
+#include "Evolution/WrapSession.h"
 #include "TestUtilities.h"
 
 #include <cmath>

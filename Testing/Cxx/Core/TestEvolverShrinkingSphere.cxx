@@ -5,8 +5,8 @@
 // with |V_i| the co-volumes that step k computed (from F^(k-1), Algorithm 3 line 4): with them Table 2
 // comes out to four digits; with the co-volumes of F^k level 1 is 2.3% lower. Eq. (11) as printed
 // squares the inner sum; that variant is printed too, and does not give the tables' figures.
-#include "Evolver.h"
-#include "Icosphere.h"
+#include "Evolution/Evolver.h"
+#include "Surface/Icosphere.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>

@@ -4,9 +4,9 @@
 // the nearest point outside both (on one sphere outside the other, or on the circle where they meet);
 // outside it, the distance to the nearer ball. The closing bridges the slot. Points sampling a sphere:
 // their dilation is a shell, whose cavity joins it only when asked (a point set's closing).
-#include "GapClosing.h"
-#include "DistanceSource.h"
-#include "PointSource.h"
+#include "Evolution/GapClosing.h"
+#include "Distance/DistanceSource.h"
+#include "Distance/PointSource.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>

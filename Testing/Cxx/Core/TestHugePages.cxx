@@ -3,7 +3,7 @@
 // Growing across that size, shrinking back, copying and moving keep every value (a buffer freed the
 // wrong way would crash here, and under AddressSanitizer would be reported); sizes no mapping can hold
 // throw std::bad_alloc.
-#include "HugePages.h"
+#include "Common/HugePages.h"
 #include "TestUtilities.h"
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // (never below the exact nearest); nodes within half a cell of a point (band nodes: corners of its
 // cell) are exact; the rest is held to the bars of the mesh field (issue #2: mean error <= 0.1 h,
 // largest <= 1 h; measured here: mean <= 0.02 h, largest 0.58 h). The field is unsigned.
-#include "SignedDistance.h"
+#include "Distance/SignedDistance.h"
 #include "TestUtilities.h"
 
 #include <random>

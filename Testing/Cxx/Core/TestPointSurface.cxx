@@ -7,8 +7,8 @@
 // noisy thin ring, where no plane fits, the first layer of points along the line of sight answers,
 // inside the noise band, and the caller takes it only where it deepens its closed field.
 // (The point queries under it: TestPointTree.)
-#include "PointSurface.h"
-#include "TargetDistance.h"
+#include "Distance/PointSurface.h"
+#include "Distance/TargetDistance.h"
 #include "TestUtilities.h"
 
 #include <algorithm>

@@ -4,9 +4,9 @@
 // and with NaN points (left out), and on a few points (the tree built without its halves apart); the
 // hash grid's points within a radius (the fitted surface's neighbourhoods); medianNeighbourDistance,
 // duplicates aside; and the spacing of a cloud's sparsest part.
-#include "PointGrid.h"
-#include "PointSource.h"
-#include "PointTree.h"
+#include "Distance/PointGrid.h"
+#include "Distance/PointSource.h"
+#include "Distance/PointTree.h"
 #include "TestUtilities.h"
 
 #include <algorithm>

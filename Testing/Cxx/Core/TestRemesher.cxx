@@ -2,9 +2,9 @@
 // the target edge length, closed, same genus, the shape kept, valences near 6, good angles; vertex data
 // follows the edits; anchored vertices stay in place through collapses; adaptive sizes from the
 // curvature; refused settings.
-#include "Icosphere.h"
-#include "Remesher.h"
-#include "SurfaceGeometry.h"
+#include "Surface/Icosphere.h"
+#include "Remeshing/Remesher.h"
+#include "Surface/SurfaceGeometry.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>

@@ -4,11 +4,11 @@
 // point reaches the sample; samples inside, within the tolerance or beyond the reach move nothing; the
 // vertices of a sample's nearest point hold it by their weights there. Whole wraps of an open CAD
 // shell: Cxx.TestShrinkWrapCGALMeshes.
-#include "DistanceSource.h"
-#include "Icosphere.h"
-#include "RimCoverage.h"
+#include "Distance/DistanceSource.h"
+#include "Surface/Icosphere.h"
+#include "Evolution/RimCoverage.h"
 #include "TestUtilities.h"
-#include "TriangleDistance.h"
+#include "Distance/TriangleDistance.h"
 
 #include <vtkSMPTools.h>
 

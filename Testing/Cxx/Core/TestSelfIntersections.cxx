@@ -9,13 +9,13 @@
 // made alone; a round of edits is checked once and made again guarded near its crossings, then
 // everywhere.
 // And TargetDistance: near the target, d and grad d are the exact distance and direction to it.
-#include "CheckedEdits.h"
-#include "Icosphere.h"
-#include "SelfIntersections.h"
-#include "SignedDistance.h"
-#include "TargetDistance.h"
+#include "Remeshing/CheckedEdits.h"
+#include "Surface/Icosphere.h"
+#include "Surface/SelfIntersections.h"
+#include "Distance/SignedDistance.h"
+#include "Distance/TargetDistance.h"
 #include "TestUtilities.h"
-#include "TriangleGrid.h"
+#include "Surface/TriangleGrid.h"
 
 #include <algorithm>
 #include <limits>

@@ -2,12 +2,12 @@
 // band's distances are exact, both far-field sweeps stay near the exact distance (the closest-point
 // passes never below it), and the sign votes give inside and outside of a closed mesh; one with a hole
 // wider than the band (a narrower one is sealed by it) is signed by the winding number instead.
-#include "DistanceBand.h"
-#include "Icosphere.h"
-#include "Outline.h"
-#include "SignedDistance.h"
+#include "Distance/DistanceBand.h"
+#include "Surface/Icosphere.h"
+#include "Distance/Outline.h"
+#include "Distance/SignedDistance.h"
 #include "TestUtilities.h"
-#include "TriangleBoxOverlap.h"
+#include "Distance/TriangleBoxOverlap.h"
 
 #include <vtkSMPTools.h>
 

@@ -3,10 +3,10 @@
 // inward-facing surfaces, a grid that cuts the mesh, points, pieces that share their border planes
 // as ParaView's extent translator gives them, ghost planes, more processes than planes; and an
 // abort on one process ends all without a hang.
-#include "DistanceSource.h"
-#include "Icosphere.h"
-#include "PointSource.h"
-#include "SlabDistance.h"
+#include "Distance/DistanceSource.h"
+#include "Surface/Icosphere.h"
+#include "Distance/PointSource.h"
+#include "Distance/SlabDistance.h"
 #include "TestUtilities.h"
 
 #include <condition_variable>

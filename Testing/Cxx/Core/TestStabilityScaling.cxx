@@ -1,8 +1,8 @@
 // The stability scale of Section 2.4: the square root, not eq. (7)'s cube root, brings the mean
 // co-volume to tau.
-#include "Icosphere.h"
-#include "StabilityScaling.h"
-#include "SurfaceGeometry.h"
+#include "Surface/Icosphere.h"
+#include "Evolution/StabilityScaling.h"
+#include "Surface/SurfaceGeometry.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>

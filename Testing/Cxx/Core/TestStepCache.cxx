@@ -1,7 +1,7 @@
 // The step cache: the nearest step at or before a time, triangles shared between steps counted once,
 // thinning that keeps step 0, the newest, the one shown and edited steps, and dropping the steps after
 // an edit.
-#include "StepCache.h"
+#include "Evolution/StepCache.h"
 #include "TestUtilities.h"
 
 namespace

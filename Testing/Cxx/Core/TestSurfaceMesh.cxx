@@ -1,11 +1,11 @@
 // The editable surface mesh: one-rings of icospheres (eq. (9) counts), refused surfaces, and local
 // edits (split, flip, collapse) whose vertex data follows them; a commit's rings, rebuilt only where the
 // edits touched, equal those of the surface built anew.
-#include "EdgeSplits.h"
-#include "Icosphere.h"
-#include "Remesher.h"
-#include "SurfaceGeometry.h"
-#include "SurfaceMesh.h"
+#include "Remeshing/EdgeSplits.h"
+#include "Surface/Icosphere.h"
+#include "Remeshing/Remesher.h"
+#include "Surface/SurfaceGeometry.h"
+#include "Surface/SurfaceMesh.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>

@@ -2,12 +2,12 @@
 // sum, and fields of surfaces with holes, overlaps, flipped faces and crossings signed as that
 // reference says: no node farther than one cell from the surface on the wrong side (the bar allows
 // 0.1%). A disc encloses nothing: unsigned.
-#include "ConsistentOrientation.h"
-#include "DistanceSource.h"
-#include "Icosphere.h"
-#include "SignedDistance.h"
+#include "Distance/ConsistentOrientation.h"
+#include "Distance/DistanceSource.h"
+#include "Surface/Icosphere.h"
+#include "Distance/SignedDistance.h"
 #include "TestUtilities.h"
-#include "WindingNumber.h"
+#include "Distance/WindingNumber.h"
 
 #include <vtkSMPTools.h>
 

@@ -1,6 +1,8 @@
-// A process memory limit below what the filters' estimates allow for (ulimit -v, a batch job's cap):
-// allocation fails, and each filter reports it as an error with an empty output instead of aborting
-// the process; with the limit lifted the same filter computes again. Not run under AddressSanitizer,
+// A process memory limit (ulimit -v, a batch job's cap): Mesh Signed Distance refuses a grid that
+// would not fit under it before allocating, naming the memory left; where an estimate does not
+// cover what runs out (a level-8 icosphere), the allocation fails and Shrink Wrap reports it as an
+// error with an empty output instead of aborting the process. With the limit lifted the same filter
+// computes again. Not run under AddressSanitizer,
 // whose shadow memory does not fit under such a limit.
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
@@ -53,15 +55,16 @@ int TestOutOfMemory(int, char*[])
   sphere->Update();
   const double GiB = 1024.0 * 1024.0 * 1024.0;
 
-  // 497 x 497 x 501 nodes: about 1 GiB by the filter's estimate, below the free memory of the test
+  // 492 x 492 x 501 nodes: about 1 GiB by the filter's estimate, below the free memory of the test
   // machines, above a limit of 0.5 GiB more than the process uses now.
   vtkNew<vtkMeshSignedDistance> distance;
   distance->SetInputData(sphere->GetOutput());
   distance->SetResolution(500);
   std::string said = underLimit(distance, 0.5 * GiB, [&] { distance->Update(); });
   std::cout << "Mesh Signed Distance under the limit: " << said.substr(said.find("): ") + 3) << std::endl;
-  SW_CHECK(said.find("Out of memory") != std::string::npos && distance->GetOutput()->GetNumberOfPoints() == 0,
-    "Mesh Signed Distance: allocation failure reported, empty output");
+  SW_CHECK(said.find("would need 1.02 GiB but only 0.") != std::string::npos &&
+      distance->GetOutput()->GetNumberOfPoints() == 0,
+    "Mesh Signed Distance: the grid refused against the process's limit, empty output");
   distance->SetResolution(40);
   distance->Update();
   SW_CHECK(distance->GetOutput()->GetNumberOfPoints() == 41 * 41 * 41, "Mesh Signed Distance lives on");

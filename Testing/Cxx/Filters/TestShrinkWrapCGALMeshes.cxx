@@ -14,9 +14,9 @@
 // still (the creases covered as rims). Settings whose triangles
 // degenerate (D = 1, C2 = 0.1) run through with edge collapses.
 // Argument: the folder holding CGAL's data/meshes/*.off.
-#include "SurfaceMesh.h"
+#include "Surface/SurfaceMesh.h"
 #include "TestUtilities.h"
-#include "TriangleSoup.h"
+#include "Distance/TriangleSoup.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
 

@@ -1,11 +1,11 @@
 // vtkShrinkWrapFilter through a VTK pipeline: time steps, the step cache, the output's arrays, a
 // closed one-piece result, the DistanceField and InitialSurface ports, bad input, and a surface
 // split between steps against the same surface given as InitialSurface.
-#include "EdgeSplits.h"
-#include "Icosphere.h"
-#include "SignedDistance.h"
-#include "SurfaceMesh.h"
-#include "WrapSession.h"
+#include "Remeshing/EdgeSplits.h"
+#include "Surface/Icosphere.h"
+#include "Distance/SignedDistance.h"
+#include "Surface/SurfaceMesh.h"
+#include "Evolution/WrapSession.h"
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"

@@ -13,20 +13,23 @@
 //   raise would change the interpolant's topology, also where the join takes two faces (each raise
 //   alone undoes nothing), and the grid is left alone elsewhere
 //   (ContourTopology.h);
+// - the core's triangle counts per case are those of VTK's marching-cubes table, which the filters'
+//   contour uses;
 // - where the offset start joins two parts across a slit the field keeps open (a handle), a lower
 //   offset without that handle is taken.
-#include "Components.h"
-#include "ContourTopology.h"
-#include "Icosphere.h"
-#include "Relaxation.h"
-#include "SelfIntersections.h"
-#include "StartingSurface.h"
-#include "SurfaceGeometry.h"
+#include "Surface/Components.h"
+#include "Distance/ContourTopology.h"
+#include "Surface/Icosphere.h"
+#include "Remeshing/Relaxation.h"
+#include "Surface/SelfIntersections.h"
+#include "Evolution/StartingSurface.h"
+#include "Surface/SurfaceGeometry.h"
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
 
 #include <vtkAppendPolyData.h>
+#include <vtkMarchingCubesTriangleCases.h>
 #include <vtkContourFilter.h>
 #include <vtkPolyDataConnectivityFilter.h>
 #include <vtkSphereSource.h>
@@ -321,6 +324,22 @@ long long eulerOf(const shrinkwrap::TriangleSurface& s)
   return static_cast<long long>(s.points.size()) - static_cast<long long>(s.triangles.size()) / 2;
 }
 
+void countsAsVTKsCaseTable()
+{
+  const vtkMarchingCubesTriangleCases* cases = vtkMarchingCubesTriangleCases::GetCases();
+  int differ = 0;
+  for (int c = 0; c < 256; ++c)
+  {
+    int edges = 0;
+    while (edges < 16 && cases[c].edges[edges] >= 0)
+    {
+      ++edges;
+    }
+    differ += shrinkwrap::marchingCubesTriangleCounts()[c] != edges / 3;
+  }
+  SW_CHECK(differ == 0, "the triangle counts of all 256 cases are VTK's (" << differ << " differ)");
+}
+
 void followsTheInterpolantsTopology()
 {
   using shrinkwrap::contourEulerCharacteristic;
@@ -494,6 +513,7 @@ void startsWithoutTheSlitsBridge()
 
 int TestStartingSurface(int, char*[])
 {
+  countsAsVTKsCaseTable();
   followsTheInterpolantsTopology();
   relaxesAContour();
   wrapsATorusFromAContour();

@@ -7,12 +7,18 @@
 #ifndef ShrinkWrap_ContourTopology_h
 #define ShrinkWrap_ContourTopology_h
 
-#include "DistanceGrid.h"
+#include "Distance/DistanceGrid.h"
 
+#include <array>
 #include <vector>
 
 namespace shrinkwrap
 {
+
+// The triangles the classic marching-cubes case table (VTK's vtkMarchingCubesTriangleCases, which
+// the filters' contour uses) puts in a cell, by case: bit k of the case set where corner k of the
+// cell (VTK's hexahedron order) lies at or above the value.
+const std::array<int, 256>& marchingCubesTriangleCounts();
 
 // V - F / 2 of the contour at `value` (V - E + F of a closed triangle surface, E = 3F / 2; 2 per
 // component less 2 per handle): a vertex per grid edge that crosses the value, the case table's

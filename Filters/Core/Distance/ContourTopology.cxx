@@ -1,8 +1,6 @@
-#include "ContourTopology.h"
+#include "Distance/ContourTopology.h"
 
-#include "Parallel.h"
-
-#include <vtkMarchingCubesTriangleCases.h>
+#include "Common/Parallel.h"
 
 #include <algorithm>
 #include <array>
@@ -19,22 +17,6 @@ namespace
 // The cell's corners in the order of the case table's index bits (VTK's hexahedron).
 constexpr int kCorner[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 },
   { 1, 1, 1 }, { 0, 1, 1 } };
-
-std::array<int, 256> trianglesPerCase()
-{
-  std::array<int, 256> count{};
-  const vtkMarchingCubesTriangleCases* cases = vtkMarchingCubesTriangleCases::GetCases();
-  for (int c = 0; c < 256; ++c)
-  {
-    int edges = 0;
-    while (edges < 16 && cases[c].edges[edges] >= 0)
-    {
-      ++edges;
-    }
-    count[c] = edges / 3;
-  }
-  return count;
-}
 
 // The cells of an n^3 block of nodes `at(a, b, c)` (a, b, c in [0, n]): their triangles, and the
 // crossing edges each cell owns (the three from its lowest corner; the others belong to the cells
@@ -65,11 +47,6 @@ long long blockEuler(int n, const At& at, double value, const std::array<int, 25
   return 2 * vertices - faces; // twice V - F / 2
 }
 
-const std::array<int, 256>& trianglesTable()
-{
-  static const std::array<int, 256> triangles = trianglesPerCase(); // a constant table
-  return triangles;
-}
 
 // Twice the contributions of the cell with lowest corner (i, j, k) of values `v`: of the grid's
 // contour and of the half spacing's.
@@ -96,8 +73,8 @@ ContourEuler cellEuler(const GridLattice& lattice, const std::vector<float>& v, 
       {
         fine[a][b][c] = DistanceGrid::halfSpacingValue(at, a, b, c);
       }
-  return { blockEuler(1, at, value, trianglesTable()),
-    blockEuler(2, [&](int a, int b, int c) { return fine[a][b][c]; }, value, trianglesTable()) };
+  return { blockEuler(1, at, value, marchingCubesTriangleCounts()),
+    blockEuler(2, [&](int a, int b, int c) { return fine[a][b][c]; }, value, marchingCubesTriangleCounts()) };
 }
 
 // Twice the contributions of the cells around node n, the only ones its value enters.
@@ -125,7 +102,7 @@ std::vector<std::int64_t> wronglyJoinedCorners(const DistanceGrid& grid, double 
   constexpr int kPlanes[3][2] = { { 0, 1 }, { 1, 2 }, { 0, 2 } };
   std::vector<std::int64_t> shallower;
   std::mutex lock;
-  parallelFor(0, lattice.dims[2], 1, [&](vtkIdType kb, vtkIdType ke) {
+  parallelFor(0, lattice.dims[2], 1, [&](Index kb, Index ke) {
     std::vector<std::int64_t> found;
     for (int k = static_cast<int>(kb); k < ke; ++k)
       for (int j = 0; j < lattice.dims[1]; ++j)
@@ -168,13 +145,27 @@ std::vector<std::int64_t> wronglyJoinedCorners(const DistanceGrid& grid, double 
 }
 } // namespace
 
+const std::array<int, 256>& marchingCubesTriangleCounts()
+{
+  static constexpr std::array<int, 256> kTriangles{
+  0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 2, 1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3,
+  1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3, 2, 3, 3, 2, 3, 4, 4, 3, 3, 4, 4, 3, 4, 5, 5, 2,
+  1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3, 2, 3, 3, 4, 3, 4, 4, 5, 3, 4, 4, 5, 4, 5, 5, 4,
+  2, 3, 3, 4, 3, 4, 2, 3, 3, 4, 4, 5, 4, 5, 3, 2, 3, 4, 4, 3, 4, 5, 3, 2, 4, 5, 5, 4, 5, 2, 4, 1,
+  1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3, 2, 3, 3, 4, 3, 4, 4, 5, 3, 2, 4, 3, 4, 3, 5, 2,
+  2, 3, 3, 4, 3, 4, 4, 5, 3, 4, 4, 5, 4, 5, 5, 4, 3, 4, 4, 3, 4, 5, 5, 4, 4, 3, 5, 2, 5, 4, 2, 1,
+  2, 3, 3, 4, 3, 4, 4, 5, 3, 4, 4, 5, 2, 3, 3, 2, 3, 4, 4, 5, 4, 5, 5, 2, 4, 3, 5, 4, 3, 2, 4, 1,
+  3, 4, 4, 5, 4, 5, 3, 4, 4, 5, 5, 2, 3, 4, 2, 1, 2, 3, 3, 2, 3, 4, 2, 1, 3, 2, 4, 1, 2, 1, 1, 0 };
+  return kTriangles;
+}
+
 std::vector<ContourEuler> contourEulerCharacteristics(const DistanceGrid& grid, const std::vector<double>& values)
 {
   const GridLattice& lattice = grid.lattice();
   const std::vector<float>& v = grid.values();
   std::vector<ContourEuler> twice(values.size());
   std::mutex lock;
-  parallelFor(0, lattice.dims[2] - 1, 1, [&](vtkIdType kb, vtkIdType ke) {
+  parallelFor(0, lattice.dims[2] - 1, 1, [&](Index kb, Index ke) {
     std::vector<ContourEuler> sum(values.size());
     for (int k = static_cast<int>(kb); k < ke; ++k)
       for (int j = 0; j + 1 < lattice.dims[1]; ++j)

@@ -266,7 +266,7 @@ TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts)
   return soup;
 }
 
-Status surfaceOf(vtkPolyData* mesh, TriangleSurface& surface)
+Status surfaceOf(vtkPolyData* mesh, TriangleSoup& surface)
 {
   const Status refused = Status::failure("it must be made of triangles only, with finite points and valid point ids");
   bool triangles = true;
@@ -276,7 +276,7 @@ Status surfaceOf(vtkPolyData* mesh, TriangleSurface& surface)
     return refused;
   }
   long long badCells = 0;
-  surface = TriangleSurface();
+  surface = TriangleSoup();
   appendToSoup(mesh, surface, badCells);
   if (badCells > 0 || surface.triangles.empty() || mesh->GetNumberOfStrips() > 0 || !surface.allFinite())
   {
@@ -308,13 +308,8 @@ Box boundsOf(vtkDataSet* data)
   return box;
 }
 
-Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid)
+GridLattice latticeOf(vtkImageData* image)
 {
-  vtkDataArray* values = image ? image->GetPointData()->GetArray(name) : nullptr;
-  if (!values || values->GetNumberOfComponents() != 1)
-  {
-    return Status::failure(std::string("the distance field has no point array \"") + name + "\"");
-  }
   GridLattice lattice;
   int extent[6];
   image->GetExtent(extent);
@@ -325,6 +320,17 @@ Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid)
     lattice.dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
     lattice.origin[a] += extent[2 * a] * lattice.spacing[a];
   }
+  return lattice;
+}
+
+Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid)
+{
+  vtkDataArray* values = image ? image->GetPointData()->GetArray(name) : nullptr;
+  if (!values || values->GetNumberOfComponents() != 1)
+  {
+    return Status::failure(std::string("the distance field has no point array \"") + name + "\"");
+  }
+  const GridLattice lattice = latticeOf(image);
   const double* direction = image->GetDirectionMatrix()->GetData();
   for (int k = 0; k < 9; ++k)
   {
@@ -371,27 +377,17 @@ vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name
   return image;
 }
 
-TriangleSurface contour(const DistanceGrid& grid, double value, bool fewerJoins)
+TriangleSoup contour(const DistanceGrid& grid, double value)
 {
-  // The start keeps every handle of its contour. On an ambiguous face the case table joins the corners
-  // below the value where the trilinear interpolant may keep them apart: a bridge a cell wide between
-  // two parts about twice the value apart, a handle the field has not (the hand's mesh and its 200,000
-  // points, genus 1 where the truth has 0). Where the contour of the interpolant at half the spacing
-  // has fewer such joins (a higher Euler characteristic), the grid's faces are separated first. (Only
-  // there: elsewhere the corners raised would still move the start, and the wrap with it.)
-  const bool separate = fewerJoins && [&] {
-    const ContourEuler euler = contourEulerCharacteristic(grid, value);
-    return euler.halfSpacing > euler.grid;
-  }();
   vtkNew<vtkFlyingEdges3D> contour;
-  contour->SetInputData(imageOf(separate ? withFacesSeparated(grid, value) : grid, "d"));
+  contour->SetInputData(imageOf(grid, "d"));
   contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "d");
   contour->SetValue(0, value);
   contour->ComputeNormalsOff();
   contour->ComputeGradientsOff();
   contour->ComputeScalarsOff();
   contour->Update();
-  TriangleSurface surface;
+  TriangleSoup surface;
   surfaceOf(contour->GetOutput(), surface);
   return surface;
 }
@@ -561,9 +557,9 @@ std::string WrapSummary::text() const
   char line[512];
   const double c = this->sizes.cell > 0 ? this->sizes.cell : 1.0;
   char length[64] = "Remeshing off"; // no L is used then
-  if (this->sizes.length > 0)
+  if (this->sizes.edgeLength)
   {
-    std::snprintf(length, sizeof(length), "Target Edge Length %.3g", this->sizes.length);
+    std::snprintf(length, sizeof(length), "Target Edge Length %.3g", *this->sizes.edgeLength);
   }
   std::snprintf(line, sizeof(line),
     "%d steps in %.2f s, %d vertices: |distance| to the target median %.3g (%.2g cells), 95%% %.3g (%.2g cells), "
@@ -591,7 +587,7 @@ void addSummary(const WrapSummary& summary, vtkPolyData* output)
   add("DistancePercentilesInCells", { d[0] / c, d[1] / c, d[2] / c });
   add("FieldCellSize", { summary.sizes.cell });
   add("GapSize", { summary.sizes.gap });
-  add("TargetEdgeLength", { summary.sizes.length });
+  add("TargetEdgeLength", { summary.sizes.edgeLength.value_or(0) }); // 0: Remeshing off
   add("SmallAngleShare", { summary.smallAngleShare });
   add("ComputeSeconds", { summary.seconds });
   vtkNew<vtkStringArray> text;

@@ -9,9 +9,10 @@
 #include "Distance/TargetDistance.h"
 #include "Surface/SelfIntersections.h"
 #include "Common/Status.h"
+#include "Wrap/WrapPlan.h"
 #include "Surface/SurfaceGeometry.h"
-#include "Distance/TriangleSoup.h"
-#include "Surface/TriangleSurface.h"
+#include "Common/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 
 #include <vtkCompositeDataSet.h>
 #include <vtkInformation.h>
@@ -74,7 +75,7 @@ TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts)
 
 // A mesh of triangles only as a surface; fails for other polygons, strips, no triangles, invalid point
 // ids or points that are not finite.
-Status surfaceOf(vtkPolyData* mesh, TriangleSurface& surface);
+Status surfaceOf(vtkPolyData* mesh, TriangleSoup& surface);
 
 // Bounds of the points that polygons and strips use: the surface, without stray points or lines.
 Box surfaceBounds(const std::vector<vtkPolyData*>& meshes);
@@ -83,16 +84,16 @@ Box boundsOf(vtkDataSet* data);
 // Box::around(pointsOf(input)), without the copy.
 Box pointBounds(vtkDataObject* input);
 
+// The nodes of an image (its extent, origin and spacing) as a lattice.
+GridLattice latticeOf(vtkImageData* image);
 // The point array `name` of an image as a grid: one component, at least 2 nodes and a positive spacing
 // on every axis, finite values.
 Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid);
 // A grid as an image whose point array `name` holds its values.
 vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name);
 
-// Marching cubes (vtkFlyingEdges3D) of a grid at one value; with `fewerJoins`, of the grid with its
-// faces separated (withFacesSeparated) where the interpolant at half the spacing has fewer handles or
-// joined components than the grid's contour (ContourTopology.h).
-TriangleSurface contour(const DistanceGrid& grid, double value, bool fewerJoins = false);
+// Marching cubes (vtkFlyingEdges3D) of a grid at one value: the core's Contour (ContourTopology.h).
+TriangleSoup contour(const DistanceGrid& grid, double value);
 
 // Points (as doubles) and triangles as `output`'s geometry.
 void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles, vtkPolyData* output);
@@ -106,15 +107,6 @@ void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const Tar
 // Cell data SelfIntersecting (1 where a triangle crosses another) and field data SelfIntersections
 // (the number of crossing pairs).
 void addSelfIntersections(const SelfIntersections& crossings, vtkPolyData* output);
-
-// The sizes a wrap runs with, the automatic ones resolved (the panel's Field Cell Size, Chosen Gap
-// Size and Chosen Edge Length); 0 where unknown.
-struct WrapSizes
-{
-  double cell = 0;   // of the distance field moved on
-  double gap = 0;    // Gap Size
-  double length = 0; // Target Edge Length L (0 with Remeshing off)
-};
 
 // A wrap's figures as a user reads them, from its output's own arrays: |Distance| at the vertices
 // (median, 95th percentile, largest; in the target's units and in cells of the field), the share of

@@ -5,6 +5,9 @@
 #include "Distance/SlabDistance.h"
 #include "VTKConversions.h"
 #include "RankInputs.h"
+#include "SlabPieces.h"
+#include "TargetInput.h"
+#include "vtkInputGeometry.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCompositeDataIterator.h"
@@ -41,147 +44,20 @@ namespace convert = shrinkwrap::convert;
 
 namespace
 {
-// Whether the ranks can compute one field together, and how. Collective.
-struct Agreement
+// Ghost layers, when asked for (a contour or gradient across piece borders): the nodes beyond the
+// piece proper (as the pipeline's extent translator splits the grid) are marked, so that their
+// cells are not counted twice.
+void markGhosts(const shrinkwrap::GridLattice& lattice, vtkInformation* outInfo, vtkImageData* output)
 {
-  std::string why; // why they cannot: one of them could not read its input or place its grid, or
-                   // they hold different surfaces or grids
-  bool slabs = true; // every rank asks for whole planes (or nothing): each computes just those
-};
-
-Agreement agree(const convert::ControllerExchange& exchange, bool ready, const shrinkwrap::TriangleSoup& soup,
-  const shrinkwrap::TriangleSoup& cloud, const shrinkwrap::GridLattice& lattice, const int update[6])
-{
-  struct Fingerprint
-  {
-    char ready;
-    std::int64_t points, triangles, loose;
-    int dims[3];
-    double origin[3], spacing[3];
-    int update[6];
-  } mine{ ready, static_cast<std::int64_t>(soup.points.size()), static_cast<std::int64_t>(soup.triangles.size()),
-    static_cast<std::int64_t>(cloud.points.size()), { lattice.dims[0], lattice.dims[1], lattice.dims[2] },
-    { lattice.origin[0], lattice.origin[1], lattice.origin[2] },
-    { lattice.spacing[0], lattice.spacing[1], lattice.spacing[2] },
-    { update[0], update[1], update[2], update[3], update[4], update[5] } };
-  const char* bytes = reinterpret_cast<const char*>(&mine);
-  const shrinkwrap::Messages all = exchange.allGather(std::vector<char>(bytes, bytes + sizeof(mine)));
-  std::ostringstream why;
-  Agreement agreement;
-  for (std::size_t r = 0; r < all.count(); ++r)
-  {
-    Fingerprint other;
-    std::memcpy(&other, all.data(r), sizeof(other));
-    const int* e = other.update;
-    agreement.slabs = agreement.slabs &&
-      (e[5] < e[4] || (e[0] == 0 && e[1] == other.dims[0] - 1 && e[2] == 0 && e[3] == other.dims[1] - 1));
-    if (!why.str().empty())
-    {
-      continue;
-    }
-    if (!other.ready)
-    {
-      why << "MPI rank " << r << " cannot (see its error).";
-    }
-    else if (ready &&
-      (other.points != mine.points || other.triangles != mine.triangles || other.loose != mine.loose ||
-        !std::equal(other.dims, other.dims + 3, mine.dims) || !std::equal(other.origin, other.origin + 3, mine.origin) ||
-        !std::equal(other.spacing, other.spacing + 3, mine.spacing)))
-    {
-      why << "MPI rank " << r << " holds " << other.triangles << " triangles and a " << other.dims[0] << " x "
-          << other.dims[1] << " x " << other.dims[2] << " grid, rank " << exchange.rank() << " " << mine.triangles
-          << " and " << mine.dims[0] << " x " << mine.dims[1] << " x " << mine.dims[2]
-          << " (every rank needs the whole input and the same grid settings).";
-    }
-  }
-  agreement.why = why.str();
-  return agreement;
-}
-
-using Extent = std::array<int, 6>;
-
-// The planes rank r of n computes when the pieces asked for are not slabs: an even share.
-Extent evenSlab(const shrinkwrap::GridLattice& lattice, int r, int n)
-{
-  return { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, r * lattice.dims[2] / n, (r + 1) * lattice.dims[2] / n - 1 };
-}
-
-Extent intersection(const Extent& a, const Extent& b)
-{
-  return { std::max(a[0], b[0]), std::min(a[1], b[1]), std::max(a[2], b[2]), std::min(a[3], b[3]),
-    std::max(a[4], b[4]), std::min(a[5], b[5]) };
-}
-
-vtkIdType nodesOf(const Extent& e)
-{
-  return e[1] < e[0] || e[3] < e[2] || e[5] < e[4]
-    ? 0
-    : static_cast<vtkIdType>(e[1] - e[0] + 1) * (e[3] - e[2] + 1) * (e[5] - e[4] + 1);
-}
-
-// Calls f(index in `within`, index in `part`) for each x run of `part` (a sub-extent of `within`):
-// its first node's indices, row by row.
-template <typename F>
-void forEachRow(const Extent& within, const Extent& part, F&& f)
-{
-  const vtkIdType wx = within[1] - within[0] + 1, wy = within[3] - within[2] + 1;
-  vtkIdType at = 0;
-  for (int k = part[4]; k <= part[5]; ++k)
-  {
-    for (int j = part[2]; j <= part[3]; ++j, at += part[1] - part[0] + 1)
-    {
-      f((part[0] - within[0]) + wx * ((j - within[2]) + wy * (k - within[4])), at);
-    }
-  }
-}
-
-// Each rank's piece (`wanted`, its update extent, of any shape) from the ranks' slabs of planes
-// (rank r holds evenSlab(r)): a gather to each rank
-// of the parts of the others' slabs that its piece overlaps. Collective.
-void piecesFromSlabs(vtkMultiProcessController* controller, const shrinkwrap::GridLattice& lattice,
-  vtkFloatArray* slab, const int wanted[6], vtkFloatArray* piece)
-{
-  const int n = controller->GetNumberOfProcesses(), rank = controller->GetLocalProcessId();
-  std::vector<int> all(6 * n);
-  controller->AllGather(wanted, all.data(), 6);
-  auto slabOf = [&](int r) { return evenSlab(lattice, r, n); };
-  const Extent mine = slabOf(rank);
-  const Extent own = { wanted[0], wanted[1], wanted[2], wanted[3], wanted[4], wanted[5] };
-  piece->SetName(slab->GetName());
-  piece->SetNumberOfValues(nodesOf(own));
-  for (int d = 0; d < n; ++d)
-  {
-    const Extent target = { all[6 * d], all[6 * d + 1], all[6 * d + 2], all[6 * d + 3], all[6 * d + 4], all[6 * d + 5] };
-    const Extent part = intersection(mine, target);
-    const int width = part[1] - part[0] + 1;
-    std::vector<float> send(nodesOf(part));
-    if (!send.empty())
-    {
-      forEachRow(mine, part, [&](vtkIdType from, vtkIdType to) {
-        std::copy_n(slab->GetPointer(from), width, send.data() + to);
-      });
-    }
-    std::vector<vtkIdType> lengths(n, 0), offsets(n, 0);
-    for (int r = 0; r < n; ++r)
-    {
-      lengths[r] = nodesOf(intersection(slabOf(r), target));
-      offsets[r] = r > 0 ? offsets[r - 1] + lengths[r - 1] : 0;
-    }
-    std::vector<float> received(rank == d ? offsets[n - 1] + lengths[n - 1] : 0);
-    controller->GatherV(send.data(), received.data(), static_cast<vtkIdType>(send.size()), lengths.data(),
-      offsets.data(), d);
-    for (int r = 0; rank == d && r < n; ++r)
-    {
-      const Extent from = intersection(slabOf(r), target);
-      const int w = from[1] - from[0] + 1;
-      if (nodesOf(from) > 0)
-      {
-        forEachRow(own, from, [&](vtkIdType to, vtkIdType at) {
-          std::copy_n(received.data() + offsets[r] + at, w, piece->GetPointer(to));
-        });
-      }
-    }
-  }
+  int whole[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+  int proper[6];
+  vtkNew<vtkExtentTranslator> translator;
+  vtkInformationIntegerRequestKey* split = vtkExtentTranslator::UPDATE_SPLIT_MODE();
+  translator->PieceToExtentThreadSafe(
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()), 0, whole, proper,
+    split->Has(outInfo) ? split->Get(outInfo) : vtkExtentTranslator::BLOCK_MODE, 0);
+  output->GenerateGhostArray(proper);
 }
 } // namespace
 
@@ -318,6 +194,29 @@ int vtkMeshSignedDistance::RequestUpdateExtent(
   return 1;
 }
 
+// The input as this filter measures it.
+struct vtkMeshSignedDistance::Measured
+{
+  shrinkwrap::TriangleSoup soup;  // its triangles (none: points only)
+  shrinkwrap::TriangleSoup cloud; // its points (none: polygons only), as the cloud's points
+  shrinkwrap::GridLattice lattice;
+};
+
+bool vtkMeshSignedDistance::Measure(vtkDataObject* input, Measured& measured)
+{
+  shrinkwrap::Box bounds;
+  if (!this->ReadInput(input, measured.soup, measured.cloud, bounds))
+  {
+    return false;
+  }
+  if (const shrinkwrap::Status placed = this->ComputeLattice(bounds, measured.lattice); !placed)
+  {
+    vtkErrorMacro("Cannot place the grid: " << placed.message() << ".");
+    return false;
+  }
+  return true;
+}
+
 int vtkMeshSignedDistance::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -329,64 +228,17 @@ int vtkMeshSignedDistance::RequestData(
   }
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
-  // Under MPI with a piece per rank, this rank computes an even share of the grid's planes with
-  // the others (SlabDistance.h), and the ranks then hand each other what their pieces hold; otherwise
-  // the whole grid (a request for part of it is cropped).
-  vtkMultiProcessController* controller = this->Controller;
-  vtkDataObject* input = convert::wholeInput(vtkDataObject::GetData(inputVector[0], 0), this->Controller, this->Gathered);
-  const bool byPieces = controller && controller->GetNumberOfProcesses() > 1 &&
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) == controller->GetNumberOfProcesses() &&
-    this->SweepMethod == CLOSEST_POINT && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
-  shrinkwrap::TriangleSoup soup, cloud;
-  shrinkwrap::Box bounds;
-  shrinkwrap::GridLattice lattice;
-  bool ready = this->ReadInput(input, soup, cloud, bounds);
-  if (const shrinkwrap::Status placed = ready ? this->ComputeLattice(bounds, lattice) : shrinkwrap::Status(); !placed)
-  {
-    vtkErrorMacro("Cannot place the grid: " << placed.message() << ".");
-    ready = false;
-  }
-  // Every rank must measure the same surface on the same grid: a rank that cannot, or holds another
-  // input, stops all of them (rather than leave the others waiting for it).
+  vtkDataObject* input =
+    convert::wholeInput(vtkDataObject::GetData(inputVector[0], 0), this->Controller, this->Gathered);
+  Measured measured;
+  const bool ready = this->Measure(input, measured);
+  const shrinkwrap::GridLattice& lattice = measured.lattice;
   int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
-  const convert::ControllerExchange exchange(controller);
-  Agreement agreement;
-  if (byPieces)
-  {
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
-    agreement = agree(exchange, ready, soup, cloud, lattice, extent);
-    if (!agreement.why.empty())
-    {
-      vtkErrorMacro("Cannot compute the field by pieces: " << agreement.why);
-      return 1;
-    }
-  }
-  if (!ready)
-  {
-    return 1;
-  }
   vtkNew<vtkFloatArray> values;
   shrinkwrap::SignedDistanceResult result;
-  if (byPieces && agreement.slabs)
-  {
-    // The pieces are slabs of whole planes (the split this filter asks for): each rank computes its own.
-    if (!this->Compute(soup, cloud, lattice, extent[4], extent[5], &exchange, values, result))
-    {
-      return 1;
-    }
-  }
-  else if (byPieces)
-  {
-    // Pieces of other shapes (a consumer that splits otherwise): even shares of planes, then handed round.
-    const Extent share = evenSlab(lattice, controller->GetLocalProcessId(), controller->GetNumberOfProcesses());
-    vtkNew<vtkFloatArray> slab;
-    if (!this->Compute(soup, cloud, lattice, share[4], share[5], &exchange, slab, result))
-    {
-      return 1;
-    }
-    piecesFromSlabs(controller, lattice, slab, extent, values);
-  }
-  else if (!this->Compute(soup, cloud, lattice, 0, lattice.dims[2] - 1, nullptr, values, result))
+  const bool byPieces = this->ByPieces(outInfo);
+  if (byPieces ? !this->ComputePieces(ready, measured, outInfo, extent, values, result)
+               : !ready || !this->Compute(measured, 0, lattice.dims[2] - 1, nullptr, values, result))
   {
     return 1;
   }
@@ -400,40 +252,73 @@ int vtkMeshSignedDistance::RequestData(
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
     output->Crop(extent);
   }
-  // Ghost layers, when asked for (a contour or gradient across piece borders): the nodes beyond the
-  // piece proper (as the pipeline's extent translator splits the grid) are marked, so that their
-  // cells are not counted twice.
   if (byPieces && outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) > 0)
   {
-    int whole[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 }, proper[6];
-    vtkNew<vtkExtentTranslator> translator;
-    vtkInformationIntegerRequestKey* split = vtkExtentTranslator::UPDATE_SPLIT_MODE();
-    translator->PieceToExtentThreadSafe(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
-      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()), 0, whole, proper,
-      split->Has(outInfo) ? split->Get(outInfo) : vtkExtentTranslator::BLOCK_MODE, 0);
-    output->GenerateGhostArray(proper);
+    markGhosts(lattice, outInfo, output);
   }
   this->AddStatus(result, output);
   return 1;
 }
 
+// Under MPI with a piece per rank, this rank computes an even share of the grid's planes with the
+// others (SlabDistance.h), and the ranks then hand each other what their pieces hold.
+bool vtkMeshSignedDistance::ByPieces(vtkInformation* outInfo) const
+{
+  vtkMultiProcessController* controller = this->Controller;
+  return controller && controller->GetNumberOfProcesses() > 1 &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) ==
+    controller->GetNumberOfProcesses() &&
+    this->SweepMethod == CLOSEST_POINT && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
+}
+
+// This rank's piece (its update extent, into `extent`), computed with the other ranks. Collective:
+// every rank must measure the same surface on the same grid, and one that cannot, or holds another
+// input, stops all of them (rather than leave the others waiting for it).
+bool vtkMeshSignedDistance::ComputePieces(bool ready, const Measured& measured,
+  vtkInformation* outInfo, int extent[6], vtkFloatArray* values,
+  shrinkwrap::SignedDistanceResult& result)
+{
+  const convert::ControllerExchange exchange(this->Controller);
+  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  const convert::Agreement agreement = convert::agree(
+    exchange, ready, measured.soup, measured.cloud.points.size(), measured.lattice, extent);
+  if (!agreement.why.empty())
+  {
+    vtkErrorMacro("Cannot compute the field by pieces: " << agreement.why);
+    return false;
+  }
+  if (!ready)
+  {
+    return false;
+  }
+  if (agreement.slabs) // slabs of whole planes (the split this filter asks for): each its own
+  {
+    return this->Compute(measured, extent[4], extent[5], &exchange, values, result);
+  }
+  // Pieces of other shapes (a consumer that splits otherwise): even shares of planes, handed round.
+  const int rank = this->Controller->GetLocalProcessId();
+  const convert::Extent share =
+    convert::evenSlab(measured.lattice, rank, this->Controller->GetNumberOfProcesses());
+  vtkNew<vtkFloatArray> slab;
+  if (!this->Compute(measured, share[4], share[5], &exchange, slab, result))
+  {
+    return false;
+  }
+  convert::piecesFromSlabs(this->Controller, measured.lattice, slab, extent, values);
+  return true;
+}
+
 bool vtkMeshSignedDistance::FieldOf(vtkDataObject* input, vtkImageData* output)
 {
-  shrinkwrap::TriangleSoup soup, cloud;
-  shrinkwrap::Box bounds;
-  shrinkwrap::GridLattice lattice;
-  if (!this->ReadInput(input, soup, cloud, bounds))
+  Measured measured;
+  if (!this->Measure(input, measured))
   {
     return true;
   }
-  if (const shrinkwrap::Status placed = this->ComputeLattice(bounds, lattice); !placed)
-  {
-    vtkErrorMacro("Cannot place the grid: " << placed.message() << ".");
-    return true;
-  }
+  const shrinkwrap::GridLattice& lattice = measured.lattice;
   vtkNew<vtkFloatArray> values;
   shrinkwrap::SignedDistanceResult result;
-  if (!this->Compute(soup, cloud, lattice, 0, lattice.dims[2] - 1, nullptr, values, result))
+  if (!this->Compute(measured, 0, lattice.dims[2] - 1, nullptr, values, result))
   {
     return false;
   }
@@ -490,81 +375,55 @@ void vtkMeshSignedDistance::ExecuteBlocks(vtkCompositeDataSet* input, vtkInforma
 bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleSoup& soup,
   shrinkwrap::TriangleSoup& cloud, shrinkwrap::Box& bounds)
 {
-  const convert::PolygonMeshes input = convert::polygonMeshes(data);
-  const std::vector<vtkPolyData*>& meshes = input.meshes;
-  convert::SoupCounts counts;
-  soup = convert::soupOf(meshes, counts);
-  const convert::Geometry use =
-    convert::chooseGeometry(this->InputGeometry, !soup.triangles.empty() || counts.badCells > 0);
-  bounds = shrinkwrap::Box();
-  if (use.polygons)
+  convert::TargetParts parts;
+  shrinkwrap::Notes notes;
+  shrinkwrap::Status status =
+    convert::readTarget(data, this->InputGeometry, { "input", "measured" }, parts, notes);
+  this->Report(notes);
+  if (status && parts.use.polygons)
   {
-    if (soup.triangles.empty() && counts.badCells == 0)
-    {
-      vtkErrorMacro("Cannot measure distances: the input has no polygons or 3-D cells, and Input Geometry is "
-                    "Polygons; choose Automatic or Points to measure its points.");
-      return false;
-    }
-    if (!input.extractedFrom.empty())
-    {
-      vtkOutputWindowDisplayText(("Mesh Signed Distance: the input (" + input.extractedFrom +
-        ") is measured by its outer surface, as Extract Surface gives it.\n").c_str());
-    }
-    if (!use.points && (counts.lines > 0 || counts.vertices > 0))
-    {
-      vtkWarningMacro("Ignoring " << counts.lines << " lines and " << counts.vertices
-                                  << " vertices: only polygons and triangle strips have an inside.");
-    }
-    if (counts.badCells > 0)
-    {
-      vtkErrorMacro("The input has " << counts.badCells << " cells whose point ids are out of range: it is corrupt.");
-      return false;
-    }
-    if (const shrinkwrap::Status status = shrinkwrap::checkSoup(soup); !status)
-    {
-      vtkErrorMacro("Cannot measure distances: " << status.message() << ".");
-      return false;
-    }
-    bounds = convert::surfaceBounds(meshes);
+    status = shrinkwrap::checkSoup(parts.polygons);
   }
-  else
+  if (status && parts.use.points && !(parts.use.polygons && parts.points.empty()))
   {
-    soup = shrinkwrap::TriangleSoup();
+    status = shrinkwrap::checkPoints(parts.points); // beside polygons, there may be none
   }
+  if (!status)
+  {
+    vtkErrorMacro("Cannot measure distances: " << status.message() << ".");
+    return false;
+  }
+  soup = std::move(parts.polygons);
+  bounds = parts.polygonBounds;
   cloud = shrinkwrap::TriangleSoup();
-  if (use.points)
+  cloud.points.assign(parts.points.begin(), parts.points.end());
+  if (!cloud.points.empty())
   {
-    // A point cloud, or the points beside the polygons (issue #13): the polygons' own corners lie on
-    // them already.
-    if (use.polygons)
-    {
-      for (vtkPolyData* mesh : meshes)
-      {
-        const std::vector<shrinkwrap::Vec3> loose = convert::loosePointsOf<std::vector<shrinkwrap::Vec3>>(mesh);
-        cloud.points.insert(cloud.points.end(), loose.begin(), loose.end());
-      }
-      if (cloud.points.empty())
-      {
-        vtkWarningMacro("Input Geometry is Polygons and Points, but every point of the input lies on its polygons: "
-                        "the polygons are measured.");
-        return true;
-      }
-    }
-    else
-    {
-      cloud.points = convert::pointsOf<std::vector<shrinkwrap::Vec3>>(data);
-    }
-    if (const shrinkwrap::Status status = shrinkwrap::checkPoints(cloud.points); !status)
-    {
-      vtkErrorMacro("Cannot measure distances: " << status.message() << ".");
-      return false;
-    }
-    vtkOutputWindowDisplayText(("Mesh Signed Distance: the field is the unsigned distance to the nearest of " +
-      std::string(use.polygons ? "the input's polygons and " : "its ") + std::to_string(cloud.points.size()) +
-      (use.polygons ? " points beside them" : " points") + (this->InputGeometry == AUTOMATIC ? " (it has no polygons)" : "") + ".\n").c_str());
+    vtkOutputWindowDisplayText(
+      ("Mesh Signed Distance: the field is the unsigned distance to the nearest of " +
+        std::string(parts.use.polygons ? "the input's polygons and " : "its ") +
+        std::to_string(cloud.points.size()) +
+        (parts.use.polygons ? " points beside them" : " points") +
+        (this->InputGeometry == vtkInputGeometry::AUTOMATIC ? " (it has no polygons)" : "") + ".\n")
+        .c_str());
     bounds.extend(shrinkwrap::Box::around(cloud.points));
   }
   return true;
+}
+
+void vtkMeshSignedDistance::Report(const shrinkwrap::Notes& notes)
+{
+  for (const shrinkwrap::Note& note : notes)
+  {
+    if (note.kind == shrinkwrap::Note::Warning)
+    {
+      vtkWarningMacro(<< note.text << ".");
+    }
+    else
+    {
+      vtkOutputWindowDisplayText(("Mesh Signed Distance: " + note.text + ".\n").c_str());
+    }
+  }
 }
 
 shrinkwrap::SignedDistanceSettings vtkMeshSignedDistance::DistanceSettings() const
@@ -577,10 +436,13 @@ shrinkwrap::SignedDistanceSettings vtkMeshSignedDistance::DistanceSettings() con
   return settings;
 }
 
-bool vtkMeshSignedDistance::Compute(const shrinkwrap::TriangleSoup& soup, const shrinkwrap::TriangleSoup& cloud,
-  const shrinkwrap::GridLattice& lattice, int first, int last, const shrinkwrap::SlabExchange* exchange,
-  vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result)
+bool vtkMeshSignedDistance::Compute(const Measured& measured, int first, int last,
+  const shrinkwrap::SlabExchange* exchange, vtkFloatArray* values,
+  shrinkwrap::SignedDistanceResult& result)
 {
+  const shrinkwrap::TriangleSoup& soup = measured.soup;
+  const shrinkwrap::TriangleSoup& cloud = measured.cloud;
+  const shrinkwrap::GridLattice& lattice = measured.lattice;
   const shrinkwrap::SignedDistanceSettings settings = this->DistanceSettings();
   // Under MPI, what must fit is this rank's piece (with a few planes around it), not the grid.
   const shrinkwrap::GridLattice planes = shrinkwrap::planesOf(lattice, first, last);

@@ -48,8 +48,10 @@
 
 #include "ShrinkWrapFiltersModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
+#include "vtkInputGeometry.h" // for InputGeometry's values
 
 #include <memory> // for the gathered input
+#include <vector> // for the notes
 
 class vtkCompositeDataSet;
 class vtkFloatArray;
@@ -62,7 +64,8 @@ struct GatheredInput;
 }
 struct Box;
 struct GridLattice;
-struct IndexedTriangles;
+struct Note;
+struct TriangleSoup;
 struct SignedDistanceResult;
 struct SignedDistanceSettings;
 class SlabExchange;
@@ -76,13 +79,6 @@ public:
   vtkTypeMacro(vtkMeshSignedDistance, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum InputGeometries
-  {
-    AUTOMATIC = 0, ///< the polygons (and 3-D cells' surface) when there are any, else the points
-    POLYGONS = 1,  ///< the polygons only; an input without any is an error
-    POINTS = 2,    ///< every point of the input, the polygons' corners included (unsigned)
-    POLYGONS_AND_POINTS = 3 ///< the nearest of the polygons and the points none of them uses (unsigned)
-  };
 
   enum SweepMethods
   {
@@ -93,9 +89,10 @@ public:
   ///@{
   /**
    * What of the input the distances are measured to: AUTOMATIC (default), POLYGONS, POINTS or
-   * POLYGONS_AND_POINTS (InputGeometries). A field from points is unsigned: points have no inside.
+   * POLYGONS_AND_POINTS (vtkInputGeometry). A field from points is unsigned: points have no inside.
    */
-  vtkSetClampMacro(InputGeometry, int, AUTOMATIC, POLYGONS_AND_POINTS);
+  vtkSetClampMacro(
+    InputGeometry, int, vtkInputGeometry::AUTOMATIC, vtkInputGeometry::POLYGONS_AND_POINTS);
   vtkGetMacro(InputGeometry, int);
   ///@}
 
@@ -216,7 +213,7 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int InputGeometry = AUTOMATIC;
+  int InputGeometry = vtkInputGeometry::AUTOMATIC;
   // Defaults: the constructor takes them from the core's settings structs, where they are stated once.
   double BoxScale;
   double OffsetFactor;
@@ -240,13 +237,18 @@ private:
   shrinkwrap::SignedDistanceSettings DistanceSettings() const;
   // What InputGeometry measures of the input: its triangles (`soup`) and points (`cloud`, points
   // only), either empty when not measured, with the bounds of both; false (reported) if nothing.
-  bool ReadInput(vtkDataObject* input, shrinkwrap::IndexedTriangles& soup, shrinkwrap::IndexedTriangles& cloud,
+  bool ReadInput(vtkDataObject* input, shrinkwrap::TriangleSoup& soup, shrinkwrap::TriangleSoup& cloud,
     shrinkwrap::Box& bounds);
+  void Report(const std::vector<shrinkwrap::Note>& notes);
+  struct Measured; // the input's triangles and points, and the lattice placed around them
+  bool Measure(vtkDataObject* input, Measured& measured); // false (reported) if it cannot
+  bool ByPieces(vtkInformation* outInfo) const;
+  bool ComputePieces(bool ready, const Measured& measured, vtkInformation* outInfo, int extent[6],
+    vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
   // The distances at planes first .. last of the lattice, threaded: all of them, or with `exchange`
   // this MPI rank's piece, computed with the other ranks; false (reported) when memory ran out or the
   // run was aborted.
-  bool Compute(const shrinkwrap::IndexedTriangles& soup, const shrinkwrap::IndexedTriangles& cloud,
-    const shrinkwrap::GridLattice& lattice, int first, int last, const shrinkwrap::SlabExchange* exchange,
+  bool Compute(const Measured& measured, int first, int last, const shrinkwrap::SlabExchange* exchange,
     vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
   void AddStatus(const shrinkwrap::SignedDistanceResult& result, vtkImageData* output);
   // The whole field of `input` in this process alone, as `output` (empty when it cannot be computed);

@@ -1,13 +1,14 @@
 #include "vtkShrinkWrapFilter.h"
 
-#include "Common/Parallel.h"
-#include "Distance/PointSource.h"
-#include "Surface/SelfIntersections.h"
-#include "Distance/SignedDistance.h"
-#include "Distance/UnionSource.h"
-#include "VTKConversions.h"
 #include "RankInputs.h"
-#include "Evolution/WrapSession.h"
+#include "TargetInput.h"
+#include "VTKConversions.h"
+#include "vtkInputGeometry.h"
+
+#include "Common/Parallel.h"
+#include "Surface/SelfIntersections.h"
+#include "Wrap/AutomaticSizes.h"
+#include "Wrap/Wrap.h"
 
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
@@ -26,12 +27,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <functional>
-#include <numeric>
+#include <map>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkShrinkWrapFilter);
+vtkCxxSetObjectMacro(vtkShrinkWrapFilter, Controller, vtkMultiProcessController);
 
 using namespace shrinkwrap;
 
@@ -50,109 +53,119 @@ vtkCompositeDataSet* compositeTarget(vtkInformationVector* port0)
   return nullptr;
 }
 
-// The piece that wraps each block (convert::shareOut). The cost is the wrap's expected vertex count,
-// the block's area over L^2 (its resolved Target Edge Length); 1 for a block without polygons
-// (points: no area to go by).
-std::vector<int> piecesOfBlocks(const std::vector<vtkDataSet*>& targets, int pieces, const WrapSettings& settings)
+double secondsSince(std::chrono::steady_clock::time_point begin)
 {
-  std::vector<double> cost(targets.size(), 0);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+// The data objects on a port, by connection.
+std::vector<vtkDataObject*> dataOf(vtkInformationVector* port)
+{
+  std::vector<vtkDataObject*> data;
+  for (int c = 0; c < port->GetNumberOfInformationObjects(); ++c)
+  {
+    data.push_back(port->GetInformationObject(c)->Get(vtkDataObject::DATA_OBJECT()));
+  }
+  return data;
+}
+
+// The piece that wraps each block (convert::shareOut), by the wrap's expected vertex count: the
+// block's area over L^2 (L as with Remeshing); 1 for a block without polygons (points: no area).
+std::vector<int> piecesOfBlocks(
+  const std::vector<vtkDataSet*>& targets, int pieces, WrapSettings settings)
+{
+  settings.remeshing = true;
+  std::vector<double> cost(targets.size(), 1.0);
   for (std::size_t b = 0; b < targets.size(); ++b)
   {
-    const convert::PolygonMeshes meshes = convert::polygonMeshes(targets[b]);
     convert::SoupCounts counts;
-    const TriangleSoup soup = meshes.meshes.empty() ? TriangleSoup() : convert::soupOf(meshes.meshes, counts);
-    double area = 0;
-    for (const auto& t : soup.triangles)
-    {
-      const auto& p = soup.points;
-      const bool valid = std::all_of(t.begin(), t.end(), [&](int v) { return v >= 0 && v < static_cast<int>(p.size()); });
-      area += valid ? 0.5 * (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).norm() : 0.0;
-    }
+    const TriangleSoup soup = convert::soupOf(convert::polygonMeshes(targets[b]).meshes, counts);
     const Box box = convert::boundsOf(targets[b]);
-    const double length = box.empty() ? 0.0 : settings.resolved(box).targetLength;
-    cost[b] = length > 0 && std::isfinite(area / (length * length)) ? std::max(1.0, area / (length * length)) : 1.0;
+    const double length = box.empty() ? 0.0 : edgeLengthFor(settings, box).value_or(0);
+    const double vertices = soup.area() / (length * length);
+    cost[b] = length > 0 && std::isfinite(vertices) ? std::max(1.0, vertices) : 1.0;
   }
   return convert::shareOut(cost, pieces);
 }
 
-// The target among port 0's inputs and the distance field, on port 1 or beside the target on port 0
-// (an image with SignedDistance there); the number of targets found.
-int targetAndField(
-  const std::vector<vtkDataObject*>& port0, vtkImageData* port1, vtkDataObject*& target, vtkImageData*& field)
+// The target as the core takes it, kept while the data and the Input Geometry stay.
+struct ConvertedTarget
 {
-  field = port1;
-  target = nullptr;
-  int targets = 0;
-  for (vtkDataObject* data : port0)
-  {
-    auto* image = vtkImageData::SafeDownCast(data);
-    if (image && !field && image->GetPointData()->GetArray("SignedDistance"))
-    {
-      field = image;
-      continue;
-    }
-    target = data;
-    targets += data != nullptr;
-  }
-  return targets;
-}
+  const vtkDataObject* data = nullptr;
+  vtkMTimeType key = 0; // the data's
+  int geometry = 0;     // InputGeometry
+  Status status;
+  WrapTarget target;
+  Notes notes;
+};
 
-// The unsigned field of the points (and of the polygons beside them, if given), computed here, and the
-// fields of a wrap onto them.
-Status pointFields(const PointCloud& cloud, const std::shared_ptr<const TriangleSource>& polygons, bool givenStart,
-  const WrapSettings& settings, WrapFields& fields)
+// The plan for the inputs and properties as they were.
+struct PlannedWrap
 {
-  const PointSource& points = *cloud.points;
-  Box box = points.bounds();
-  if (polygons)
-  {
-    box.extend(polygons->bounds());
-  }
-  GridLattice lattice;
-  Status status = placeGrid(box, settings.fieldPlacement(box, givenStart), lattice);
-  if (status)
-  {
-    status = checkMemory(lattice, SignedDistanceSettings());
-  }
-  if (!status)
-  {
-    return Status::failure("the points' distance field: " + status.message());
-  }
-  std::vector<float> values(lattice.nodeCount());
-  if (polygons)
-  {
-    SignedDistanceSettings unsignedDistance;
-    unsignedDistance.computeSign = false;
-    computeSignedDistance(UnionSource({ polygons, cloud.points }), lattice, unsignedDistance, values.data());
-  }
-  else
-  {
-    computePointDistance(points, lattice, SignedDistanceSettings(), values.data());
-  }
-  return pointWrapFields(DistanceGrid(lattice, std::move(values)), cloud, settings, fields, polygons);
-}
+  vtkMTimeType key = 0; // SessionKey
+  const vtkDataObject* data = nullptr;
+  std::optional<GridLattice> field;
+  bool givenStart = false;
+  Status status;
+  WrapPlan plan;
+};
 
-// The points a wrap takes of its target: beside its polygons, the points none of them uses; else all.
-PointList wrappedPoints(vtkDataObject* target, vtkPolyData* mesh, const convert::Geometry& use)
+struct Session
 {
-  return use.polygons ? (mesh ? convert::loosePointsOf<PointList>(mesh) : PointList()) : convert::pointsOf<PointList>(target);
-}
+  std::unique_ptr<WrapSession> session;
+  vtkMTimeType key = 0;
+  double seconds = 0; // fields, start and steps
+};
 } // namespace
 
+struct vtkShrinkWrapFilter::vtkInternals
+{
+  ConvertedTarget Converted;
+  PlannedWrap Planned;
+  // Everything derived from the inputs and properties, dropped when either changes: the current
+  // session, and a composite target's blocks' sessions (by flat index), swapped in while each runs.
+  std::unique_ptr<WrapSession> Current;
+  vtkMTimeType CurrentKey = 0;
+  double ComputeSeconds = 0;
+  std::map<unsigned int, Session> Blocks;
+  vtkMTimeType BlocksKey = 0;
+  std::vector<int> BlockPieces; // the piece that wraps each block of a composite every rank holds
+  int BlockPiecesOf = 0;        // among so many pieces
+  std::unique_ptr<convert::GatheredInput> Gathered; // a distributed target as gathered here
+
+  // The target as the core takes it, converted once while the data and Input Geometry stay (both
+  // passes need it; measuring a cloud takes a while). A composite is wrapped as its blocks appended.
+  const ConvertedTarget& TargetOf(vtkDataObject* data, int geometry);
+  void Swap(Session& block);
+};
+
 vtkShrinkWrapFilter::vtkShrinkWrapFilter()
+  : Internals(new vtkInternals)
 {
   this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(1);
-  const WrapSettings defaults;
-  const EvolverSettings& e = defaults.evolution;
+  this->SetProperties(WrapSettings());
+  this->SetProgressText("Shrink Wrap");
+  this->SetController(vtkMultiProcessController::GetGlobalController());
+}
+
+vtkShrinkWrapFilter::~vtkShrinkWrapFilter()
+{
+  this->SetController(nullptr);
+}
+
+// The properties from the core's settings (the defaults are stated there once), and back.
+void vtkShrinkWrapFilter::SetProperties(const WrapSettings& s)
+{
+  const EvolverSettings& e = s.evolution;
   this->TimeStep = e.timeStep;
-  this->NumberOfSteps = defaults.steps;
-  this->SubdivisionLevel = defaults.start.subdivision;
+  this->NumberOfSteps = s.steps;
+  this->SubdivisionLevel = s.start.subdivision;
   this->C1 = e.C1;
   this->C2 = e.C2;
   this->C = e.C;
   this->D = e.D;
-  this->TangentialRedistribution = static_cast<int>(e.redistribution); // NONE, ANGLE, VOLUME in order
+  this->TangentialRedistribution = static_cast<int>(e.redistribution); // NONE, ANGLE, VOLUME
   this->OmegaAngle = e.omegaAngle;
   this->OmegaVolume = e.omegaVolume;
   this->RhoA = e.rhoA;
@@ -163,29 +176,20 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   this->FitFacets = e.facetFit != 0;
   this->CreaseAngle = e.rims.creaseAngle;
   this->FlipDihedralLimit = e.flips.maxDihedral;
-  this->StartingShape = static_cast<int>(defaults.start.shape); // ICOSPHERE, OFFSET_SURFACE in order
-  this->StartOffset = defaults.start.offset;
-  this->GapSize = defaults.gapSize;
-  this->CloseHoles = defaults.closeHoles;
-  this->Remeshing = defaults.remeshing;
-  this->TargetEdgeLength = defaults.targetLength;
-  this->EdgeLengthRange[0] = defaults.edgeRange[0];
-  this->EdgeLengthRange[1] = defaults.edgeRange[1];
-  this->InitialRelaxation = defaults.start.relaxation;
-  this->AutomaticScaling = defaults.automaticScaling;
+  this->StartingShape = static_cast<int>(s.start.shape); // ICOSPHERE, OFFSET_SURFACE
+  this->StartOffset = s.start.offset;
+  this->GapSize = s.gapSize.value_or(0);
+  this->CloseHoles = s.closeHoles;
+  this->Remeshing = s.remeshing;
+  this->TargetEdgeLength = s.targetEdgeLength.value_or(0);
+  this->EdgeLengthRange[0] = s.edgeLengthRange[0];
+  this->EdgeLengthRange[1] = s.edgeLengthRange[1];
+  this->InitialRelaxation = s.start.relaxation;
+  this->AutomaticScaling = s.automaticScaling;
   this->SolverTolerance = e.solverTolerance;
-  this->Resolution = defaults.resolution;
-  this->CacheMemoryLimit = defaults.cacheMiB;
-  this->SetProgressText("Shrink Wrap");
-  this->SetController(vtkMultiProcessController::GetGlobalController());
+  this->Resolution = s.resolution;
+  this->CacheMemoryLimit = s.cacheMiB;
 }
-
-vtkShrinkWrapFilter::~vtkShrinkWrapFilter()
-{
-  this->SetController(nullptr);
-}
-
-vtkCxxSetObjectMacro(vtkShrinkWrapFilter, Controller, vtkMultiProcessController);
 
 WrapSettings vtkShrinkWrapFilter::CoreSettings() const
 {
@@ -211,11 +215,13 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
   e.flips.maxDihedral = this->FlipDihedralLimit;
   s.start.shape = static_cast<StartShape>(this->StartingShape);
   s.start.offset = this->StartOffset;
-  s.gapSize = this->GapSize;
+  // 0 asks for the automatic size; anything else (a negative value too) is the user's to check.
+  s.gapSize = this->GapSize != 0 ? std::optional<double>(this->GapSize) : std::nullopt;
   s.closeHoles = this->CloseHoles;
   s.remeshing = this->Remeshing;
-  s.targetLength = this->TargetEdgeLength;
-  s.edgeRange = { this->EdgeLengthRange[0], this->EdgeLengthRange[1] };
+  s.targetEdgeLength =
+    this->TargetEdgeLength != 0 ? std::optional<double>(this->TargetEdgeLength) : std::nullopt;
+  s.edgeLengthRange = { this->EdgeLengthRange[0], this->EdgeLengthRange[1] };
   s.start.relaxation = this->InitialRelaxation;
   s.automaticScaling = this->AutomaticScaling;
   e.solverTolerance = this->SolverTolerance;
@@ -226,8 +232,8 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
 
 int vtkShrinkWrapFilter::GetNumberOfComputedSteps() const
 {
-  int steps = this->Current ? this->Current->computedSteps() : 0;
-  for (const auto& block : this->Blocks)
+  int steps = this->Internals->Current ? this->Internals->Current->computedSteps() : 0;
+  for (const auto& block : this->Internals->Blocks)
   {
     steps += block.second.session ? block.second.session->computedSteps() : 0;
   }
@@ -243,7 +249,7 @@ int vtkShrinkWrapFilter::FillInputPortInformation(int port, vtkInformation* info
     // A composite target is taken whole and wrapped block by block (ExecuteBlocks): left to the
     // composite pipeline, each block would restart the others' sessions and time would not move.
     info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
-    info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1); // the target, and maybe its field (TargetAndField)
+    info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1); // the target, and maybe its field
   }
   if (port > 0)
   {
@@ -269,18 +275,21 @@ vtkTypeBool vtkShrinkWrapFilter::ProcessRequest(
 }
 
 // A composite target gives a composite of the same kind (a wrap per block), anything else a surface.
-int vtkShrinkWrapFilter::RequestDataObject(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkShrinkWrapFilter::RequestDataObject(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkCompositeDataSet* composite = this->WrapBlocksTogether ? nullptr : compositeTarget(inputVector[0]);
+  vtkCompositeDataSet* composite =
+    this->WrapBlocksTogether ? nullptr : compositeTarget(inputVector[0]);
   convert::makeOutput<vtkPolyData>(outputVector->GetInformationObject(0), composite);
   return 1;
 }
 
-int vtkShrinkWrapFilter::ComputePipelineMTime(vtkInformation* request, vtkInformationVector** inInfoVec,
-  vtkInformationVector* outInfoVec, int requestFromOutputPort, vtkMTimeType* mtime)
+int vtkShrinkWrapFilter::ComputePipelineMTime(vtkInformation* request,
+  vtkInformationVector** inInfoVec, vtkInformationVector* outInfoVec, int requestFromOutputPort,
+  vtkMTimeType* mtime)
 {
-  const int result =
-    this->Superclass::ComputePipelineMTime(request, inInfoVec, outInfoVec, requestFromOutputPort, mtime);
+  const int result = this->Superclass::ComputePipelineMTime(
+    request, inInfoVec, outInfoVec, requestFromOutputPort, mtime);
   if (this->RunAgain)
   {
     this->RunAgainTime.Modified();
@@ -305,88 +314,55 @@ int vtkShrinkWrapFilter::RequestInformation(
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), n + 1);
   const double range[2] = { 0.0, n * tau };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  onAllCores([&] { this->ShowSizes(this->PlannedSizes(inputVector)); }); // its points' spacing is threaded
+  // ParaView reads information properties after RequestInformation, not after RequestData: the
+  // panel's sizes are planned here from the inputs as they stand (0 while the target has not been
+  // computed, and for a composite wrapped block by block); RequestData then shows the run's.
+  this->ShowSizes({});
+  onAllCores([&] {
+    vtkDataObject* target = nullptr;
+    vtkImageData* field = nullptr;
+    const auto port1 = dataOf(inputVector[1]);
+    const bool one = this->Inputs(
+      dataOf(inputVector[0]), port1.empty() ? nullptr : port1[0], target, field, false);
+    const bool blockByBlock = vtkCompositeDataSet::SafeDownCast(target) && !this->WrapBlocksTogether;
+    if (one && target && !blockByBlock)
+    {
+      this->Plan(target, this->FieldLattice(inputVector, field), this->HasInitialSurface());
+    }
+  });
   return 1;
 }
 
-void vtkShrinkWrapFilter::ShowSizes(const convert::WrapSizes& sizes)
+// The lattice of a connected field as its pipeline information gives it (RequestInformation comes
+// before the field is computed), else as it stands.
+std::optional<GridLattice> vtkShrinkWrapFilter::FieldLattice(
+  vtkInformationVector** inputVector, vtkImageData* field)
 {
-  this->FieldCellSize = sizes.cell;
-  this->ChosenGapSize = sizes.gap;
-  this->ChosenTargetEdgeLength = sizes.length;
-}
-
-// ParaView reads information properties after RequestInformation, not after RequestData, so the
-// sizes are worked out here from the inputs as they stand (in the GUI the target has been shown by then;
-// an update from here would break the composite executive's block-by-block pass): a connected field's
-// spacing as its pipeline information gives it, or the field placed as FieldsOf will place it; the
-// automatic gap and edge length resolved as StartSession resolves them. 0 while the target has not
-// been computed yet; RequestData then sets the run's.
-convert::WrapSizes vtkShrinkWrapFilter::PlannedSizes(vtkInformationVector** inputVector)
-{
-  std::vector<vtkDataObject*> inputs[2];
+  if (!field)
+  {
+    return std::nullopt;
+  }
+  GridLattice lattice = convert::latticeOf(field);
   for (int port = 0; port < 2; ++port)
   {
     for (int c = 0; c < inputVector[port]->GetNumberOfInformationObjects(); ++c)
     {
-      inputs[port].push_back(inputVector[port]->GetInformationObject(c)->Get(vtkDataObject::DATA_OBJECT()));
-    }
-  }
-  vtkDataObject* target = nullptr;
-  vtkImageData* field = nullptr;
-  targetAndField(inputs[0], inputs[1].empty() ? nullptr : vtkImageData::SafeDownCast(inputs[1][0]), target, field);
-  if (vtkCompositeDataSet::SafeDownCast(target) && !this->WrapBlocksTogether && !field)
-  {
-    return {}; // each block has sizes of its own
-  }
-  const bool givenStart = this->GetNumberOfInputConnections(2) > 0;
-  const convert::PolygonMeshes meshes = convert::polygonMeshes(target);
-  Box box = convert::surfaceBounds(meshes.meshes);
-  WrapSettings chosen = this->CoreSettings();
-  const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, !box.empty());
-  if (target && use.points && !field) // as StartSession
-  {
-    PointList points = wrappedPoints(target, meshes.meshes.empty() ? nullptr : meshes.meshes[0], use);
-    if (checkPoints(points))
-    {
-      box = use.polygons ? box : Box();
-      box.extend(Box::around(points));
-      // The points go to the cloud (no copy): they are not needed here after it.
-      const PointCloud& cloud = this->MeasuredCloud(target, points.size(), [&] { return measureCloud(std::move(points)); });
-      chosen = withPointSizes(chosen, box, cloud, givenStart);
-    }
-    else if (!use.polygons) // no points: no field (StartSession says why); beside polygons: the polygons'
-    {
-      return {};
-    }
-  }
-  const bool sized = !box.empty() && box.min.allFinite() && box.max.allFinite(); // as StartSession checks
-  const WrapSettings settings = chosen.resolved(box);
-  convert::WrapSizes sizes;
-  if (sized)
-  {
-    sizes = { 0, settings.gapSize, settings.evolution.remeshing.targetLength }; // 0: Remeshing off
-  }
-  if (field)
-  {
-    sizes.cell = field->GetSpacing()[0];
-    for (int port = 0; port < 2; ++port)
-    {
-      for (int c = 0; c < inputVector[port]->GetNumberOfInformationObjects(); ++c)
+      vtkInformation* info = inputVector[port]->GetInformationObject(c);
+      if (info->Get(vtkDataObject::DATA_OBJECT()) == field && info->Has(vtkDataObject::SPACING()))
       {
-        vtkInformation* info = inputVector[port]->GetInformationObject(c);
-        if (info->Get(vtkDataObject::DATA_OBJECT()) == field && info->Has(vtkDataObject::SPACING()))
-        {
-          sizes.cell = info->Get(vtkDataObject::SPACING())[0];
-        }
+        const double* spacing = info->Get(vtkDataObject::SPACING());
+        lattice.spacing = Vec3(spacing[0], spacing[1], spacing[2]);
       }
     }
   }
-  else if (GridLattice lattice; sized && placeGrid(box, settings.fieldPlacement(box, givenStart), lattice))
-  {
-    sizes.cell = lattice.spacing.x();
-  }
-  return sizes;
+  return lattice;
+}
+
+void vtkShrinkWrapFilter::ShowSizes(const WrapSizes& sizes)
+{
+  this->FieldCellSize = sizes.cell;
+  this->ChosenGapSize = sizes.gap;
+  this->ChosenTargetEdgeLength = sizes.edgeLength.value_or(0); // 0: Remeshing off
 }
 
 int vtkShrinkWrapFilter::RequestUpdateExtent(
@@ -406,26 +382,6 @@ int vtkShrinkWrapFilter::RequestUpdateExtent(
   return 1;
 }
 
-const PointCloud& vtkShrinkWrapFilter::MeasuredCloud(
-  vtkDataObject* target, std::size_t points, const std::function<PointCloud()>& measure)
-{
-  if (const PointCloud* cached = this->CachedCloud(target); cached && this->Cloud.points == points)
-  {
-    return *cached;
-  }
-  CloudCache& c = this->Cloud;
-  c = { target, target ? target->GetMTime() : 0, this->InputGeometry, points, std::make_unique<PointCloud>(measure()) };
-  return *c.cloud;
-}
-
-const PointCloud* vtkShrinkWrapFilter::CachedCloud(vtkDataObject* target) const
-{
-  const CloudCache& c = this->Cloud;
-  const bool current =
-    target && c.cloud && c.target == target && c.key == target->GetMTime() && c.geometry == this->InputGeometry;
-  return current ? c.cloud.get() : nullptr;
-}
-
 vtkMTimeType vtkShrinkWrapFilter::SessionKey()
 {
   vtkMTimeType key = this->GetMTime();
@@ -442,253 +398,93 @@ vtkMTimeType vtkShrinkWrapFilter::SessionKey()
   return key;
 }
 
-// Port 0 may hold the target and its distance field together: ParaView connects both there when both
-// are selected as Shrink Wrap is created. An image with a SignedDistance point array is then the field
-// (unless port 1 has one); the rest is the target, one dataset.
-bool vtkShrinkWrapFilter::TargetAndField(vtkInformationVector** inputVector, vtkDataObject*& target, vtkImageData*& field)
+// Port 0 may hold the target and its distance field together: ParaView connects both there when
+// both are selected as Shrink Wrap is created. An image with a SignedDistance point array is then
+// the field (unless port 1 has one); the rest is the target, one dataset. False, and an error if
+// `complain`, when port 0 holds more than one target.
+bool vtkShrinkWrapFilter::Inputs(const std::vector<vtkDataObject*>& port0, vtkDataObject* port1,
+  vtkDataObject*& target, vtkImageData*& field, bool complain)
 {
-  std::vector<vtkDataObject*> port0;
-  for (int c = 0; c < inputVector[0]->GetNumberOfInformationObjects(); ++c)
+  field = vtkImageData::SafeDownCast(port1);
+  target = nullptr;
+  int targets = 0;
+  for (vtkDataObject* data : port0)
   {
-    port0.push_back(vtkDataObject::GetData(inputVector[0], c));
+    auto* image = vtkImageData::SafeDownCast(data);
+    if (image && !field && image->GetPointData()->GetArray("SignedDistance"))
+    {
+      field = image;
+      continue;
+    }
+    target = data;
+    targets += data != nullptr;
   }
-  const int targets = targetAndField(port0, vtkImageData::GetData(inputVector[1], 0), target, field);
-  if (targets > 1)
+  if (targets > 1 && complain)
   {
-    vtkErrorMacro("Shrink Wrap wraps one target at a time, and its Input holds " << targets
-                                                                                  << " (besides a distance field).");
-    return false;
+    vtkErrorMacro("Shrink Wrap wraps one target at a time, and its Input holds "
+      << targets << " (besides a distance field).");
   }
-  return true;
+  return targets <= 1;
 }
 
-// Every rank takes part (the target is made whole on each); piece 0 wraps it, under MPI the other
-// pieces are empty.
-void vtkShrinkWrapFilter::ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output)
+const ConvertedTarget& vtkShrinkWrapFilter::vtkInternals::TargetOf(vtkDataObject* data, int geometry)
 {
-  vtkDataObject* found = nullptr;
-  vtkImageData* field = nullptr;
-  const bool ok = this->TargetAndField(inputVector, found, field);
-  vtkDataObject* whole = convert::wholeInput(ok ? found : nullptr, this->Controller, this->Gathered);
-  if (ok && convert::pieceRequest(outInfo).piece == 0)
+  ConvertedTarget& c = this->Converted;
+  if (c.data == data && c.key == data->GetMTime() && c.geometry == geometry)
   {
-    this->Execute(
-      [&] {
-        // A composite's blocks together as one target, appended only when a session starts (not at
-        // every time asked for).
-        const vtkSmartPointer<vtkDataSet> together =
-          vtkCompositeDataSet::SafeDownCast(whole) ? convert::appendedLeaves(whole) : nullptr;
-        return this->StartSession(
-          together ? together.Get() : vtkDataSet::SafeDownCast(whole), field, vtkPolyData::GetData(inputVector[2], 0));
-      },
-      outInfo, output);
+    return c;
   }
+  c = ConvertedTarget{ data, data->GetMTime(), geometry };
+  vtkSmartPointer<vtkDataObject> whole = data;
+  if (vtkCompositeDataSet::SafeDownCast(data))
+  {
+    whole = convert::appendedLeaves(data);
+  }
+  convert::TargetParts parts;
+  c.status = convert::readTarget(whole, geometry, { "target", "wrapped" }, parts, c.notes);
+  const std::size_t points = parts.points.size();
+  if (c.status)
+  {
+    c.status = makeTarget(std::move(parts.polygons), std::move(parts.points), c.target);
+  }
+  if (c.status && points > 0)
+  {
+    inform(c.notes,
+      std::string(parts.use.polygons ? "the target's polygons and the " : "the target's ") +
+        std::to_string(points) + (parts.use.polygons ? " points beside them" : " points") +
+        " are wrapped" +
+        (geometry == vtkInputGeometry::AUTOMATIC ? " (it has no polygons)" : ""));
+  }
+  return c;
 }
 
-bool vtkShrinkWrapFilter::StartSession(vtkDataSet* targetData, vtkImageData* field, vtkPolyData* initial)
+// The plan for a target as it is, with a field of this lattice (if any) and maybe a given start:
+// made once while the inputs and properties stay. Null when none can be made (`Planned.status`
+// says why); shows its sizes in the panel.
+const WrapPlan* vtkShrinkWrapFilter::Plan(
+  vtkDataObject* data, const std::optional<GridLattice>& field, bool givenStart)
 {
-  const convert::PolygonMeshes input = convert::polygonMeshes(targetData);
-  vtkPolyData* target = input.meshes.empty() ? nullptr : input.meshes[0];
-  const bool hasPolygons = target && target->GetNumberOfPolys() + target->GetNumberOfStrips() > 0;
-  const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, hasPolygons);
-  if (use.polygons && !hasPolygons)
+  PlannedWrap& p = this->Internals->Planned;
+  const vtkMTimeType key = this->SessionKey();
+  const bool same = p.key == key && p.data == data && p.givenStart == givenStart &&
+    p.field.has_value() == field.has_value() && (!field || *p.field == *field);
+  if (!same)
   {
-    vtkErrorMacro("Cannot wrap: the target has no polygons or 3-D cells, and Input Geometry is Polygons; choose "
-                  "Automatic or Points to wrap its points.");
-    return false;
-  }
-  if (use.polygons && !input.extractedFrom.empty())
-  {
-    vtkOutputWindowDisplayText(("Shrink Wrap: the target (" + input.extractedFrom +
-      ") is wrapped by its outer surface, as Extract Surface gives it.\n").c_str());
-  }
-  if (const Status valid = this->CoreSettings().validate(); !valid)
-  {
-    vtkErrorMacro(<< valid.message() << ".");
-    return false;
-  }
-  // The points wrapped, if any: all the target's, or those beside its polygons (issue #13); those of
-  // the cloud RequestInformation measured, if it did.
-  PointList converted;
-  const PointCloud* cached = use.points ? this->CachedCloud(targetData) : nullptr;
-  const PointList& points = cached ? cached->points->points() : converted;
-  if (use.points && !cached)
-  {
-    converted = wrappedPoints(targetData, target, use);
-  }
-  if (use.points)
-  {
-    if (use.polygons && points.empty())
+    const ConvertedTarget& converted = this->Internals->TargetOf(data, this->InputGeometry);
+    p = PlannedWrap{ key, data, field, givenStart, converted.status };
+    WrapTarget target = converted.target;
+    target.fieldLattice = field;
+    target.givenStart = givenStart;
+    if (p.status)
     {
-      vtkWarningMacro("Input Geometry is Polygons and Points, but every point of the target lies on its polygons: "
-                      "the polygons are wrapped.");
-    }
-    else
-    {
-      Status ok = checkPoints(points);
-      if (ok && !use.polygons)
-      {
-        ok = checkPointsEnclose(points);
-      }
-      if (!ok)
-      {
-        vtkErrorMacro("Cannot wrap: " << ok.message() << ".");
-        return false;
-      }
-      if (field)
-      {
-        vtkErrorMacro("Cannot wrap points on a Distance Field: disconnect it (the wrap computes the points' own).");
-        return false;
-      }
+      p.status = planWrap(target, this->CoreSettings(), p.plan);
     }
   }
-  const bool wrapsPoints = !points.empty();
-  Box targetBox = use.polygons ? convert::boundsOf(target) : Box();
-  targetBox.extend(Box::around(points));
-  if (!targetBox.min.allFinite() || !targetBox.max.allFinite())
+  if (p.status)
   {
-    vtkErrorMacro("The target has NaN or infinite coordinates.");
-    return false;
+    this->ShowSizes(p.plan.sizes());
   }
-  const PointCloud cloud =
-    wrapsPoints ? this->MeasuredCloud(targetData, points.size(), [&] { return measureCloud(points); }) : PointCloud();
-  const WrapSettings settings = (wrapsPoints ? withPointSizes(this->CoreSettings(), targetBox, cloud, initial != nullptr)
-                                             : this->CoreSettings())
-                                  .resolved(targetBox);
-  if (const Status fits = settings.fits(targetBox); !fits)
-  {
-    vtkErrorMacro(<< fits.message() << ".");
-    return false;
-  }
-  WrapFields fields;
-  if (!wrapsPoints && !this->FieldsOf(target, field, initial != nullptr, settings, fields))
-  {
-    return false;
-  }
-  if (wrapsPoints)
-  {
-    std::shared_ptr<const TriangleSource> polygons;
-    if (use.polygons)
-    {
-      convert::SoupCounts counts;
-      const TriangleSoup soup = convert::soupOf({ target }, counts);
-      if (const Status valid = counts.badCells > 0 ? Status::failure("the target has cells whose point ids are out of range")
-                                                   : checkSoup(soup);
-          !valid)
-      {
-        vtkErrorMacro("Cannot wrap: " << valid.message() << ".");
-        return false;
-      }
-      polygons = std::make_shared<const TriangleSource>(soup);
-    }
-    if (const Status made =
-          pointFields(cloud, polygons, initial != nullptr, settings, fields);
-        !made)
-    {
-      vtkErrorMacro("Cannot wrap: " << made.message() << ".");
-      return false;
-    }
-    vtkOutputWindowDisplayText(("Shrink Wrap: " + std::string(use.polygons ? "the target's polygons and the " : "the target's ") +
-      std::to_string(points.size()) + (use.polygons ? " points beside them" : " points") + " are wrapped" +
-      (this->InputGeometry == AUTOMATIC ? " (it has no polygons)" : "") + ".\n").c_str());
-  }
-  TriangleSurface given;
-  if (initial && !convert::surfaceOf(initial, given))
-  {
-    vtkErrorMacro("The InitialSurface must be made of triangles only, with finite points and valid point ids.");
-    return false;
-  }
-  SurfaceMesh start;
-  int specks = 0;
-  // The start's contour without the case table's joins where they add handles the field has not (the
-  // hand's mesh and its 200,000 points lose one, the dragon's mesh keeps only its true one; RESULTS.md,
-  // 2026-11-27).
-  const Contour contour = [](const DistanceGrid& grid, double value) { return convert::contour(grid, value, true); };
-  Status status = startingSurface(fields.driving.grid(), targetBox, initial ? &given : nullptr, settings.start,
-    settings.evolution.flips, contour, start, specks);
-  if (specks > 0)
-  {
-    vtkWarningMacro("Left out " << specks << " piece(s) of the starting surface smaller than two cells "
-                                "of the distance field.");
-  }
-  if (status)
-  {
-    status = WrapSession::create(std::move(fields), targetBox, start, settings, this->Current);
-  }
-  if (!status)
-  {
-    vtkErrorMacro("Cannot wrap: " << status.message() << ".");
-  }
-  return status.ok();
-}
-
-// The DistanceField input, or the target's field computed here with Mesh Signed Distance's algorithm;
-// closed over the gaps the wrap bridges, and exact near the target (WrapFields).
-bool vtkShrinkWrapFilter::FieldsOf(
-  vtkPolyData* target, vtkImageData* image, bool givenStart, const WrapSettings& settings, WrapFields& fields)
-{
-  convert::SoupCounts counts;
-  const TriangleSoup soup = convert::soupOf({ target }, counts);
-  if (counts.badCells > 0)
-  {
-    vtkErrorMacro("Cannot wrap: the target has cells whose point ids are out of range.");
-    return false;
-  }
-  DistanceGrid grid;
-  std::shared_ptr<const TriangleSource> exact;
-  bool isSigned = true;
-  if (image)
-  {
-    const Status read = convert::gridOf(image, "SignedDistance", grid);
-    if (!read)
-    {
-      vtkErrorMacro("Cannot wrap: " << read.message() << ".");
-      return false;
-    }
-    isSigned = std::any_of(grid.values().begin(), grid.values().end(), [](float d) { return d < 0; });
-    if (std::all_of(grid.values().begin(), grid.values().end(), [](float d) { return d < 0; }))
-    {
-      vtkErrorMacro("Cannot wrap: the DistanceField has no outside (every value is negative), so no surface "
-                    "can start around the target.");
-      return false;
-    }
-    if (!isSigned)
-    {
-      vtkWarningMacro("The DistanceField has no inside (no negative value): it is taken as unsigned, and the wrap "
-                      "stops at the distance it reaches from outside and inside alike.");
-    }
-    if (settings.exactNearTarget && checkSoup(soup))
-    {
-      exact = std::make_shared<const TriangleSource>(soup);
-    }
-  }
-  else
-  {
-    const GridPlacement placement = settings.fieldPlacement(convert::surfaceBounds({ target }), givenStart);
-    SignedDistanceResult result;
-    SignedDistanceSettings distance;
-    distance.windingNumber = settings.closeHoles;
-    const Status status = signedDistanceGrid(
-      soup, convert::surfaceBounds({ target }), placement, distance, grid, result, {}, &exact);
-    if (!status)
-    {
-      vtkErrorMacro("Cannot wrap: the target's distance field: " << status.message() << ".");
-      return false;
-    }
-    isSigned = result.isSigned;
-    if (shrinkwrap::signNeedsWarning(result, true))
-    {
-      vtkWarningMacro("The target's distance field is "
-        << shrinkwrap::signStatus(result, true)
-        << (result.isSigned ? "." : ": the wrap stops at the distance it reaches from outside and inside alike."));
-    }
-  }
-  const Status status = wrapFields(std::move(grid), isSigned, exact, settings, fields);
-  if (!status)
-  {
-    vtkErrorMacro("Cannot wrap: " << status.message() << ".");
-  }
-  return status.ok();
+  return p.status ? &p.plan : nullptr;
 }
 
 int vtkShrinkWrapFilter::RequestData(
@@ -710,19 +506,19 @@ int vtkShrinkWrapFilter::RequestData(
       this->ExecuteWhole(inputVector, outInfo, vtkPolyData::SafeDownCast(output));
     }
   }
-  catch (const std::bad_alloc&)
+  catch (const std::exception& e) // std::bad_alloc, threads that cannot start under the same limits
   {
     output->Initialize();
-    this->Current.reset(); // a half-made step is not kept; the next update starts over
-    this->Blocks.clear();
-    vtkErrorMacro("Out of memory: lower Subdivision Level, Resolution or Cache Memory Limit.");
-  }
-  catch (const std::exception& e) // e.g. threads that cannot start under the same limits
-  {
-    output->Initialize();
-    this->Current.reset();
-    this->Blocks.clear();
-    vtkErrorMacro("Shrink Wrap failed: " << e.what() << ".");
+    this->Internals->Current.reset(); // a half-made step is not kept; the next update starts over
+    this->Internals->Blocks.clear();
+    if (dynamic_cast<const std::bad_alloc*>(&e))
+    {
+      vtkErrorMacro("Out of memory: lower Subdivision Level, Resolution or Cache Memory Limit.");
+    }
+    else
+    {
+      vtkErrorMacro("Shrink Wrap failed: " << e.what() << ".");
+    }
   }
   return 1;
 }
@@ -730,60 +526,56 @@ int vtkShrinkWrapFilter::RequestData(
 // Each block of a composite target is wrapped on its own, with a session (and a cache) of its own;
 // under MPI the blocks are shared out among the pieces by their expected cost (piecesOfBlocks; the
 // other pieces leave a block empty), so the ranks wrap them in parallel.
-void vtkShrinkWrapFilter::ExecuteBlocks(
-  vtkCompositeDataSet* blocks, vtkInformationVector** inputVector, vtkInformation* outInfo, vtkCompositeDataSet* output)
+void vtkShrinkWrapFilter::ExecuteBlocks(vtkCompositeDataSet* blocks,
+  vtkInformationVector** inputVector, vtkInformation* outInfo, vtkCompositeDataSet* output)
 {
   output->CopyStructure(blocks);
   if (this->GetNumberOfInputConnections(1) > 0 || this->GetNumberOfInputConnections(2) > 0 ||
     inputVector[0]->GetNumberOfInformationObjects() > 1)
   {
-    vtkErrorMacro("A composite target is wrapped block by block, each on a distance field and a start of its own: "
-                  "disconnect the Distance Field and the Initial Surface.");
+    vtkErrorMacro("A composite target is wrapped block by block, each on a distance field and a "
+                  "start of its own: disconnect the Distance Field and the Initial Surface.");
     return;
   }
   const convert::PieceRequest request = convert::pieceRequest(outInfo);
-  const int piece = request.piece;
-  const vtkMTimeType key = this->SessionKey();
-  if (key != this->BlocksKey)
+  if (this->SessionKey() != this->Internals->BlocksKey)
   {
-    this->Blocks.clear(); // another target or other properties: every block starts over
-    this->BlocksKey = key;
-    this->BlockPieces.clear();
+    this->Internals->Blocks.clear(); // another target or other properties: every block starts over
+    this->Internals->BlocksKey = this->SessionKey();
+    this->Internals->BlockPieces.clear();
   }
-  vtkSmartPointer<vtkCompositeDataIterator> block = vtkSmartPointer<vtkCompositeDataIterator>::Take(blocks->NewIterator());
+  auto block = vtkSmartPointer<vtkCompositeDataIterator>::Take(blocks->NewIterator());
   std::vector<vtkDataSet*> targets;
   for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
   {
     targets.push_back(vtkDataSet::SafeDownCast(block->GetCurrentDataObject()));
   }
   // Shared out once per target and properties, not at every time asked for.
-  const std::vector<int> wrappedOn = convert::piecesOfLeaves(blocks, targets, request, this->Controller, [&] {
-    if (this->BlockPieces.size() != targets.size() || this->BlockPiecesOf != request.pieces)
-    {
-      this->BlockPieces = request.pieces > 1 ? piecesOfBlocks(targets, request.pieces, this->CoreSettings())
-                                             : std::vector<int>(targets.size(), 0);
-      this->BlockPiecesOf = request.pieces;
-    }
-    return this->BlockPieces;
-  });
-  const auto here = static_cast<double>(std::count(wrappedOn.begin(), wrappedOn.end(), piece));
+  const std::vector<int> wrappedOn =
+    convert::piecesOfLeaves(blocks, targets, request, this->Controller, [&] {
+      if (this->Internals->BlockPieces.size() != targets.size() || this->Internals->BlockPiecesOf != request.pieces)
+      {
+        this->Internals->BlockPieces = request.pieces > 1
+          ? piecesOfBlocks(targets, request.pieces, this->CoreSettings())
+          : std::vector<int>(targets.size(), 0);
+        this->Internals->BlockPiecesOf = request.pieces;
+      }
+      return this->Internals->BlockPieces;
+    });
+  const auto here =
+    static_cast<double>(std::count(wrappedOn.begin(), wrappedOn.end(), request.piece));
   int count = 0, done = 0;
   for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem(), ++count)
   {
     vtkNew<vtkPolyData> wrap;
-    vtkDataSet* target = targets[count];
-    if (target && wrappedOn[count] == piece)
+    if (vtkDataSet* target = targets[count]; target && wrappedOn[count] == request.piece)
     {
       this->SetProgressShiftScale(done++ / here, 1 / here); // one progress bar over the blocks
       // The block's session in place of the single target's while it runs.
-      BlockSession& own = this->Blocks[block->GetCurrentFlatIndex()];
-      std::swap(own.session, this->Current);
-      std::swap(own.key, this->CurrentKey);
-      std::swap(own.seconds, this->ComputeSeconds);
+      Session& own = this->Internals->Blocks[block->GetCurrentFlatIndex()];
+      this->Internals->Swap(own);
       this->Execute([&] { return this->StartSession(target, nullptr, nullptr); }, outInfo, wrap);
-      std::swap(own.session, this->Current);
-      std::swap(own.key, this->CurrentKey);
-      std::swap(own.seconds, this->ComputeSeconds);
+      this->Internals->Swap(own);
     }
     output->SetDataSet(block, wrap);
   }
@@ -791,35 +583,140 @@ void vtkShrinkWrapFilter::ExecuteBlocks(
   this->ShowSizes({}); // each block had sizes of its own
 }
 
-void vtkShrinkWrapFilter::Execute(const std::function<bool()>& start, vtkInformation* outInfo, vtkPolyData* output)
+void vtkShrinkWrapFilter::vtkInternals::Swap(Session& block)
+{
+  std::swap(block.session, this->Current);
+  std::swap(block.key, this->CurrentKey);
+  std::swap(block.seconds, this->ComputeSeconds);
+}
+
+// Every rank takes part (the target is made whole on each); piece 0 wraps it, under MPI the other
+// pieces are empty.
+void vtkShrinkWrapFilter::ExecuteWhole(
+  vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output)
+{
+  vtkDataObject* found = nullptr;
+  vtkImageData* field = nullptr;
+  const bool one = this->Inputs(
+    dataOf(inputVector[0]), vtkImageData::GetData(inputVector[1], 0), found, field, true);
+  vtkDataObject* whole = convert::wholeInput(one ? found : nullptr, this->Controller, this->Internals->Gathered);
+  if (one && convert::pieceRequest(outInfo).piece == 0)
+  {
+    this->Execute(
+      [&] { return this->StartSession(whole, field, vtkPolyData::GetData(inputVector[2], 0)); },
+      outInfo, output);
+  }
+}
+
+// The target's plan and its fields, start and session (Wrap.h).
+bool vtkShrinkWrapFilter::StartSession(vtkDataObject* data, vtkImageData* image, vtkPolyData* initial)
+{
+  if (!data)
+  {
+    vtkErrorMacro("Cannot wrap: there is no target.");
+    return false;
+  }
+  WrapTarget target = this->Internals->TargetOf(data, this->InputGeometry).target;
+  std::optional<GridLattice> lattice;
+  if (image)
+  {
+    DistanceGrid grid;
+    if (const Status read = convert::gridOf(image, "SignedDistance", grid); !read)
+    {
+      vtkErrorMacro("Cannot wrap: " << read.message() << ".");
+      return false;
+    }
+    lattice = grid.lattice();
+    target.field = std::make_shared<const DistanceGrid>(std::move(grid));
+  }
+  if (initial)
+  {
+    TriangleSoup given;
+    if (!convert::surfaceOf(initial, given))
+    {
+      vtkErrorMacro("The Initial Surface must be made of triangles only, with finite points and "
+                    "valid point ids.");
+      return false;
+    }
+    target.start = std::make_shared<const TriangleSoup>(std::move(given));
+  }
+  const WrapPlan* plan = this->Plan(data, lattice, initial != nullptr);
+  this->Report(this->Internals->Converted.notes);
+  if (!plan)
+  {
+    vtkErrorMacro("Cannot wrap: " << this->Internals->Planned.status.message() << ".");
+    return false;
+  }
+  target.fieldLattice = lattice;
+  target.givenStart = initial != nullptr;
+  Notes notes;
+  const Status status =
+    startWrap(target, *plan, convert::contour, shrinkwrap::Progress(), notes, this->Internals->Current);
+  this->Report(notes);
+  if (!status)
+  {
+    vtkErrorMacro("Cannot wrap: " << status.message() << ".");
+  }
+  return status.ok();
+}
+
+void vtkShrinkWrapFilter::Report(const Notes& notes)
+{
+  for (const Note& note : notes)
+  {
+    if (note.kind == Note::Warning)
+    {
+      vtkWarningMacro(<< note.text << ".");
+    }
+    else
+    {
+      vtkOutputWindowDisplayText(("Shrink Wrap: " + note.text + ".\n").c_str());
+    }
+  }
+}
+
+shrinkwrap::Progress vtkShrinkWrapFilter::ProgressOf(double begin, double end)
+{
+  return shrinkwrap::Progress(
+    [this](double fraction) {
+      this->UpdateProgress(fraction);
+      return !this->GetAbortExecute();
+    },
+    begin, end);
+}
+
+void vtkShrinkWrapFilter::Execute(
+  const std::function<bool()>& start, vtkInformation* outInfo, vtkPolyData* output)
 {
   // Any change of an input or a property starts a new session (and drops the cache).
   const vtkMTimeType key = this->SessionKey();
-  if (!this->Current || this->CurrentKey != key)
+  if (!this->Internals->Current || this->Internals->CurrentKey != key)
   {
-    this->Current.reset();
+    this->Internals->Current.reset();
     bool started = false;
     const auto begin = std::chrono::steady_clock::now();
     onAllCores([&] { started = start(); });
-    this->ComputeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    this->Internals->ComputeSeconds = secondsSince(begin);
     if (!started) // a session is kept only when it started
     {
       return;
     }
-    this->CurrentKey = key;
+    this->Internals->CurrentKey = key;
   }
   const int wanted = this->StepAsked(outInfo);
-  const int computed = this->Current->computedSteps();
+  const int computed = this->Internals->Current->computedSteps();
   const auto begin = std::chrono::steady_clock::now();
   const bool advanced = this->Advance(wanted);
-  this->ComputeSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  this->Internals->ComputeSeconds += secondsSince(begin);
   if (advanced)
   {
     // The end of a run: the last step, computed now.
-    this->WriteOutput(wanted, wanted == this->NumberOfSteps && this->Current->computedSteps() > computed, output);
+    const bool finished =
+      wanted == this->NumberOfSteps && this->Internals->Current->computedSteps() > computed;
+    this->WriteOutput(wanted, finished, output);
   }
-  // The pipeline takes an execution as up to date even when a property changed while it ran (a panel
-  // edit, a script's callback): RunAgain makes the next request run again, with the new values.
+  // The pipeline takes an execution as up to date even when a property changed while it ran (a
+  // panel edit, a script's callback): RunAgain makes the next request run again, with the new values.
   if (this->SessionKey() != key)
   {
     this->RunAgain = true;
@@ -847,15 +744,11 @@ bool vtkShrinkWrapFilter::Advance(int step)
 {
   if (this->NumberOfSteps == 0)
   {
-    vtkWarningMacro("NumberOfSteps is 0: showing the starting surface.");
+    vtkWarningMacro("Number Of Steps is 0: showing the starting surface.");
   }
-  const int computed = this->Current->computedSteps();
-  const shrinkwrap::Progress progress([this](double fraction) {
-    this->UpdateProgress(fraction);
-    return !this->GetAbortExecute();
-  });
+  const int computed = this->Internals->Current->computedSteps();
   bool finished = false;
-  onAllCores([&] { finished = this->Current->advanceTo(step, progress); });
+  onAllCores([&] { finished = this->Internals->Current->advanceTo(step, this->ProgressOf(0, 1)); });
   // An abort ends this run: the empty output stands until a property, an input or the time asked
   // for changes (then the run resumes from the cache, or starts over).
   if (!finished)
@@ -864,25 +757,29 @@ bool vtkShrinkWrapFilter::Advance(int step)
     vtkWarningMacro("Shrink Wrap was aborted; the output is empty (computed steps stay cached).");
     return false;
   }
-  if (this->Current->lastGood() >= 0 && this->Current->computedSteps() > computed)
+  if (this->Internals->Current->lastGood() >= 0 && this->Internals->Current->computedSteps() > computed)
   {
-    vtkWarningMacro("The evolution failed: " << this->Current->failure() << "; later times show step "
-                                             << this->Current->lastGood() << ".");
+    vtkWarningMacro("The evolution failed: " << this->Internals->Current->failure()
+                                             << "; later times show step "
+                                             << this->Internals->Current->lastGood() << ".");
   }
   return true;
 }
 
 void vtkShrinkWrapFilter::WriteOutput(int wanted, bool finished, vtkPolyData* output)
 {
-  const WrapSession& s = *this->Current;
+  const WrapSession& s = *this->Internals->Current;
   const WrapSession::Surface surface = s.surface(wanted);
   SurfaceMesh mesh;
-  if (const Status closed = SurfaceMesh::build(surface.points, *surface.cached->triangles, mesh); !closed)
+  if (const Status closed = SurfaceMesh::build(surface.points, *surface.cached->triangles, mesh);
+      !closed)
   {
-    vtkErrorMacro("Internal error: step " << surface.step << " is not a closed surface: " << closed.message() << ".");
+    vtkErrorMacro("Internal error: step " << surface.step << " is not a closed surface: "
+                                          << closed.message() << ".");
     return;
   }
-  convert::writeSurface(surface.points, mesh, s.fields().target, surface.cached->tangentialVelocity, output);
+  convert::writeSurface(
+    surface.points, mesh, s.fields().target, surface.cached->tangentialVelocity, output);
   // The wrap must not pass through itself; if it does at this step, the cells say where.
   const SelfIntersections crossings = findSelfIntersections(surface.points, mesh.triangles());
   convert::addSelfIntersections(crossings, output);
@@ -894,14 +791,14 @@ void vtkShrinkWrapFilter::WriteOutput(int wanted, bool finished, vtkPolyData* ou
   else if (crossings.pairs > 0)
   {
     status = "self-intersecting: " + std::to_string(crossings.pairs) + " triangle pairs cross";
-    vtkWarningMacro("The surface of step " << surface.step << " passes through itself (" << crossings.pairs
+    vtkWarningMacro("The surface of step " << surface.step << " passes through itself ("
+                                           << crossings.pairs
                                            << " triangle pairs cross; cell array SelfIntersecting).");
   }
   convert::addStepFields(surface.step, surface.step * this->TimeStep, status, output);
-  this->ShowSizes({ s.fields().driving.grid().lattice().spacing.x(), s.settings().gapSize,
-    s.settings().evolution.remeshing.targetLength });
-  const convert::WrapSummary summary = convert::summarize(
-    output, { this->FieldCellSize, this->ChosenGapSize, this->ChosenTargetEdgeLength }, surface.step, this->ComputeSeconds);
+  this->ShowSizes(s.plan().sizes());
+  const convert::WrapSummary summary =
+    convert::summarize(output, s.plan().sizes(), surface.step, this->Internals->ComputeSeconds);
   convert::addSummary(summary, output);
   if (finished)
   {
@@ -929,16 +826,16 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EdgeCollapses: " << this->EdgeCollapses << "\n";
   os << indent << "CoverRims: " << this->CoverRims << "\n";
   os << indent << "FitFacets: " << this->FitFacets << "\n";
-  os << indent << "CreaseAngle: " << this->CreaseAngle << (this->CreaseAngle < 180 ? "\n" : " (rims only)\n");
+  os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
   os << indent << "FlipDihedralLimit: " << this->FlipDihedralLimit << "\n";
-  os << indent << "StartingShape: " << (this->StartingShape == ICOSPHERE ? "Icosphere" : "Offset Surface") << "\n";
+  os << indent << "StartingShape: " << this->StartingShape << "\n";
   os << indent << "StartOffset: " << this->StartOffset << "\n";
-  os << indent << "GapSize: " << this->GapSize << (this->GapSize > 0 ? "\n" : " (automatic)\n");
+  os << indent << "GapSize: " << this->GapSize << "\n";
   os << indent << "CloseHoles: " << this->CloseHoles << "\n";
   os << indent << "Remeshing: " << this->Remeshing << "\n";
-  os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << (this->TargetEdgeLength > 0 ? "\n" : " (automatic)\n");
+  os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << "\n";
   os << indent << "EdgeLengthRange: " << this->EdgeLengthRange[0] << " " << this->EdgeLengthRange[1]
-     << (this->EdgeLengthRange[0] < 1 || this->EdgeLengthRange[1] > 1 ? " (adaptive)\n" : " (uniform)\n");
+     << "\n";
   os << indent << "InitialRelaxation: " << this->InitialRelaxation << "\n";
   os << indent << "AutomaticScaling: " << this->AutomaticScaling << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";

@@ -66,10 +66,12 @@
 #include "ShrinkWrapFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include "vtkInputGeometry.h" // for InputGeometry's values
+
 #include <functional> // for Execute's start
-#include <map>        // for the blocks' sessions
-#include <memory>     // for the session
-#include <vector>     // for the blocks' pieces
+#include <memory>     // for the internals
+#include <optional>   // for a field's lattice
+#include <vector>     // for the inputs
 
 class vtkCompositeDataSet;
 class vtkDataSet;
@@ -77,15 +79,12 @@ class vtkImageData;
 class vtkMultiProcessController;
 namespace shrinkwrap
 {
-namespace convert
-{
-struct GatheredInput;
-struct WrapSizes;
-}
-struct PointCloud;
-class WrapSession;
-struct WrapFields;
+struct GridLattice;
+struct Note;
+class Progress;
+struct WrapPlan;
 struct WrapSettings;
+struct WrapSizes;
 }
 
 class SHRINKWRAPFILTERS_EXPORT vtkShrinkWrapFilter : public vtkPolyDataAlgorithm
@@ -102,14 +101,6 @@ public:
     VOLUME = 2
   };
 
-  enum InputGeometries
-  {
-    AUTOMATIC = 0, ///< the polygons (and 3-D cells' surface) when the target has any, else its points
-    POLYGONS = 1,  ///< the polygons only; a target without any is an error
-    POINTS = 2,    ///< every point of the target, the polygons' corners included
-    POLYGONS_AND_POINTS = 3 ///< the polygons and the points none of them uses, wrapped together
-  };
-
   enum StartingShapes
   {
     ICOSPHERE = 0,
@@ -123,10 +114,11 @@ public:
 
   ///@{
   /// What of the target is wrapped: AUTOMATIC (default), POLYGONS, POINTS or POLYGONS_AND_POINTS
-  /// (InputGeometries). POINTS wraps a mesh whose polygons are not to be trusted (a scanner's
+  /// (vtkInputGeometry). POINTS wraps a mesh whose polygons are not to be trusted (a scanner's
   /// triangles) as a cloud; POLYGONS_AND_POINTS wraps a model and a scan (its vertices) together, the
   /// automatic sizes following the points' spacing.
-  vtkSetClampMacro(InputGeometry, int, AUTOMATIC, POLYGONS_AND_POINTS);
+  vtkSetClampMacro(
+    InputGeometry, int, vtkInputGeometry::AUTOMATIC, vtkInputGeometry::POLYGONS_AND_POINTS);
   vtkGetMacro(InputGeometry, int);
   ///@}
 
@@ -365,6 +357,10 @@ public:
     return this->GetNumberOfInputConnections(1) > 0 || this->GetNumberOfInputConnections(0) > 1;
   }
 
+  /// The properties as the core's settings (Wrap/WrapSettings.h): what the filter wraps with, for a
+  /// wrap through the core alone (Wrap/Wrap.h).
+  shrinkwrap::WrapSettings CoreSettings() const;
+
   // An abort is no change of the wrap: unlike vtkAlgorithm's setter it leaves the modification time
   // alone, so the computed steps stay cached and the next request resumes from them.
   void SetAbortExecute(vtkTypeBool abort) override { this->AbortExecute = abort; }
@@ -388,11 +384,9 @@ protected:
   void Execute(const std::function<bool()>& start, vtkInformation* outInfo, vtkPolyData* output);
   void ExecuteBlocks(vtkCompositeDataSet* blocks, vtkInformationVector** inputVector, vtkInformation* outInfo,
     vtkCompositeDataSet* output);
-  // The properties as the core's settings.
-  shrinkwrap::WrapSettings CoreSettings() const;
+  void SetProperties(const shrinkwrap::WrapSettings& settings); // the defaults are stated there
 
-  // Defaults: the constructor takes them from shrinkwrap::WrapSettings, where they are stated once.
-  int InputGeometry = AUTOMATIC;
+  int InputGeometry = vtkInputGeometry::AUTOMATIC;
   double TimeStep;
   int NumberOfSteps;
   int SubdivisionLevel;
@@ -434,61 +428,31 @@ private:
   // (ComputePipelineMTime), without touching the MTime that keys the cache.
   bool RunAgain = false;
   vtkTimeStamp RunAgainTime;
+  double FieldCellSize = 0; // planned in RequestInformation, the run's in RequestData; as are
+  double ChosenGapSize = 0; // these two
+  double ChosenTargetEdgeLength = 0;
+  // The converted target, the plan, the sessions: everything derived from the inputs and properties.
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
-  // A target's `points` wrapped points as `measure` gives them (spacing, fitted surface), measured once
-  // for the target as it is (Cloud); the target is the input dataset the points come from (none: no
-  // cache).
-  const shrinkwrap::PointCloud& MeasuredCloud(
-    vtkDataObject* target, std::size_t points, const std::function<shrinkwrap::PointCloud()>& measure);
-  // The cloud measured for the target as it is, if any (then its points are the target's wrapped
-  // points: RequestInformation measured them, and RequestData need not convert them again).
-  const shrinkwrap::PointCloud* CachedCloud(vtkDataObject* target) const;
-  bool TargetAndField(vtkInformationVector** inputVector, vtkDataObject*& target, vtkImageData*& field);
+  bool Inputs(const std::vector<vtkDataObject*>& port0, vtkDataObject* port1, vtkDataObject*& target,
+    vtkImageData*& field, bool complain);
+  std::optional<shrinkwrap::GridLattice> FieldLattice(
+    vtkInformationVector** inputVector, vtkImageData* field);
+  bool HasInitialSurface() { return this->GetNumberOfInputConnections(2) > 0; }
+  // The plan for the inputs and properties as they are (null: none; the internals say why).
+  const shrinkwrap::WrapPlan* Plan(
+    vtkDataObject* data, const std::optional<shrinkwrap::GridLattice>& field, bool givenStart);
   // One surface: of the target, or of all a composite target's blocks together.
   void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
-  // A distributed target as gathered on this rank (convert::wholeInput).
-  std::unique_ptr<shrinkwrap::convert::GatheredInput> Gathered;
-  // The sizes the next run will use (FieldCellSize, ChosenGapSize, ChosenTargetEdgeLength).
-  shrinkwrap::convert::WrapSizes PlannedSizes(vtkInformationVector** inputVector);
-  void ShowSizes(const shrinkwrap::convert::WrapSizes& sizes);
-  bool StartSession(vtkDataSet* target, vtkImageData* field, vtkPolyData* initial);
-  bool FieldsOf(vtkPolyData* target, vtkImageData* image, bool givenStart, const shrinkwrap::WrapSettings& settings,
-    shrinkwrap::WrapFields& fields);
+  bool StartSession(vtkDataObject* target, vtkImageData* field, vtkPolyData* initial);
+  void ShowSizes(const shrinkwrap::WrapSizes& sizes);
+  void Report(const std::vector<shrinkwrap::Note>& notes);
+  shrinkwrap::Progress ProgressOf(double begin, double end);
   int StepAsked(vtkInformation* outInfo) const;
   bool Advance(int step);
   void WriteOutput(int wanted, bool finished, vtkPolyData* output);
-
-  // Everything derived from the inputs and properties, dropped when either changes.
-  std::unique_ptr<shrinkwrap::WrapSession> Current;
-  vtkMTimeType CurrentKey = 0;
-  double ComputeSeconds = 0; // fields, start and steps of the current session
-  double FieldCellSize = 0;  // planned in RequestInformation, the run's in RequestData; as are
-  double ChosenGapSize = 0;  // these two
-  double ChosenTargetEdgeLength = 0;
-  // The sessions of a composite target's blocks (by flat index), swapped into Current while each runs.
-  struct BlockSession
-  {
-    std::unique_ptr<shrinkwrap::WrapSession> session;
-    vtkMTimeType key = 0;
-    double seconds = 0;
-  };
-  std::map<unsigned int, BlockSession> Blocks;
-  vtkMTimeType BlocksKey = 0;
-  std::vector<int> BlockPieces; // the piece that wraps each block of a composite every rank holds
-  int BlockPiecesOf = 0;        // among so many pieces
-  // The wrapped points as measured, kept while the target and the Input Geometry stay as they were
-  // then: RequestInformation and RequestData both need their spacing, the wrap their fitted surface,
-  // and a run after a change of the other properties finds them measured and its patches fitted.
-  struct CloudCache
-  {
-    const vtkDataObject* target = nullptr;
-    vtkMTimeType key = 0; // the target's
-    int geometry = 0;     // InputGeometry
-    std::size_t points = 0;
-    std::unique_ptr<shrinkwrap::PointCloud> cloud;
-  } Cloud;
-
 };
 
 #endif

@@ -21,7 +21,7 @@ using Clock = std::chrono::steady_clock;
 
 SurfaceMesh sphereMesh(int level)
 {
-  const TriangleSurface s = icosphere(level);
+  const TriangleSoup s = icosphere(level);
   SurfaceMesh mesh;
   SurfaceMesh::build(s.points, s.triangles, mesh);
   return mesh;

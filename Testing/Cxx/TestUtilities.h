@@ -7,7 +7,7 @@
 #include "VTKConversions.h"
 #include "Distance/GridLattice.h"
 #include "Distance/TriangleDistance.h"
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 #include "Distance/WindingNumber.h"
 
 #include <vtkCellArray.h>
@@ -84,7 +84,7 @@ inline bool builds(const std::vector<Vec3>& points, const std::vector<std::array
 }
 
 // A closed surface's mesh; a failed check if it is not one.
-inline shrinkwrap::SurfaceMesh meshOf(const shrinkwrap::IndexedTriangles& surface)
+inline shrinkwrap::SurfaceMesh meshOf(const shrinkwrap::TriangleSoup& surface)
 {
   shrinkwrap::SurfaceMesh mesh;
   std::string error;

@@ -9,7 +9,7 @@
 #include "Surface/MeshQuality.h"
 #include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceMesh.h"
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 
 #include <functional>
 #include <random>

@@ -8,7 +8,7 @@
 
 #include "Distance/BoxHierarchy.h"
 #include "Distance/TriangleDistance.h"
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 
 #include <array>
 #include <limits>

@@ -7,7 +7,7 @@
 #ifndef ShrinkWrap_ConfirmedSides_h
 #define ShrinkWrap_ConfirmedSides_h
 
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 #include "Distance/WindingNumber.h"
 
 #include <vector>

@@ -1,4 +1,5 @@
 #include "Distance/ConsistentOrientation.h"
+#include "Distance/SoupEdges.h"
 
 #include <algorithm>
 #include <cstdint>

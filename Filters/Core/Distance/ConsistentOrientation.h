@@ -7,7 +7,7 @@
 #ifndef ShrinkWrap_ConsistentOrientation_h
 #define ShrinkWrap_ConsistentOrientation_h
 
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 
 namespace shrinkwrap
 {

@@ -237,4 +237,10 @@ DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)
   return DistanceGrid(lattice, std::move(values));
 }
 
+TriangleSoup contourWithFewerJoins(const DistanceGrid& grid, double value, const Contour& contour)
+{
+  const ContourEuler euler = contourEulerCharacteristic(grid, value);
+  return contour(euler.halfSpacing > euler.grid ? withFacesSeparated(grid, value) : grid, value);
+}
+
 } // namespace shrinkwrap

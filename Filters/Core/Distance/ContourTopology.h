@@ -7,9 +7,11 @@
 #ifndef ShrinkWrap_ContourTopology_h
 #define ShrinkWrap_ContourTopology_h
 
+#include "Common/TriangleSoup.h"
 #include "Distance/DistanceGrid.h"
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace shrinkwrap
@@ -41,6 +43,17 @@ std::vector<ContourEuler> contourEulerCharacteristics(const DistanceGrid& grid, 
 // or lower the grid's. The contour moves by under a cell there and keeps the grid's triangle count,
 // where refined() would quadruple it.
 DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value);
+
+// Marching cubes of a grid at one value, with the case table of marchingCubesTriangleCounts (the
+// filters give VTK's Flying Edges).
+using Contour = std::function<TriangleSoup(const DistanceGrid& grid, double value)>;
+
+// The contour of `grid` at `value`, of the grid with its faces separated (withFacesSeparated) where
+// the interpolant at half the spacing has fewer handles or joined components than the grid's
+// contour: there the case table joins two parts the field keeps apart (a bridge a cell wide between
+// parts about twice the value apart). Elsewhere the grid's own, since raised corners would still
+// move the contour.
+TriangleSoup contourWithFewerJoins(const DistanceGrid& grid, double value, const Contour& contour);
 
 } // namespace shrinkwrap
 

@@ -1,4 +1,5 @@
 #include "Distance/DistanceSource.h"
+#include "Distance/SoupEdges.h"
 
 #include "Distance/ConfirmedSides.h"
 #include "Distance/ConsistentOrientation.h"

@@ -12,7 +12,7 @@
 #include "Distance/GridLattice.h"
 #include "Common/Progress.h"
 #include "Distance/PseudoNormals.h"
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 #include "Distance/WindingNumber.h"
 
 #include <cstdint>

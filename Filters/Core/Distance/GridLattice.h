@@ -48,6 +48,11 @@ struct GridLattice
     return b;
   }
   double minSpacing() const { return this->spacing.minCoeff(); }
+  bool operator==(const GridLattice& other) const
+  {
+    return this->origin == other.origin && this->spacing == other.spacing && this->dims == other.dims;
+  }
+  bool operator!=(const GridLattice& other) const { return !(*this == other); }
 };
 
 // Planes first .. last (along z) of a lattice, as a lattice of their own.

@@ -5,7 +5,7 @@
 
 #include "Distance/GridLattice.h"
 #include "Common/Progress.h"
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 
 #include <cstdint>
 #include <vector>

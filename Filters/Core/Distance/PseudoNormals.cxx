@@ -1,4 +1,5 @@
 #include "Distance/PseudoNormals.h"
+#include "Distance/SoupEdges.h"
 
 #include <algorithm>
 #include <cmath>

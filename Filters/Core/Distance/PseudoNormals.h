@@ -5,7 +5,7 @@
 #define ShrinkWrap_PseudoNormals_h
 
 #include "Distance/TriangleDistance.h"
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 
 #include <array>
 #include <cstdint>

@@ -371,16 +371,11 @@ Status checkMemory(const GridLattice& lattice, const SignedDistanceSettings& set
   return {};
 }
 
-Status signedDistanceGrid(const TriangleSoup& soup, const Box& bounds, const GridPlacement& placement,
+Status signedDistanceGrid(const TriangleSoup& soup, const GridLattice& lattice,
   const SignedDistanceSettings& settings, DistanceGrid& grid, SignedDistanceResult& result,
   const Progress& progress, std::shared_ptr<const TriangleSource>* target)
 {
-  GridLattice lattice;
   Status status = checkSoup(soup);
-  if (status)
-  {
-    status = placeGrid(bounds, placement, lattice);
-  }
   if (status)
   {
     status = checkMemory(lattice, settings);

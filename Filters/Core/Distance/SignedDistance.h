@@ -8,7 +8,7 @@
 #include "Distance/PointSource.h"
 #include "Common/Progress.h"
 #include "Common/Status.h"
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 
 #include <cstdint>
 #include <memory>
@@ -105,10 +105,10 @@ Status checkSoup(const TriangleSoup& soup);
 Status checkMemory(const GridLattice& lattice, const SignedDistanceSettings& settings);
 
 // The whole of Mesh Signed Distance for a caller that wants the field itself (Shrink Wrap, without a
-// DistanceField input): checks, the lattice placed around the soup's bounds, and the distances. An
-// aborted run leaves `grid` empty and the result's `completed` false. `target`, if given, receives
-// the soup's TriangleSource (its AABB tree answers exact closest-point queries later).
-Status signedDistanceGrid(const TriangleSoup& soup, const Box& bounds, const GridPlacement& placement,
+// DistanceField input): checks (the soup, the memory), and the distances on `lattice`. An aborted
+// run leaves `grid` empty and the result's `completed` false. `target`, if given, receives the
+// soup's TriangleSource (its AABB tree answers exact closest-point queries later).
+Status signedDistanceGrid(const TriangleSoup& soup, const GridLattice& lattice,
   const SignedDistanceSettings& settings, DistanceGrid& grid, SignedDistanceResult& result,
   const Progress& progress = {}, std::shared_ptr<const TriangleSource>* target = nullptr);
 

@@ -11,7 +11,7 @@
 #define ShrinkWrap_WindingNumber_h
 
 #include "Distance/AABBTree.h"
-#include "Distance/TriangleSoup.h"
+#include "Common/TriangleSoup.h"
 
 #include <array>
 #include <vector>

@@ -43,8 +43,9 @@ Status validate(const EvolverSettings& settings, double scale, const SurfaceMesh
     return Status::failure("C1, C2, C and D must not be negative");
   if (settings.omegaAngle < 0 || settings.omegaVolume < 0 || settings.rhoA < 0)
     return Status::failure("the redistribution weights must not be negative");
-  if (settings.remeshing.targetLength < 0 || !std::isfinite(settings.remeshing.targetLength))
-    return Status::failure("the target edge length must not be negative");
+  if (settings.remeshing &&
+    !(settings.remeshing->targetLength > 0 && std::isfinite(settings.remeshing->targetLength)))
+    return Status::failure("the target edge length must be positive");
   if (mesh.vertexCount() < 4)
     return Status::failure("the surface is empty");
   return {};
@@ -97,10 +98,10 @@ Evolver::Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const
   }
   this->velocity().assign(mesh.vertexCount(), Vec3::Zero());
   this->Linear = std::make_unique<Solver>(this->Mesh);
-  const double length = settings.remeshing.targetLength;
-  if (settings.rims.cover && length > 0 && this->Field && this->Field->exact())
+  if (settings.rims.cover && settings.remeshing && this->Field && this->Field->exact())
   {
-    this->RimSamples = rimSamples(this->Field->exact()->rims(settings.rims.creaseAngle), settings.rims.spacing * length);
+    this->RimSamples = rimSamples(this->Field->exact()->rims(settings.rims.creaseAngle),
+      settings.rims.spacing * settings.remeshing->targetLength);
   }
 }
 
@@ -131,13 +132,13 @@ Evolver::Controls Evolver::controls() const
   // The landing needs the remeshing's near-equilateral rings (h measures curvature only there), and
   // none at the vertices that hold the target's rims (a fold around a sheet's edge is no curvature of
   // the target's: landed out, the folds left mech-holes-shark's rims out by 0.66% of the diagonal).
-  const bool fit = this->Field && s.facetFit != 0 && s.remeshing.targetLength > 0;
-  const std::vector<Vec3> rimVertices = fit && !this->RimSamples.empty()
-    ? rimHolds(this->Mesh, this->scaledRimSamples(), s.remeshing.targetLength * this->Scale)
-    : std::vector<Vec3>();
+  const bool fit = this->Field && s.facetFit != 0 && s.remeshing;
+  const std::vector<double> rimVertices = fit && !this->RimSamples.empty()
+    ? rimHolds(this->Mesh, this->scaledRimSamples(), s.remeshing->targetLength * this->Scale)
+    : std::vector<double>();
   for (int i = 0; i < nv; ++i)
   {
-    const bool holds = !rimVertices.empty() && rimVertices[i].x() > 0;
+    const bool holds = !rimVertices.empty() && rimVertices[i] > 0;
     const double landing = fit && !holds ? 0.25 * s.facetFit * this->heightOverRing(i, c.g.normal[i]) : 0.0;
     c.eps[i] = diffusion(c.d[i], s.C1, s.C2);
     c.eta[i] = advection(c.d[i] - landing, c.grad[i].dot(c.g.normal[i]), s.C, s.D);
@@ -359,7 +360,7 @@ int Evolver::coverRims()
     return 0;
   }
   const RimSettings& r = this->Settings.rims;
-  const double length = this->Settings.remeshing.targetLength * this->Scale;
+  const double length = this->Settings.remeshing->targetLength * this->Scale; // rims need it
   const std::vector<Vec3> samples = this->scaledRimSamples();
   const std::vector<Vec3> moves = rimMoves(this->Mesh, samples, r.tolerance * length, r.reach * length);
   // A move the hold-back refuses (it would cross the surface: near a rim both layers lie on the sheet)
@@ -456,15 +457,19 @@ StepReport Evolver::run(int n, const Progress& progress)
 namespace
 {
 // Remeshing, flips, then the mending collapses, as the settings ask; counts into `report`.
-void editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scale, StepReport& report)
+Status editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scale, StepReport& report)
 {
-  if (s.remeshing.targetLength > 0)
+  if (s.remeshing)
   {
-    RemeshSettings r = s.remeshing;
+    RemeshSettings r = *s.remeshing;
     r.targetLength *= scale;
     r.flips = s.flips;
     r.collapses = s.collapses;
     const RemeshReport remeshed = remesh(mesh, r);
+    if (!remeshed.status)
+    {
+      return remeshed.status;
+    }
     report.splits += remeshed.splits;
     report.collapses += remeshed.collapses;
     report.flips += remeshed.flips;
@@ -485,6 +490,7 @@ void editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scale,
     }
     report.collapses += collapses;
   }
+  return {};
 }
 } // namespace
 
@@ -496,16 +502,18 @@ void Evolver::adjustConnectivity(StepReport& report)
   // The vertices that hold the target's rims stay in place in collapses (RimCoverage.h: rimHolds).
   if (!this->RimSamples.empty())
   {
-    const double reach = s.rims.hold * s.remeshing.targetLength * this->Scale;
-    this->Mesh.vertexData(kAnchorData) = rimHolds(this->Mesh, this->scaledRimSamples(), reach);
+    const double reach = s.rims.hold * s.remeshing->targetLength * this->Scale; // rims need it
+    this->Mesh.addVertexProperty<double>(kAnchor, 0).values() =
+      rimHolds(this->Mesh, this->scaledRimSamples(), reach);
   }
+  Status edited;
   auto edit = [&](SurfaceMesh& mesh, bool guarded, const std::vector<Box>& only) {
     EvolverSettings e = s;
     e.flips.avoidCrossings = guarded && s.flips.avoidCrossings;
     e.collapses.avoidCrossings = guarded && s.collapses.avoidCrossings;
     e.flips.guardOnlyIn = e.collapses.guardOnlyIn = only;
     report = before;
-    editConnectivity(mesh, e, this->Scale, report);
+    edited = editConnectivity(mesh, e, this->Scale, report);
     return report.connectivityChanged();
   };
   if (s.flips.avoidCrossings || s.collapses.avoidCrossings)
@@ -540,7 +548,13 @@ void Evolver::adjustConnectivity(StepReport& report)
     this->HeldNear.clear();
     edit(this->Mesh, false, {});
   }
-  this->Mesh.removeVertexData(kAnchorData);
+  this->Mesh.removeVertexProperty(kAnchor);
+  if (!edited)
+  {
+    report.failure = Failure::EditFailed;
+    report.message = "the remeshing failed at step " + std::to_string(report.step) + ": " +
+      edited.message();
+  }
   if (report.connectivityChanged())
   {
     this->connectivityChanged(report.splits == 0 && report.collapses == 0);
@@ -636,7 +650,7 @@ std::vector<Vec3> Evolver::tangentialVelocity() const
 {
   // y = phi x and t_scaled = phi^2 t, so dx/dt = phi dy/dt_scaled.
   std::vector<Vec3> v;
-  const std::vector<Vec3>& vt = this->Mesh.vertexData("velocity");
+  const std::vector<Vec3> vt = this->Mesh.vertexValues<Vec3>(kVelocity);
   v.reserve(vt.size());
   for (const Vec3& u : vt)
   {

@@ -26,6 +26,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,9 +81,9 @@ struct EvolverSettings
   FlipSettings flips;
   bool edgeCollapses = true;    // collapse the short edges of degenerating triangles (EdgeCollapses.h)
   CollapseSettings collapses;
-  // Remeshing after every step towards remeshing.targetLength (in the caller's units; 0: none).
-  // One iteration per step: the surface moves little in a step, so the steps converge the mesh.
-  RemeshSettings remeshing = duringEvolution();
+  // Remeshing after every step towards remeshing->targetLength (in the caller's units); none when
+  // unset. One iteration per step: the surface moves little in a step, so the steps converge it.
+  std::optional<RemeshSettings> remeshing;
   // Vertices hold back where their step would break the surface: fronts stop where they meet
   // (SelfIntersections.h: holdNewCrossings), so the surface never passes through itself where two of
   // its parts come together, and a vertex whose step would degenerate a triangle stays where it was.
@@ -107,7 +108,7 @@ struct EvolverSettings
     s.C = 1.0;
     s.D = 0.0;
     s.facetFit = 0.0;
-    s.remeshing.targetLength = 0;
+    s.remeshing.reset();
     s.holdBack = false;
     s.rims.cover = false;
     s.solverTolerance = 1e-10;
@@ -130,7 +131,8 @@ enum class Failure
   NotANumber,
   DegenerateTriangle,
   LeftDomain,
-  SolverFailed
+  SolverFailed,
+  EditFailed
 };
 
 struct StepReport
@@ -213,9 +215,13 @@ private:
   void adjustConnectivity(StepReport& report); // remeshing, flips, then collapses, as the settings ask
   // A new solver for the new triangles; the volume redistribution's warm start only for the same vertices.
   void connectivityChanged(bool sameVertices);
-  std::vector<Vec3>& velocity() { return this->Mesh.vertexData("velocity"); }
+  std::vector<Vec3>& velocity()
+  {
+    return this->Mesh.addVertexProperty<Vec3>(kVelocity, Vec3::Zero()).values();
+  }
+  static constexpr const char* kVelocity = "v:velocity"; // Vec3: v_T of the last step
 
-  SurfaceMesh Mesh; // positions: the scaled state; vertex data "velocity": v_T of the last step
+  SurfaceMesh Mesh; // positions: the scaled state; and the property kVelocity
   EvolverSettings Settings;
   const TargetDistance* Field;
   Box Domain; // scaled

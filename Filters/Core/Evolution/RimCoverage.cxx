@@ -178,10 +178,10 @@ std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& sam
   return moves;
 }
 
-std::vector<Vec3> rimHolds(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double reach)
+std::vector<double> rimHolds(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double reach)
 {
   const std::vector<Vec3>& y = mesh.points();
-  std::vector<Vec3> holds(y.size(), Vec3::Zero());
+  std::vector<double> holds(y.size(), 0.0);
   if (samples.empty() || mesh.triangleCount() == 0)
   {
     return holds;
@@ -194,7 +194,7 @@ std::vector<Vec3> rimHolds(const SurfaceMesh& mesh, const std::vector<Vec3>& sam
       const auto w = barycentric(hit.point, y[t[0]], y[t[1]], y[t[2]]);
       for (int k = 0; k < 3; ++k)
       {
-        holds[t[k]].x() = std::max(holds[t[k]].x(), w[k]);
+        holds[t[k]] = std::max(holds[t[k]], w[k]);
       }
     }
   }

@@ -41,12 +41,12 @@ std::vector<Vec3> rimSamples(const std::vector<std::array<Vec3, 2>>& rims, doubl
 // in front of the pseudonormal of the nearest feature.
 std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach);
 
-// Per vertex of `mesh`, how firmly it holds the samples (in x, as vertex data): the largest barycentric
+// Per vertex of `mesh`, how firmly it holds the samples (kAnchor): the largest barycentric
 // weight it has in the nearest surface point of a sample within `reach`; 0 where it holds none. The
-// remeshing keeps such vertices in place (kAnchorData, EdgeCollapses.h): merging a fold's vertex on
+// remeshing keeps such vertices in place (kAnchor, EdgeCollapses.h): merging a fold's vertex on
 // a rim with its neighbour at the edge's midpoint pulled the fold off the rim by most of an edge every
 // step, and the layers on both sides of the sheet then lay too close to move it back (mech-holes-shark).
-std::vector<Vec3> rimHolds(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double reach);
+std::vector<double> rimHolds(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double reach);
 
 } // namespace shrinkwrap
 

@@ -14,9 +14,9 @@
 namespace shrinkwrap
 {
 
-Status offsetSurface(const DistanceGrid& field, double offset, const Contour& contour, TriangleSurface& surface)
+Status offsetSurface(const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& surface)
 {
-  surface = contour(field, offset);
+  surface = contourWithFewerJoins(field, offset, contour);
   SurfaceMesh closed;
   if (surface.triangles.empty() || !SurfaceMesh::build(surface.points, surface.triangles, closed))
   {
@@ -42,7 +42,7 @@ constexpr double kOffsetStepCells = 0.25;
 
 // The handles a contour keeps once its specks are gone (a speck may be a tiny ring); the contour itself
 // stays whole, so that the start's specks are counted where they are removed.
-int handlesWithoutSpecks(TriangleSurface surface, double speck)
+int handlesWithoutSpecks(TriangleSoup surface, double speck)
 {
   removeSpecks(surface, speck);
   return handleCount(surface);
@@ -55,7 +55,7 @@ int handlesWithoutSpecks(TriangleSurface surface, double speck)
 // cell; RESULTS.md, 2026-11-27 (night)). A lower offset cannot close a hole a higher one keeps open,
 // so fewer handles there are such joins undone. The Euler characteristics of the contours, counted
 // without building them (ContourTopology.h), pick the offsets worth building.
-void fewestHandles(const DistanceGrid& field, double offset, const Contour& contour, TriangleSurface& start)
+void fewestHandles(const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& start)
 {
   const double h = field.lattice().spacing.maxCoeff();
   std::vector<double> offsets{ offset }; // the start's, then lower ones
@@ -74,7 +74,7 @@ void fewestHandles(const DistanceGrid& field, double offset, const Contour& cont
   for (std::size_t i = 1; i < offsets.size(); ++i)
   {
     // A contour with fewer handles has a higher Euler characteristic (or more components as well).
-    TriangleSurface candidate;
+    TriangleSoup candidate;
     if (euler(i) <= bestEuler || !offsetSurface(field, offsets[i], contour, candidate))
     {
       continue;
@@ -108,12 +108,12 @@ Status orientOutwards(SurfaceMesh& mesh)
   return SurfaceMesh::build(points, flipped, mesh);
 }
 
-Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSurface* given,
+Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSoup* given,
   const StartSettings& settings, const FlipSettings& flips, const Contour& contour, SurfaceMesh& mesh,
   int& specks)
 {
   const double h = field.lattice().spacing.maxCoeff();
-  TriangleSurface start;
+  TriangleSoup start;
   if (given)
   {
     start = *given;
@@ -141,7 +141,7 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   {
     return Status::failure("the starting surface cannot evolve: " + status.message());
   }
-  if (!given && settings.shape == StartShape::OffsetSurface && settings.coarsenTo > 0)
+  if (!given && settings.shape == StartShape::OffsetSurface && settings.coarsenTo)
   {
     // The evolution's thresholds. Collapses chain over a dozen passes here, so the ones behind a
     // crossing lie farther from it than a step's do. In stages from two cells, the length doubling: a
@@ -149,8 +149,9 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
     // and each redo with guards cost three times the collapses (the noisy mech part's 20,000 points at
     // diagonal / 30, 3.5 cells: 0.94 s; in two stages, none crossing, 0.20 s).
     const RemeshSettings remeshing;
-    const double first = 2 * h > 0 ? std::min(2 * h, settings.coarsenTo) : settings.coarsenTo;
-    for (double length = first;; length = std::min(2 * length, settings.coarsenTo))
+    const double last = *settings.coarsenTo;
+    const double first = 2 * h > 0 ? std::min(2 * h, last) : last;
+    for (double length = first;; length = std::min(2 * length, last))
     {
       editCheckedOnce(mesh, 4 * length, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
         CollapseSettings collapses;
@@ -159,7 +160,7 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
         collapses.guardOnlyIn = only;
         return collapseShortEdges(m, remeshing.collapseBelow * length, remeshing.splitAbove * length, collapses) > 0;
       });
-      if (length >= settings.coarsenTo)
+      if (length >= last)
       {
         break;
       }

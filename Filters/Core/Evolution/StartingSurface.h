@@ -4,20 +4,19 @@
 #ifndef ShrinkWrap_StartingSurface_h
 #define ShrinkWrap_StartingSurface_h
 
+#include "Distance/ContourTopology.h"
 #include "Distance/DistanceGrid.h"
 #include "Remeshing/EdgeFlips.h"
 #include "Common/Status.h"
 #include "Surface/SurfaceMesh.h"
-#include "Surface/TriangleSurface.h"
+#include "Common/TriangleSoup.h"
 
 #include <functional>
 #include <limits>
+#include <optional>
 
 namespace shrinkwrap
 {
-
-// Marching cubes of a distance field at one value (the filters give VTK's Flying Edges).
-using Contour = std::function<TriangleSurface(const DistanceGrid& field, double value)>;
 
 enum class StartShape
 {
@@ -28,15 +27,15 @@ enum class StartShape
 struct StartSettings
 {
   StartShape shape = StartShape::OffsetSurface;
-  int subdivision = 3;   // s, the icosphere's level (642 vertices)
-  double offset = 3;     // the offset surface's distance from the (closed) target, in cells of the field,
-  double maxOffset = std::numeric_limits<double>::infinity(); // at most this (in the field's units) and
-                                                              // at least one cell
-  int relaxation = 10;   // tangential relaxation iterations of a contour or a given surface
-  double coarsenTo = 0;  // > 0: a contour start is first coarsened by collapses towards this edge
-                         // length (the remeshing's L; checked for crossings, CheckedEdits.h), so that
-                         // its relaxation and the first step handle the vertices the wrap will have,
-                         // not the grid's contour's
+  int subdivision = 3; // s, the icosphere's level (642 vertices)
+  double offset = 3;   // the offset surface's distance from the closed target, cells of the field
+  double maxOffset = std::numeric_limits<double>::infinity(); // ... at most this (field units), at
+                                                              // least one cell
+  int relaxation = 10; // tangential relaxation iterations of a contour or a given surface
+  // A contour start is first coarsened by collapses to this edge length (field units; checked for
+  // crossings, CheckedEdits.h), so that its relaxation and the first step handle the vertices the
+  // wrap will have; unset: kept as the contour made it.
+  std::optional<double> coarsenTo;
 };
 
 // The paper's Section 5 start, a contour of d at `offset` (in the field's units) from the target. Give
@@ -44,7 +43,7 @@ struct StartSettings
 // touches itself where two parts are about twice the offset apart, and the thin necks marching cubes
 // leaves there pinch off under curvature at once. Walls of cavities (an unsigned field's contour has
 // them inside an open target) are left out.
-Status offsetSurface(const DistanceGrid& field, double offset, const Contour& contour, TriangleSurface& surface);
+Status offsetSurface(const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& surface);
 
 // Outward orientation, which eta N with D > 0 and the output's normals and curvatures rely on.
 Status orientOutwards(SurfaceMesh& mesh);
@@ -53,7 +52,7 @@ Status orientOutwards(SurfaceMesh& mesh);
 // icosphere around `targetBox`, or the offset surface of `field`, which should be the closing's);
 // specks smaller than two cells of the field removed (counted in `specks`), outward oriented, and a
 // contour or a given surface relaxed with `flips`.
-Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSurface* given,
+Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSoup* given,
   const StartSettings& settings, const FlipSettings& flips, const Contour& contour, SurfaceMesh& mesh,
   int& specks);
 

@@ -53,9 +53,9 @@ bool keepsNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, in
 
 } // namespace
 
-Merge mergeOf(const std::vector<Vec3>& x, const std::vector<Vec3>& anchors, int a, int b)
+Merge mergeOf(const std::vector<Vec3>& x, const std::vector<double>& anchors, int a, int b)
 {
-  const double ha = anchors.empty() ? 0 : anchors[a].x(), hb = anchors.empty() ? 0 : anchors[b].x();
+  const double ha = anchors.empty() ? 0 : anchors[a], hb = anchors.empty() ? 0 : anchors[b];
   if (ha > 0 || hb > 0)
   {
     return ha >= hb ? Merge{ a, b, x[a] } : Merge{ b, a, x[b] };
@@ -112,7 +112,7 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
   // Decisions read the surface as it was before the pass (the rings stay so until the commit).
   const std::vector<Vec3> x = mesh.points();
   const std::vector<std::array<int, 3>> triangles = mesh.triangles();
-  const std::vector<Vec3> anchors = std::as_const(mesh).vertexData(kAnchorData); // as x: before the pass
+  const std::vector<double> anchors = mesh.vertexValues<double>(kAnchor); // before the pass
   const int nv = mesh.vertexCount();
   std::vector<char> touched(nv, 0);
   CrossingGuard guard(x, triangles, settings.guardOnlyIn);
@@ -144,7 +144,7 @@ int collapseEdges(SurfaceMesh& mesh, const CollapseSettings& settings)
     const int lone = mesh.valence(c) == 3 ? c : (mesh.valence(d) == 3 ? d : -1);
     if (lone >= 0)
     {
-      // into a where it stands, unless the lone vertex holds more of a rim (kAnchorData): the kept
+      // into a where it stands, unless the lone vertex holds more of a rim (kAnchor): the kept
       // vertex stays where it is
       const Merge merge = mergeOf(x, anchors, a, lone);
       collapse(merge.keep, merge.gone, x[merge.keep]);

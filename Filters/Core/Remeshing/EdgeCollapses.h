@@ -30,10 +30,10 @@ struct CollapseSettings
   std::vector<Box> guardOnlyIn; // not empty: avoidCrossings checks only the collapses within these boxes
 };
 
-// Vertex data that marks the vertices collapses keep in place (x > 0; the larger, the firmer), e.g.
-// those holding a target's rim (RimCoverage.h): an edge with such an end merges into it, not at its
-// midpoint.
-constexpr const char* kAnchorData = "anchor";
+// The vertex property (double) that marks the vertices collapses keep in place (> 0; the larger,
+// the firmer), e.g. those holding a target's rim (RimCoverage.h): an edge with such an end merges
+// into it, not at its midpoint.
+constexpr const char* kAnchor = "v:anchor";
 
 struct Merge
 {
@@ -42,7 +42,7 @@ struct Merge
 };
 // How edge (a, b) merges: into the firmer anchored end, at its position; without anchors (`anchors`
 // empty or 0 at both ends), a keeps and the two meet at the midpoint.
-Merge mergeOf(const std::vector<Vec3>& x, const std::vector<Vec3>& anchors, int a, int b);
+Merge mergeOf(const std::vector<Vec3>& x, const std::vector<double>& anchors, int a, int b);
 
 // Calls f(v, u, w) for every triangle (v, u, w) around a or b (v in {a, b}) other than the two on the
 // edge (a, b): the triangles that merging a and b turns into (m, u, w).

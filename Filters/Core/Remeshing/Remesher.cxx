@@ -17,9 +17,9 @@ namespace shrinkwrap
 namespace
 {
 // The size of edge (a, b) in units of the uniform one: the mean of its ends' (1 without sizes).
-double edgeSize(const std::vector<Vec3>& sizes, int a, int b)
+double edgeSize(const std::vector<double>& sizes, int a, int b)
 {
-  return sizes.empty() ? 1.0 : 0.5 * (sizes[a].x() + sizes[b].x());
+  return sizes.empty() ? 1.0 : 0.5 * (sizes[a] + sizes[b]);
 }
 } // namespace
 
@@ -29,7 +29,7 @@ void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings)
   SurfaceGeometry g;
   computeGeometry(mesh, x, g);
   const double L = settings.targetLength, e = settings.chordError * L;
-  std::vector<Vec3>& sizes = mesh.vertexData(kEdgeSizeData);
+  std::vector<double>& sizes = mesh.addVertexProperty<double>(kEdgeSize, 0).values();
   for (int i = 0; i < mesh.vertexCount(); ++i)
   {
     double curvature = 0;
@@ -41,7 +41,7 @@ void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings)
     }
     const double square = curvature > 0 ? 6 * e / curvature - 3 * e * e : std::numeric_limits<double>::infinity();
     const double length = square > 0 ? std::sqrt(square) : 0;
-    sizes[i] = Vec3(std::clamp(length / L, settings.shortest, settings.longest), 0, 0);
+    sizes[i] = std::clamp(length / L, settings.shortest, settings.longest);
   }
   // Sizes that jump between neighbours make poor triangles (2% of angles under 20 degrees on the
   // fandisk without this): each may exceed a neighbour's by at most `grading` times the edge between
@@ -53,7 +53,7 @@ void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings)
       for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
       {
         const int j = mesh.ring(p);
-        sizes[i].x() = std::min(sizes[i].x(), sizes[j].x() + settings.grading * (x[j] - x[i]).norm() / L);
+        sizes[i] = std::min(sizes[i], sizes[j] + settings.grading * (x[j] - x[i]).norm() / L);
       }
     }
   }
@@ -66,7 +66,7 @@ int splitLongEdges(SurfaceMesh& mesh, double maxLength)
   for (int pass = 0, firstNew = 0; pass < 16; ++pass)
   {
     std::vector<std::array<int, 2>> longEdges;
-    const std::vector<Vec3>& sizes = std::as_const(mesh).vertexData(kEdgeSizeData); // none: uniform
+    const std::vector<double> sizes = mesh.vertexValues<double>(kEdgeSize); // none: uniform
     const std::vector<Vec3>& x = mesh.points();
     for (const auto& e : edgesOf(mesh))
     {
@@ -90,7 +90,7 @@ namespace
 {
 // No edge from the merged vertex (which keeps the kept vertex's size) to a neighbour of either end
 // longer than maxLength.
-bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const std::vector<Vec3>& sizes,
+bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const std::vector<double>& sizes,
   const Merge& merge, double maxLength)
 {
   for (int v : { merge.keep, merge.gone })
@@ -120,9 +120,9 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
   const int nv = mesh.vertexCount();
   std::vector<char> touched(nv, 0), shortEnd(nv, 0), gone(nv, 0);
   int collapses = 0;
-  // as the pass began, as x
-  const std::vector<Vec3> sizes = std::as_const(mesh).vertexData(kEdgeSizeData);
-  const std::vector<Vec3> anchors = std::as_const(mesh).vertexData(kAnchorData);
+  // as the pass began
+  const std::vector<double> sizes = mesh.vertexValues<double>(kEdgeSize);
+  const std::vector<double> anchors = mesh.vertexValues<double>(kAnchor);
   for (int a = 0; a < nv; ++a)
   {
     for (int p = mesh.ringBegin(a); p < mesh.ringEnd(a); ++p)
@@ -240,7 +240,7 @@ RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings)
     report.flips += equalizeValences(mesh, settings.flips);
     relaxTangentially(mesh, relax);
   }
-  mesh.removeVertexData(kEdgeSizeData);
+  mesh.removeVertexProperty(kEdgeSize);
   return report;
 }
 

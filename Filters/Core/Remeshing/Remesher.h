@@ -32,9 +32,10 @@ struct RemeshSettings
   bool adaptive() const { return this->shortest < 1 || this->longest > 1; }
 };
 
-// The vertex data that holds each vertex's edge length in units of L while the remeshing runs (x).
-constexpr const char* kEdgeSizeData = "edgeSize";
-// Sets kEdgeSizeData from the surface's curvature: the largest normal curvature towards a neighbour,
+// The vertex property (double) that holds each vertex's edge length in units of L while the
+// remeshing runs.
+constexpr const char* kEdgeSize = "v:edgeSize";
+// Sets kEdgeSize from the surface's curvature: the largest normal curvature towards a neighbour,
 // 2 |n . (x_j - x_i)| / |x_j - x_i|^2.
 void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings);
 
@@ -44,12 +45,11 @@ struct RemeshReport
   Status status;
 };
 
-// With kEdgeSizeData on the mesh, the lengths below are those of an edge of size 1, scaled per edge.
+// With kEdgeSize on the mesh, the lengths below are those of an edge of size 1, scaled per edge.
 // Splits every edge longer than maxLength at its midpoint, in passes until none is left (at most 16).
 int splitLongEdges(SurfaceMesh& mesh, double maxLength);
-// Collapses edges shorter than minLength into their midpoints (into an anchored end: kAnchorData,
-// EdgeCollapses.h) where no edge then exceeds maxLength
-// and collapseInPass allows it, in passes until none is left (at most 16).
+// Collapses edges shorter than minLength into their midpoints (into an anchored end: kAnchor,
+// EdgeCollapses.h) where no edge then exceeds maxLength and collapseInPass allows it, in passes until none is left (at most 16).
 int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings);
 // One pass of flips that bring the four valences of an edge's triangles closer to 6, within the
 // dihedral guard, leaving out those that flipEdges would flip back (flipGainsAngle of the new edge).

@@ -9,7 +9,7 @@ namespace shrinkwrap
 namespace
 {
 // Union-find over vertices joined by triangles; the root of each vertex's component.
-std::vector<int> componentRoots(const TriangleSurface& surface)
+std::vector<int> componentRoots(const TriangleSoup& surface)
 {
   std::vector<int> parent(surface.points.size());
   std::iota(parent.begin(), parent.end(), 0);
@@ -34,7 +34,7 @@ std::vector<int> componentRoots(const TriangleSurface& surface)
 
 // Removes the components for which `drop(root)` holds; returns how many were removed.
 template <typename Drop>
-int removeComponents(TriangleSurface& surface, const std::vector<int>& root, Drop drop)
+int removeComponents(TriangleSoup& surface, const std::vector<int>& root, Drop drop)
 {
   int removed = 0;
   for (size_t v = 0; v < surface.points.size(); ++v)
@@ -47,7 +47,7 @@ int removeComponents(TriangleSurface& surface, const std::vector<int>& root, Dro
   }
   // Keep the other components' triangles, with their vertices renumbered in order.
   std::vector<int> index(surface.points.size(), -1);
-  TriangleSurface kept;
+  TriangleSoup kept;
   for (size_t v = 0; v < surface.points.size(); ++v)
   {
     if (!drop(root[v]))
@@ -69,7 +69,7 @@ int removeComponents(TriangleSurface& surface, const std::vector<int>& root, Dro
 
 } // namespace
 
-int removeSpecks(TriangleSurface& surface, double size)
+int removeSpecks(TriangleSoup& surface, double size)
 {
   const std::vector<int> root = componentRoots(surface);
   std::vector<Box> boxes(surface.points.size());
@@ -81,7 +81,7 @@ int removeSpecks(TriangleSurface& surface, double size)
     surface, root, [&](int r) { return (boxes[r].max - boxes[r].min).maxCoeff() < size; });
 }
 
-int removeCavities(TriangleSurface& surface)
+int removeCavities(TriangleSoup& surface)
 {
   if (surface.points.empty())
   {
@@ -100,7 +100,7 @@ int removeCavities(TriangleSurface& surface)
   return removeComponents(surface, root, [&](int r) { return volume[r] * outer < 0; });
 }
 
-int handleCount(const TriangleSurface& surface)
+int handleCount(const TriangleSoup& surface)
 {
   const std::vector<int> root = componentRoots(surface);
   std::vector<char> used(surface.points.size(), 0), isRoot(surface.points.size(), 0);

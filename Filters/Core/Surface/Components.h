@@ -4,22 +4,22 @@
 #ifndef ShrinkWrap_Components_h
 #define ShrinkWrap_Components_h
 
-#include "Surface/TriangleSurface.h"
+#include "Common/TriangleSoup.h"
 
 namespace shrinkwrap
 {
 
 // Removes the connected components whose bounding box is smaller than `size` along every axis;
 // returns how many were removed.
-int removeSpecks(TriangleSurface& surface, double size);
+int removeSpecks(TriangleSoup& surface, double size);
 
 // Removes the components that face the other way from the largest one: the walls of cavities, which
 // a contour of an unsigned field has inside the target. Returns how many were removed.
-int removeCavities(TriangleSurface& surface);
+int removeCavities(TriangleSoup& surface);
 
 // The handles of a closed surface, summed over its components: C - (V - F / 2) / 2 for C components
 // (V - F / 2 is V - E + F when every edge has two triangles).
-int handleCount(const TriangleSurface& surface);
+int handleCount(const TriangleSoup& surface);
 
 } // namespace shrinkwrap
 

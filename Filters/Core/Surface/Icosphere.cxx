@@ -14,7 +14,7 @@ long long icosphereVertexCount(int level)
   return (30 * (p - 1) + 36) / 3;
 }
 
-TriangleSurface icosphere(int level, const Vec3& center, double radius)
+TriangleSoup icosphere(int level, const Vec3& center, double radius)
 {
   const double g = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<Vec3> unit = { { -1, g, 0 }, { 1, g, 0 }, { -1, -g, 0 }, { 1, -g, 0 }, { 0, -1, g }, { 0, 1, g },
@@ -51,7 +51,7 @@ TriangleSurface icosphere(int level, const Vec3& center, double radius)
     }
     triangles.swap(finer);
   }
-  TriangleSurface surface;
+  TriangleSoup surface;
   surface.triangles = std::move(triangles);
   surface.points.reserve(unit.size());
   for (const Vec3& p : unit)

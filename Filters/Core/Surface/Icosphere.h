@@ -4,12 +4,12 @@
 #ifndef ShrinkWrap_Icosphere_h
 #define ShrinkWrap_Icosphere_h
 
-#include "Surface/TriangleSurface.h"
+#include "Common/TriangleSoup.h"
 
 namespace shrinkwrap
 {
 
-TriangleSurface icosphere(int level, const Vec3& center = Vec3::Zero(), double radius = 1.0);
+TriangleSoup icosphere(int level, const Vec3& center = Vec3::Zero(), double radius = 1.0);
 
 // Eq. (9) solved: expected vertex count after `level` 4-to-1 subdivisions of the icosahedron.
 long long icosphereVertexCount(int level);

@@ -231,7 +231,7 @@ struct SurfaceMesh::EditState
   int removals = 0; // vertices and triangles removed
   std::vector<std::array<int, 3>> committedTriangles;
   std::vector<Vec3> committedPoints;
-  std::map<std::string, std::vector<Vec3>> committedData;
+  VertexProperties committedProperties;
 };
 
 SurfaceMesh::SurfaceMesh() = default;
@@ -242,7 +242,7 @@ SurfaceMesh::~SurfaceMesh() = default;
 SurfaceMesh::SurfaceMesh(const SurfaceMesh& other)
   : Triangles(other.Triangles)
   , Points(other.Points)
-  , Data(other.Data)
+  , Properties(other.Properties)
   , RingStart(other.RingStart)
   , Ring(other.Ring)
   , RingTriangle(other.RingTriangle)
@@ -322,10 +322,7 @@ Status SurfaceMesh::connect()
   {
     return walk(firstFailing);
   }
-  for (auto& entry : this->Data)
-  {
-    entry.second.resize(nv, Vec3::Zero());
-  }
+  this->Properties.resize(nv);
   return {};
 }
 
@@ -341,20 +338,6 @@ int SurfaceMesh::ringEntry(int i, int j) const
   return -1;
 }
 
-std::vector<Vec3>& SurfaceMesh::vertexData(const std::string& name)
-{
-  std::vector<Vec3>& values = this->Data[name];
-  values.resize(this->Points.size(), Vec3::Zero());
-  return values;
-}
-
-const std::vector<Vec3>& SurfaceMesh::vertexData(const std::string& name) const
-{
-  static const std::vector<Vec3> none;
-  const auto found = this->Data.find(name);
-  return found == this->Data.end() ? none : found->second;
-}
-
 void SurfaceMesh::beginEdit()
 {
   if (this->Edits)
@@ -365,7 +348,7 @@ void SurfaceMesh::beginEdit()
   EditState& e = *this->Edits;
   e.committedTriangles = this->Triangles;
   e.committedPoints = this->Points;
-  e.committedData = this->Data;
+  e.committedProperties = this->Properties;
   e.removedVertex.assign(this->Points.size(), 0);
   e.touched.assign(this->Points.size(), 0);
 }
@@ -461,11 +444,8 @@ int SurfaceMesh::split(int a, int b, double t)
   const int c = after(this->Triangles[ab], b), d = after(this->Triangles[ba], a);
   const int m = static_cast<int>(this->Points.size());
   this->Points.push_back((1 - t) * this->Points[a] + t * this->Points[b]);
-  for (auto& entry : this->Data)
-  {
-    entry.second.resize(m, Vec3::Zero());
-    entry.second.push_back((1 - t) * entry.second[a] + t * entry.second[b]);
-  }
+  this->Properties.resize(m);
+  this->Properties.appendBetween(a, b, t);
   this->Edits->removedVertex.push_back(0);
   // (a, b, c) -> (a, m, c) + (m, b, c); (b, a, d) -> (b, m, d) + (m, a, d).
   this->setTriangle(ab, replaced(this->Triangles[ab], b, m));
@@ -537,7 +517,7 @@ Status SurfaceMesh::commit()
   {
     this->Triangles = std::move(edits->committedTriangles);
     this->Points = std::move(edits->committedPoints);
-    this->Data = std::move(edits->committedData);
+    this->Properties = std::move(edits->committedProperties);
     this->connect();
   }
   return status;
@@ -556,17 +536,11 @@ SurfaceMesh::Renumbering SurfaceMesh::compact(const std::vector<char>& removedVe
     {
       r.vertex[v] = kept++;
       this->Points[r.vertex[v]] = this->Points[v];
-      for (auto& entry : this->Data)
-      {
-        entry.second[r.vertex[v]] = entry.second[v];
-      }
+      this->Properties.move(v, r.vertex[v]);
     }
   }
   this->Points.resize(kept);
-  for (auto& entry : this->Data)
-  {
-    entry.second.resize(kept);
-  }
+  this->Properties.resize(kept);
   r.triangle.assign(this->Triangles.size(), -1);
   int t = 0;
   for (std::size_t u = 0; u < this->Triangles.size(); ++u)
@@ -663,10 +637,7 @@ Status SurfaceMesh::reconnect(const std::vector<char>& touched, const Renumberin
   this->RingStart.swap(start);
   this->Ring.swap(ring);
   this->RingTriangle.swap(ringTriangle);
-  for (auto& entry : this->Data)
-  {
-    entry.second.resize(nv, Vec3::Zero());
-  }
+  this->Properties.resize(nv);
   return {};
 }
 

@@ -14,10 +14,10 @@
 
 #include "Common/Status.h"
 #include "Common/Vec3.h"
+#include "Surface/VertexProperties.h"
 
 #include <array>
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,11 +45,26 @@ public:
   const std::vector<std::array<int, 3>>& triangles() const { return this->Triangles; }
   const std::vector<Vec3>& points() const { return this->Points; }
   std::vector<Vec3>& points() { return this->Points; }
-  // Per-vertex data that follows edits, created (zero) on first use.
-  std::vector<Vec3>& vertexData(const std::string& name);
-  const std::vector<Vec3>& vertexData(const std::string& name) const; // empty if there is none
-  bool hasVertexData(const std::string& name) const { return this->Data.count(name) > 0; }
-  void removeVertexData(const std::string& name) { this->Data.erase(name); }
+  // Per-vertex data that follows edits (VertexProperties.h): the property `name`, made with `value`
+  // at every vertex where it is new; the property if there is one of type T, else a false handle.
+  template <typename T>
+  VertexProperty<T> addVertexProperty(const std::string& name, const T& value)
+  {
+    return this->Properties.add<T>(name, this->Points.size(), value);
+  }
+  template <typename T>
+  VertexProperty<T> vertexProperty(const std::string& name) const
+  {
+    return this->Properties.get<T>(name);
+  }
+  void removeVertexProperty(const std::string& name) { this->Properties.remove(name); }
+  // A copy of the values of the property `name` of type T; empty if there is none.
+  template <typename T>
+  std::vector<T> vertexValues(const std::string& name) const
+  {
+    const VertexProperty<T> property = this->vertexProperty<T>(name);
+    return property ? property.values() : std::vector<T>();
+  }
 
   // One-ring of vertex i: neighbours ring(p) for p in [ringBegin(i), ringEnd(i)), counter-clockwise.
   // The triangle (i, ring(p), ring(next(p))) is ringTriangle(p).
@@ -95,7 +110,7 @@ private:
 
   std::vector<std::array<int, 3>> Triangles;
   std::vector<Vec3> Points;
-  std::map<std::string, std::vector<Vec3>> Data;
+  VertexProperties Properties;
   std::vector<int> RingStart; // vertexCount + 1 offsets
   std::vector<int> Ring;
   std::vector<int> RingTriangle;

@@ -10,8 +10,8 @@ using namespace shrinkwrap;
 
 void removesSpecks()
 {
-  TriangleSurface s = icosphere(2, Vec3(0, 0, 0), 1.0);
-  const auto append = [&s](const TriangleSurface& more) {
+  TriangleSoup s = icosphere(2, Vec3(0, 0, 0), 1.0);
+  const auto append = [&s](const TriangleSoup& more) {
     const int offset = static_cast<int>(s.points.size());
     s.points.insert(s.points.end(), more.points.begin(), more.points.end());
     for (auto t : more.triangles)
@@ -30,7 +30,7 @@ void removesSpecks()
   SW_CHECK(removeSpecks(s, 0.1) == 0, "nothing more to remove");
 
   // A cavity: a smaller sphere inside, facing inwards. A second object beside it faces outwards.
-  TriangleSurface cavity = icosphere(1, Vec3(0, 0, 0), 0.5);
+  TriangleSoup cavity = icosphere(1, Vec3(0, 0, 0), 0.5);
   for (auto& t : cavity.triangles)
   {
     std::swap(t[1], t[2]);

@@ -22,16 +22,16 @@ int eulerCharacteristic(const std::vector<Vec3>& points, const std::vector<std::
 void edgeCollapses()
 {
   // A needle: one vertex of an icosphere moved to within 1% of a neighbour.
-  TriangleSurface needle = icosphere(3);
+  TriangleSoup needle = icosphere(3);
   const SurfaceMesh mesh = meshOf(needle);
   const int a = 0, b = mesh.ring(mesh.ringBegin(0));
   needle.points[a] = needle.points[b] + 0.01 * (needle.points[a] - needle.points[b]);
   SurfaceMesh after = mesh;
   after.points() = needle.points;
-  std::vector<Vec3>& label = after.vertexData("label");
+  const VertexProperty<int> label = after.addVertexProperty<int>("v:label", -1);
   for (int i = 0; i < after.vertexCount(); ++i)
   {
-    label[i] = Vec3(i, 0, 0);
+    label[i] = i;
   }
   const int n = collapseEdges(after, CollapseSettings());
   const std::vector<Vec3> points = after.points();
@@ -42,7 +42,8 @@ void edgeCollapses()
   int relabelled = 0; // vertices whose data is not their own: at most the one after the merged pair
   for (int i = 0; i < after.vertexCount(); ++i)
   {
-    relabelled += after.vertexData("label")[i].x() != i && after.vertexData("label")[i].x() != i + 1;
+    const int own = after.vertexProperty<int>("v:label")[i];
+    relabelled += own != i && own != i + 1;
   }
   std::printf("edge collapses: a needle of %.2f degrees, %d collapse(s), smallest angle then %.1f degrees\n",
     smallestAngle(mesh, needle.points).angle * 180 / M_PI, n,
@@ -50,13 +51,13 @@ void edgeCollapses()
   SW_CHECK(n == 1 && closed, "one collapse, a closed 2-manifold: " << error);
   SW_CHECK(points.size() == needle.points.size() - 1 && eulerCharacteristic(points, triangles) == 2,
     "one vertex fewer, same genus");
-  SW_CHECK(relabelled == 0 && after.vertexData("label").size() == points.size(),
+  SW_CHECK(relabelled == 0 && after.vertexProperty<int>("v:label").values().size() == points.size(),
     "vertex data follows the collapse (each vertex keeps its own, renumbered)");
   SW_CHECK(smallestAngle(after, points).angle > 20 * M_PI / 180, "no thin triangle left");
 
   // A cap: a vertex of valence 3 put into a face, almost on one of its edges. The flat triangle goes
   // with it.
-  TriangleSurface cap = icosphere(2);
+  TriangleSoup cap = icosphere(2);
   const std::array<int, 3> face = cap.triangles[7];
   const Vec3 centre = (cap.points[face[0]] + cap.points[face[1]] + cap.points[face[2]]) / 3;
   const Vec3 middle = 0.5 * (cap.points[face[0]] + cap.points[face[1]]);
@@ -72,7 +73,7 @@ void edgeCollapses()
 
   // Where the two ends of an edge share a third neighbour, merging them would pinch the surface:
   // the two-vertex-wide waist of a tetrahedron-like cap is left alone (link condition).
-  TriangleSurface tetra;
+  TriangleSoup tetra;
   tetra.points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.001, 0.001, 1) };
   tetra.triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 } };
   SurfaceMesh waist = meshOf(tetra);
@@ -81,10 +82,10 @@ void edgeCollapses()
 }
 
 // A needle (a, b) beside a vertex of valence 3 merges that vertex away first, into a where a stands;
-// but where the lone vertex holds a rim (kAnchorData), a merges into it there instead.
+// but where the lone vertex holds a rim (kAnchor), a merges into it there instead.
 void loneVertexAnchored()
 {
-  TriangleSurface cap = icosphere(2);
+  TriangleSoup cap = icosphere(2);
   const std::array<int, 3> face = cap.triangles[7];
   const int v = static_cast<int>(cap.points.size());
   const Vec3 lone = (cap.points[face[0]] + cap.points[face[1]] + cap.points[face[2]]) / 3;
@@ -97,7 +98,7 @@ void loneVertexAnchored()
     SurfaceMesh mesh = meshOf(cap);
     if (anchored)
     {
-      mesh.vertexData(kAnchorData)[v] = Vec3(1, 0, 0);
+      mesh.addVertexProperty<double>(kAnchor, 0)[v] = 1;
     }
     const int n = collapseEdges(mesh, CollapseSettings());
     const bool found = std::find(mesh.points().begin(), mesh.points().end(), lone) != mesh.points().end();

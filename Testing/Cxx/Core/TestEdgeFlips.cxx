@@ -26,9 +26,9 @@ double thinShare(const std::vector<std::array<int, 3>>& triangles, const std::ve
 }
 
 // An icosphere stretched 4 times along x: thin triangles everywhere, on a smooth convex shape.
-TriangleSurface stretchedIcosphere()
+TriangleSoup stretchedIcosphere()
 {
-  TriangleSurface stretched = icosphere(3, Vec3::Zero(), 1.0);
+  TriangleSoup stretched = icosphere(3, Vec3::Zero(), 1.0);
   for (Vec3& p : stretched.points)
   {
     p.x() *= 4;
@@ -38,7 +38,7 @@ TriangleSurface stretchedIcosphere()
 
 void edgeFlips()
 {
-  const TriangleSurface stretched = stretchedIcosphere();
+  const TriangleSoup stretched = stretchedIcosphere();
   const SurfaceMesh mesh = meshOf(stretched);
   const std::vector<Vec3>& x = stretched.points;
   // Four passes, each on the triangles of the one before.

@@ -26,7 +26,7 @@ struct Errors
 
 Errors shrinkingSphere(int level, const EvolverSettings& base)
 {
-  const TriangleSurface sphere = icosphere(level);
+  const TriangleSoup sphere = icosphere(level);
   SurfaceMesh mesh;
   std::string error;
   testing::builds(sphere.points, sphere.triangles, mesh, error);
@@ -112,7 +112,7 @@ int TestEvolverShrinkingSphere(int, char*[])
     // there for any scheme that respects the symmetry, and err equals Table 2's; the paper's code must
     // break the symmetry. Checked directly, then levels 2-4 are held to the table.
     {
-      const TriangleSurface sphere = icosphere(1);
+      const TriangleSoup sphere = icosphere(1);
       SurfaceMesh mesh;
       std::string error;
       testing::builds(sphere.points, sphere.triangles, mesh, error);

@@ -76,7 +76,8 @@ void dataFollows()
   // Vertex data equal to the positions stays equal through splits (interpolated both) and flips, when
   // no relaxation moves the positions alone; a collapse keeps the surviving vertex's data.
   SurfaceMesh mesh = testing::meshOf(icosphere(2));
-  mesh.vertexData("copy") = mesh.points();
+  const VertexProperty<Vec3> copy = mesh.addVertexProperty<Vec3>("v:copy", Vec3::Zero());
+  copy.values() = mesh.points();
   RemeshSettings settings;
   settings.targetLength = 0.12;
   settings.relaxWeight = 0;
@@ -86,47 +87,47 @@ void dataFollows()
   double worst = 0;
   for (int i = 0; i < mesh.vertexCount(); ++i)
   {
-    worst = std::max(worst, (mesh.vertexData("copy")[i] - mesh.points()[i]).norm());
+    worst = std::max(worst, (mesh.vertexProperty<Vec3>("v:copy")[i] - mesh.points()[i]).norm());
   }
   SW_CHECK(r.splits > 0 && r.flips > 0 && worst < 1e-12, "vertex data follows splits and flips (" << worst << ")");
   SurfaceMesh fine = testing::meshOf(icosphere(3));
-  std::vector<Vec3>& label = fine.vertexData("label");
+  const VertexProperty<int> label = fine.addVertexProperty<int>("v:label", -1);
   for (int i = 0; i < fine.vertexCount(); ++i)
   {
-    label[i] = Vec3(i, 0, 0);
+    label[i] = i;
   }
   const int collapses = collapseShortEdges(fine, 0.2, 1.0, CollapseSettings());
   bool own = true; // every survivor's label is an old vertex's, in increasing order
   for (int i = 1; i < fine.vertexCount(); ++i)
   {
-    own = own && fine.vertexData("label")[i].x() > fine.vertexData("label")[i - 1].x();
+    own = own && fine.vertexProperty<int>("v:label")[i] > fine.vertexProperty<int>("v:label")[i - 1];
   }
   SW_CHECK(collapses > 0 && own && fine.vertexCount() == 642 - collapses, "collapses keep the survivors' data, in order");
 }
 
-// Collapses merge into an anchored end at its position (kAnchorData, e.g. a vertex holding a target's
+// Collapses merge into an anchored end at its position (kAnchor, e.g. a vertex holding a target's
 // rim): anchors on an independent set of a sphere's vertices all keep their positions through a
 // coarsening that without them moves some.
 void anchorsStay()
 {
   SurfaceMesh plain = testing::meshOf(icosphere(3));
-  std::vector<Vec3> anchors(plain.vertexCount(), Vec3::Zero());
+  std::vector<double> anchors(plain.vertexCount(), 0.0);
   std::vector<Vec3> anchored; // positions
   for (int i = 0; i < plain.vertexCount(); ++i)
   {
     bool free = true; // no anchored neighbour
     for (int p = plain.ringBegin(i); p < plain.ringEnd(i); ++p)
     {
-      free = free && anchors[plain.ring(p)].x() == 0;
+      free = free && anchors[plain.ring(p)] == 0;
     }
     if (free && i % 3 == 0)
     {
-      anchors[i] = Vec3(1, 0, 0);
+      anchors[i] = 1;
       anchored.push_back(plain.points()[i]);
     }
   }
   SurfaceMesh fixed = plain;
-  fixed.vertexData(kAnchorData) = anchors;
+  fixed.addVertexProperty<double>(kAnchor, 0).values() = anchors;
   auto kept = [&](const SurfaceMesh& mesh) {
     int n = 0;
     for (const Vec3& a : anchored)
@@ -176,10 +177,10 @@ void adaptive()
   assignEdgeSizes(sphere, settings);
   const double e = 0.05 * 0.2, expected = std::sqrt(6 * e * 2.0 - 3 * e * e) / 0.2;
   double low = 1e9, high = 0;
-  for (const Vec3& s : std::as_const(sphere).vertexData(kEdgeSizeData))
+  for (const double s : sphere.vertexValues<double>(kEdgeSize))
   {
-    low = std::min(low, s.x());
-    high = std::max(high, s.x());
+    low = std::min(low, s);
+    high = std::max(high, s);
   }
   std::printf("sizes on a sphere of radius 2: %.3f to %.3f L (chord error: %.3f L)\n", low, high, expected);
   SW_CHECK(low > 0.95 * expected && high < 1.01 * expected, "the sphere's sizes are the chord-error length (within 5%)");
@@ -227,7 +228,7 @@ void adaptive()
     "adaptive: the sharp ends get shorter edges than the flat waist");
   SW_CHECK(meanEdge(adapted, true) < 0.8 * meanEdge(uniform, true) && s.thin < 0.05,
     "shorter than L alone there, with few thin triangles");
-  SW_CHECK(!std::as_const(adapted).hasVertexData(kEdgeSizeData), "the sizes are gone after the remeshing");
+  SW_CHECK(!adapted.vertexProperty<double>(kEdgeSize), "the sizes are gone after the remeshing");
 }
 
 void refused()

@@ -26,11 +26,11 @@ using namespace shrinkwrap;
 
 void selfIntersections()
 {
-  const TriangleSurface sphere = icosphere(3, Vec3::Zero(), 1.0);
+  const TriangleSoup sphere = icosphere(3, Vec3::Zero(), 1.0);
   SW_CHECK(findSelfIntersections(sphere.points, sphere.triangles).pairs == 0, "an icosphere does not cross itself");
 
-  TriangleSurface two = sphere;
-  const TriangleSurface other = icosphere(3, Vec3(1.0, 0.1, 0.05), 1.0);
+  TriangleSoup two = sphere;
+  const TriangleSoup other = icosphere(3, Vec3(1.0, 0.1, 0.05), 1.0);
   const int offset = static_cast<int>(two.points.size());
   two.points.insert(two.points.end(), other.points.begin(), other.points.end());
   for (auto t : other.triangles)
@@ -50,7 +50,7 @@ void selfIntersections()
   std::printf("two overlapping icospheres: %lld crossing pairs, %d triangles flagged\n", crossing.pairs, flagged);
   SW_CHECK(crossing.pairs > 20 && flagged > 20 && far == 0, "two overlapping spheres cross along their circle, and only there");
 
-  TriangleSurface pushed = sphere;
+  TriangleSoup pushed = sphere;
   pushed.points[0] = -1.3 * pushed.points[0]; // through the other side
   SW_CHECK(findSelfIntersections(pushed.points, pushed.triangles).pairs > 0, "a vertex pushed through the sphere");
 }
@@ -129,7 +129,7 @@ void triangleGrid()
 
 void heldFronts()
 {
-  const TriangleSurface sphere = icosphere(3, Vec3::Zero(), 1.0);
+  const TriangleSoup sphere = icosphere(3, Vec3::Zero(), 1.0);
   std::vector<Vec3> next;
   for (const Vec3& p : sphere.points)
   {
@@ -319,10 +319,10 @@ void guardReach()
 // nothing).
 void newCrossings()
 {
-  const TriangleSurface sphere = icosphere(3, Vec3::Zero(), 1.0);
+  const TriangleSoup sphere = icosphere(3, Vec3::Zero(), 1.0);
   SurfaceMesh before;
   SW_CHECK(SurfaceMesh::build(sphere.points, sphere.triangles, before), "the sphere is a closed surface");
-  TriangleSurface pushed = sphere;
+  TriangleSoup pushed = sphere;
   pushed.points[0] = -1.3 * pushed.points[0];
   const SelfIntersections all = findSelfIntersections(pushed.points, pushed.triangles);
   const SelfIntersections made = findNewSelfIntersections(before, pushed.points, pushed.triangles);
@@ -350,7 +350,7 @@ void newCrossings()
 // A round of edits checked once: unguarded first, then guarded near where it crossed, then everywhere.
 void checkedEdits()
 {
-  const TriangleSurface sphere = icosphere(3, Vec3::Zero(), 1.0);
+  const TriangleSoup sphere = icosphere(3, Vec3::Zero(), 1.0);
   SurfaceMesh start;
   SW_CHECK(SurfaceMesh::build(sphere.points, sphere.triangles, start), "the sphere is a closed surface");
   // The "edit": pushes vertex 0 through the sphere unless guarded where it lies (or everywhere).
@@ -403,7 +403,7 @@ void checkedEdits()
 
 void exactNearTarget()
 {
-  const TriangleSurface sphere = icosphere(3, Vec3::Zero(), 1.0);
+  const TriangleSoup sphere = icosphere(3, Vec3::Zero(), 1.0);
   const TriangleSoup soup{ sphere.points, sphere.triangles };
   GridLattice lattice;
   placeGrid(soup.bounds(), GridPlacement{ 1.1, 0.3, 32, 0 }, lattice);

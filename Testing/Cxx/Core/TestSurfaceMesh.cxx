@@ -20,7 +20,7 @@ void icospheres()
   const long long expected[7] = { 12, 42, 162, 642, 2562, 10242, 40962 };
   for (int s = 0; s <= 6; ++s)
   {
-    const TriangleSurface sphere = icosphere(s, Vec3(1, 2, 3), 2.0);
+    const TriangleSoup sphere = icosphere(s, Vec3(1, 2, 3), 2.0);
     SW_CHECK(static_cast<long long>(sphere.points.size()) == expected[s] && icosphereVertexCount(s) == expected[s],
       "icosphere level " << s << " has " << expected[s] << " vertices (eq. (9))");
     if (s > 4)
@@ -52,25 +52,25 @@ void refusedSurfaces()
 {
   SurfaceMesh mesh;
   std::string error;
-  const TriangleSurface tet{ { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
+  const TriangleSoup tet{ { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
     { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } } };
   using testing::builds;
   SW_CHECK(builds(tet.points, tet.triangles, mesh, error), "a tetrahedron is a closed surface");
   SW_CHECK(!builds({}, {}, mesh, error), "empty surface refused: " << error);
-  TriangleSurface isolated = tet;
+  TriangleSoup isolated = tet;
   isolated.points.push_back({ 5, 5, 5 });
   SW_CHECK(!builds(isolated.points, isolated.triangles, mesh, error), "isolated vertex refused: " << error);
-  TriangleSurface open = tet;
+  TriangleSoup open = tet;
   open.triangles.pop_back();
   SW_CHECK(!builds(open.points, open.triangles, mesh, error), "open surface refused: " << error);
-  TriangleSurface fin = tet; // a third triangle on edge (0, 1)
+  TriangleSoup fin = tet; // a third triangle on edge (0, 1)
   fin.points.push_back({ 0.5, -1, 0 });
   fin.triangles.push_back({ 0, 1, 4 });
   SW_CHECK(!builds(fin.points, fin.triangles, mesh, error), "non-manifold edge refused: " << error);
-  TriangleSurface flipped = tet;
+  TriangleSoup flipped = tet;
   std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
   SW_CHECK(!builds(flipped.points, flipped.triangles, mesh, error), "inconsistent orientation refused: " << error);
-  TriangleSurface nan = tet;
+  TriangleSoup nan = tet;
   nan.points[1].x() = std::nan("");
   SW_CHECK(!builds(nan.points, nan.triangles, mesh, error), "NaN refused: " << error);
 }
@@ -98,13 +98,17 @@ bool ringsMatch(const SurfaceMesh& mesh)
 
 void edits()
 {
-  const TriangleSurface sphere = icosphere(1);
+  const TriangleSoup sphere = icosphere(1);
   SurfaceMesh mesh = meshOf(sphere);
-  std::vector<Vec3>& velocity = mesh.vertexData("velocity");
+  const VertexProperty<Vec3> velocity = mesh.addVertexProperty<Vec3>("v:velocity", Vec3::Zero());
+  const VertexProperty<double> size = mesh.addVertexProperty<double>("v:size", 1.0);
   for (int i = 0; i < mesh.vertexCount(); ++i)
   {
     velocity[i] = Vec3(i, 2 * i, 0);
+    size[i] = 3 * i;
   }
+  SW_CHECK(!mesh.vertexProperty<double>("v:velocity") && !mesh.vertexProperty<double>("v:none"),
+    "a property asked for with another type, or none, gives a false handle");
   const int a = 0, b = mesh.ring(mesh.ringBegin(0));
   const double volume = enclosedVolume(mesh, mesh.points());
 
@@ -113,8 +117,9 @@ void edits()
   SW_CHECK(m == 42 && mesh.edited() && mesh.commit(), "a split commits");
   SW_CHECK(mesh.vertexCount() == 43 && mesh.triangleCount() == 82 && ringsMatch(mesh), "one vertex, two triangles more");
   SW_CHECK((mesh.points()[m] - (0.75 * sphere.points[a] + 0.25 * sphere.points[b])).norm() < 1e-15 &&
-      (mesh.vertexData("velocity")[m] - Vec3(0.25 * b, 0.5 * b, 0)).norm() < 1e-12,
-    "the new vertex's position and velocity are interpolated");
+      (mesh.vertexProperty<Vec3>("v:velocity")[m] - Vec3(0.25 * b, 0.5 * b, 0)).norm() < 1e-12 &&
+      std::abs(mesh.vertexProperty<double>("v:size")[m] - 0.75 * b) < 1e-12,
+    "the new vertex's position, velocity and size are interpolated");
   SW_CHECK(mesh.ringEntry(a, b) < 0 && mesh.ringEntry(a, m) >= 0 && mesh.ringEntry(m, b) >= 0, "(a, b) became (a, m, b)");
   SW_CHECK(std::abs(enclosedVolume(mesh, mesh.points()) - volume) < 1e-12, "a split on the edge keeps the volume");
 
@@ -130,8 +135,15 @@ void edits()
   SW_CHECK(mesh.flip(d, c) && mesh.commit() && mesh.triangles().size() == before.size(), "flipped back");
   SW_CHECK(mesh.collapse(b, m, sphere.points[b]) && mesh.commit(), "a collapse commits");
   SW_CHECK(mesh.vertexCount() == 42 && mesh.triangleCount() == 80 && ringsMatch(mesh) &&
-      mesh.vertexData("velocity")[b] == Vec3(b, 2 * b, 0),
-    "the icosphere's counts again, b's velocity kept");
+      mesh.vertexProperty<Vec3>("v:velocity")[b] == Vec3(b, 2 * b, 0) &&
+      mesh.vertexProperty<double>("v:size")[b] == 3 * b,
+    "the icosphere's counts again, b's velocity and size kept");
+  SurfaceMesh copy = mesh;
+  copy.vertexProperty<double>("v:size")[0] = -1;
+  copy.removeVertexProperty("v:velocity");
+  SW_CHECK(mesh.vertexProperty<double>("v:size")[0] == 0 && mesh.vertexProperty<Vec3>("v:velocity") &&
+      !copy.vertexProperty<Vec3>("v:velocity"),
+    "a copy's properties are its own");
   SW_CHECK(std::abs(enclosedVolume(mesh, mesh.points()) - volume) < 1e-12, "the same surface again");
 
   // Edits see each other before the commit: every edge split once, in one pass.
@@ -176,7 +188,7 @@ void commitsAsBuilt()
 {
   // A level-3 sphere squashed to an ellipsoid, so that its edges differ in length: rounds of splits,
   // collapses (which renumber) and flips, each compared with the surface built anew.
-  TriangleSurface sphere = icosphere(3);
+  TriangleSoup sphere = icosphere(3);
   for (Vec3& x : sphere.points)
   {
     x.z() *= 0.3;

@@ -2,6 +2,7 @@
 // sum, and fields of surfaces with holes, overlaps, flipped faces and crossings signed as that
 // reference says: no node farther than one cell from the surface on the wrong side (the bar allows
 // 0.1%). A disc encloses nothing: unsigned.
+#include "Distance/SoupEdges.h"
 #include "Distance/ConsistentOrientation.h"
 #include "Distance/DistanceSource.h"
 #include "Surface/Icosphere.h"

@@ -227,7 +227,7 @@ vtkSmartPointer<vtkImageData> randomField(Dice& dice, vtkMeshSignedDistance* dis
 // An empty output, or a surface of triangles with finite points and valid ids.
 bool validMesh(vtkPolyData* mesh)
 {
-  shrinkwrap::TriangleSurface surface;
+  shrinkwrap::TriangleSoup surface;
   return mesh->GetNumberOfCells() == 0 || shrinkwrap::convert::surfaceOf(mesh, surface);
 }
 

@@ -16,7 +16,7 @@
 // Argument: the folder holding CGAL's data/meshes/*.off.
 #include "Surface/SurfaceMesh.h"
 #include "TestUtilities.h"
-#include "Distance/TriangleSoup.h"
+#include "Distance/SoupEdges.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
 

@@ -5,7 +5,8 @@
 #include "Surface/Icosphere.h"
 #include "Distance/SignedDistance.h"
 #include "Surface/SurfaceMesh.h"
-#include "Evolution/WrapSession.h"
+#include "Wrap/AutomaticSizes.h"
+#include "Wrap/Wrap.h"
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
@@ -275,7 +276,8 @@ void distanceFieldPort(vtkPolyData* box, const std::vector<double>& middle)
   shrinkwrap::WrapSettings settings;
   settings.resolution = 64;
   const shrinkwrap::Box bounds = shrinkwrap::convert::boundsOf(box);
-  sdf->SetOffsetFactor(settings.resolved(bounds).fieldPlacement(bounds, false).offsetFactor);
+  const double gap = shrinkwrap::gapSizeFor(settings, bounds);
+  sdf->SetOffsetFactor(shrinkwrap::fieldPlacement(settings, gap, bounds, false).offsetFactor);
   vtkNew<vtkShrinkWrapFilter> withField;
   withField->SetInputData(box);
   withField->SetDistanceFieldConnection(sdf->GetOutputPort());
@@ -376,7 +378,7 @@ void badInputAndStarts(vtkPolyData* box)
 void splitSurfaceAsInitialSurface(vtkPolyData* box)
 {
   using namespace shrinkwrap;
-  const TriangleSurface sphere = icosphere(2, convert::boundsOf(box).center(), 1.2);
+  const TriangleSoup sphere = icosphere(2, convert::boundsOf(box).center(), 1.2);
   SurfaceMesh split = testing::meshOf(sphere);
   splitEdges(split, edgesOf(split));
   vtkNew<vtkPolyData> given;
@@ -393,24 +395,21 @@ void splitSurfaceAsInitialSurface(vtkPolyData* box)
   wrap->Update();
 
   // The core, as the filter runs it, from the unsplit icosphere split between steps.
-  WrapSettings unresolved; // without remeshing: the edit path, not the remeshing, is under test
-  unresolved.remeshing = false;
-  unresolved.resolution = 48;
-  unresolved.evolution.solverTolerance = 1e-12;
-  const WrapSettings settings = unresolved.resolved(convert::boundsOf(box));
+  WrapSettings settings; // without remeshing: the edit path, not the remeshing, is under test
+  settings.remeshing = false;
+  settings.resolution = 48;
+  settings.evolution.solverTolerance = 1e-12;
   convert::SoupCounts counts;
-  const TriangleSoup soup = convert::soupOf({ box }, counts);
-  DistanceGrid field;
-  SignedDistanceResult result;
-  GridPlacement placement;
-  placement.resolution = 48;
-  placement.offsetFactor = settings.fieldPlacement(convert::boundsOf(box), true).offsetFactor;
-  std::shared_ptr<const TriangleSource> exact;
-  signedDistanceGrid(soup, convert::surfaceBounds({ box }), placement, {}, field, result, {}, &exact);
+  WrapTarget target;
+  SW_CHECK(makeTarget(convert::soupOf({ box }, counts), {}, target), "the target");
+  target.givenStart = true;
+  WrapPlan plan;
+  SW_CHECK(planWrap(target, settings, plan), "the plan");
+  Notes notes;
   WrapFields fields;
-  SW_CHECK(wrapFields(field, true, exact, settings, fields), "the wrap's fields");
+  SW_CHECK(makeWrapFields(target, plan, {}, notes, fields), "the wrap's fields");
   std::unique_ptr<WrapSession> session;
-  SW_CHECK(WrapSession::create(fields, convert::boundsOf(box), testing::meshOf(sphere), settings, session), "a session");
+  SW_CHECK(WrapSession::create(fields, plan, testing::meshOf(sphere), session), "a session");
   if (!session)
   {
     return;

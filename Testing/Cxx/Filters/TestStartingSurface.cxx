@@ -81,7 +81,7 @@ vtkSmartPointer<vtkPolyData> torus(int nu = 96, int nv = 32)
 }
 
 // The surface of a vtkPolyData of triangles.
-shrinkwrap::TriangleSurface surfaceOf(vtkPolyData* mesh)
+shrinkwrap::TriangleSoup surfaceOf(vtkPolyData* mesh)
 {
   return testing::triangulated(mesh);
 }
@@ -121,7 +121,7 @@ vtkSmartPointer<vtkPolyData> torusContour(double level, double h)
 void relaxesAContour()
 {
   const double h = 0.05, level = 0.1;
-  shrinkwrap::TriangleSurface s = surfaceOf(torusContour(level, h));
+  shrinkwrap::TriangleSoup s = surfaceOf(torusContour(level, h));
   shrinkwrap::SurfaceMesh mesh;
   std::string error;
   SW_CHECK(testing::builds(s.points, s.triangles, mesh, error), "the contour is closed: " << error);
@@ -276,7 +276,7 @@ void coarsensTheOffsetStart()
     wrap->SetNumberOfSteps(0);
     wrap->Update();
     vtkPolyData* start = wrap->GetOutput();
-    const shrinkwrap::TriangleSurface s = surfaceOf(start);
+    const shrinkwrap::TriangleSoup s = surfaceOf(start);
     double edges = 0;
     for (const auto& t : s.triangles)
     {
@@ -319,7 +319,7 @@ shrinkwrap::DistanceGrid ambiguousFace(float below, float outside)
   return shrinkwrap::DistanceGrid(lattice, std::move(values));
 }
 
-long long eulerOf(const shrinkwrap::TriangleSurface& s)
+long long eulerOf(const shrinkwrap::TriangleSoup& s)
 {
   return static_cast<long long>(s.points.size()) - static_cast<long long>(s.triangles.size()) / 2;
 }
@@ -348,8 +348,8 @@ void followsTheInterpolantsTopology()
   const shrinkwrap::DistanceGrid apart = ambiguousFace(-1, 2);
   SW_CHECK(contourEulerCharacteristic(apart, 0).grid == 2, "the table joins the corners below: one blob");
   SW_CHECK(contourEulerCharacteristic(apart, 0).halfSpacing == 4, "at half the spacing they are apart: two blobs");
-  const shrinkwrap::TriangleSurface split = shrinkwrap::convert::contour(apart, 0, true);
-  const shrinkwrap::TriangleSurface table = shrinkwrap::convert::contour(apart, 0);
+  const shrinkwrap::TriangleSoup split = shrinkwrap::contourWithFewerJoins(apart, 0, shrinkwrap::convert::contour);
+  const shrinkwrap::TriangleSoup table = shrinkwrap::convert::contour(apart, 0);
   SW_CHECK(eulerOf(split) == 4, "the contour is the two blobs, not one (" << eulerOf(split) << ")");
   SW_CHECK(eulerOf(table) == 2, "unless asked for: the table's one blob");
   SW_CHECK(split.triangles.size() <= table.triangles.size(),
@@ -408,7 +408,7 @@ void followsTheInterpolantsTopology()
   SW_CHECK(contourEulerCharacteristic(joined, 0).halfSpacing == 2 && contourEulerCharacteristic(joined, 0).grid == 2,
     "both join the corners below");
   SW_CHECK(shrinkwrap::withFacesSeparated(joined, 0).values() == joined.values(), "no corner raised");
-  const shrinkwrap::TriangleSurface one = shrinkwrap::convert::contour(joined, 0, true);
+  const shrinkwrap::TriangleSoup one = shrinkwrap::contourWithFewerJoins(joined, 0, shrinkwrap::convert::contour);
   const std::size_t finer = shrinkwrap::convert::contour(joined.refined(), 0).triangles.size();
   SW_CHECK(eulerOf(one) == 2 && one.triangles.size() < finer,
     "the grid's own contour: one blob, " << one.triangles.size() << " triangles (at half the spacing " << finer << ")");
@@ -472,14 +472,12 @@ shrinkwrap::DistanceGrid slitRing(double h, bool speck)
 void startsWithoutTheSlitsBridge()
 {
   const double h = 0.05;
-  const shrinkwrap::Contour contour = [](const shrinkwrap::DistanceGrid& grid, double value) {
-    return shrinkwrap::convert::contour(grid, value, true);
-  };
+  const shrinkwrap::Contour contour = shrinkwrap::convert::contour;
   for (const bool speck : { false, true })
   {
     const shrinkwrap::DistanceGrid field = slitRing(h, speck);
     const std::string ring = speck ? "the ring with a speck: " : "the ring: ";
-    SW_CHECK(shrinkwrap::handleCount(contour(field, h)) == 1, ring << "the contour a cell out joins the caps: one handle");
+    SW_CHECK(shrinkwrap::handleCount(shrinkwrap::contourWithFewerJoins(field, h, contour)) == 1, ring << "the contour a cell out joins the caps: one handle");
     const std::vector<shrinkwrap::ContourEuler> counts = shrinkwrap::contourEulerCharacteristics(field, { h, 0.5 * h });
     const long long blob = speck ? 2 : 0; // a sphere's Euler characteristic
     SW_CHECK(counts.size() == 2 && counts[0].grid == 0 + blob && counts[1].grid == 2 + blob,
@@ -492,7 +490,7 @@ void startsWithoutTheSlitsBridge()
     int specks = 0;
     const shrinkwrap::Status status = shrinkwrap::startingSurface(
       field, field.lattice().bounds(), nullptr, settings, shrinkwrap::FlipSettings(), contour, start, specks);
-    shrinkwrap::TriangleSurface surface{ start.points(), start.triangles() };
+    shrinkwrap::TriangleSoup surface{ start.points(), start.triangles() };
     double nearest = INFINITY; // the start's distance from the ring, at its vertices
     for (const Vec3& p : surface.points)
     {

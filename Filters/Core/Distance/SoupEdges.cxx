@@ -1,4 +1,4 @@
-#include "Distance/TriangleSoup.h"
+#include "Distance/SoupEdges.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,9 @@
-// The paper's triangle soup (Section 2.1): indexed triangles with no topology required, so
-// non-manifold and duplicate-point meshes are accepted. Points with identical coordinates are welded
+// A triangle soup's points welded and its edges found: points with identical coordinates are welded
 // so that the pseudonormals of shared vertices and edges can be found.
-#ifndef ShrinkWrap_TriangleSoup_h
-#define ShrinkWrap_TriangleSoup_h
+#ifndef ShrinkWrap_SoupEdges_h
+#define ShrinkWrap_SoupEdges_h
 
-#include "Common/IndexedTriangles.h"
+#include "Common/TriangleSoup.h"
 
 #include <cstdint>
 #include <functional>
@@ -12,8 +11,6 @@
 
 namespace shrinkwrap
 {
-
-using TriangleSoup = IndexedTriangles;
 
 // Merge points with bit-identical coordinates. The result is the same surface; only the indices
 // change (a triangle that then repeats an index is kept: as a segment it still has distances).

@@ -1,0 +1,157 @@
+#include "Wrap/AutomaticSizes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+// A point cloud's automatic Gap Size, in median neighbour distances (of its sparsest part where its
+// density varies): the union of balls of half of it covers a uniform sample's random gaps.
+constexpr double kPointGapPerSpacing = 8;
+// ... and at least this many cells of the field: a closing under a cell or so is lost in the grid's
+// interpolation and leaves sub-cell tunnels.
+constexpr double kMinPointGapCells = 1.5;
+// A dense cloud's field is made finer (up to kMaxPointResolutionFactor) until that floor spans at
+// most this many spacings.
+constexpr double kDensePointGapPerSpacing = 11;
+constexpr double kMaxPointResolutionFactor = 1.5;
+// A sparser clean cloud's field is made finer (up to the same factor) until its gap spans this many
+// cells: a closing over fewer joins what lies a gap and a cell apart.
+constexpr double kSparsePointGapCells = 2.5;
+// A cloud's automatic L, in median neighbour distances, between the diagonal / kLengthDivisor and
+// the diagonal / kMaxPointLengthDivisor.
+constexpr double kPointEdgePerSpacing = 10;
+constexpr double kMaxPointLengthDivisor = 200;
+// On a noisy cloud L may grow to kEdgePerNoise times its noise, at most the diagonal /
+// kNoisyPointLengthDivisor: finer triangles would show only the noise.
+constexpr double kEdgePerNoise = 16;
+constexpr double kNoisyPointLengthDivisor = 30;
+// The offset start's farthest distance from the closed target, in Gap Sizes: beyond half the gap
+// the start merges parts the closing keeps apart.
+constexpr double kMaxStartOffsetPerGap = 0.4;
+} // namespace
+
+double gapSizeFor(const WrapSettings& settings, const Box& targetBox)
+{
+  return settings.gapSize ? *settings.gapSize : targetBox.diagonal() / WrapSettings::kGapDivisor;
+}
+
+std::optional<double> edgeLengthFor(const WrapSettings& settings, const Box& targetBox)
+{
+  if (!settings.remeshing)
+  {
+    return std::nullopt;
+  }
+  return settings.targetEdgeLength ? *settings.targetEdgeLength
+                                   : targetBox.diagonal() / WrapSettings::kLengthDivisor;
+}
+
+double maxStartOffset(double gapSize)
+{
+  return kMaxStartOffsetPerGap * gapSize;
+}
+
+GridPlacement fieldPlacement(
+  const WrapSettings& settings, double gapSize, const Box& targetBox, bool givenStart)
+{
+  GridPlacement placement;
+  placement.resolution = settings.resolution;
+  placement.offsetFactor = kPaperOffsetFactor;
+  // Beyond the box scaled by placement.boxScale, o s on every side (s its longest side) must hold
+  // the start's offset, the closing's radius and three cells of room: o s >= (offset + 3) h + gap /
+  // 2, with h = s (1 + 2 o) / resolution.
+  const double side = placement.boxScale * targetBox.size().maxCoeff();
+  const double cells = (settings.start.offset + 3) / std::max(settings.resolution, 1);
+  const double room = 1 - 2 * cells;
+  if (!givenStart && settings.start.shape == StartShape::OffsetSurface && side > 0 && room > 0)
+  {
+    placement.offsetFactor =
+      std::min((cells + 0.5 * gapSize / side) / room, kPaperOffsetFactor);
+  }
+  return placement;
+}
+
+namespace
+{
+// The cell of the field placed for `settings` around `box`, if it can be placed.
+std::optional<double> fieldCell(const WrapSettings& settings, const Box& box, bool givenStart)
+{
+  GridLattice lattice;
+  if (!placeGrid(box, fieldPlacement(settings, gapSizeFor(settings, box), box, givenStart), lattice))
+  {
+    return std::nullopt;
+  }
+  return lattice.spacing.maxCoeff();
+}
+} // namespace
+
+WrapSettings withPointSizes(
+  WrapSettings settings, const Box& box, const PointCloud& cloud, bool givenStart)
+{
+  const double spacing = cloud.spacing;
+  const double diagonal = box.diagonal();
+  // Noise above what an edge of the mesh's automatic length would show.
+  const bool noisy = kEdgePerNoise * cloud.noise() > diagonal / WrapSettings::kLengthDivisor;
+  if (!settings.targetEdgeLength && spacing > 0)
+  {
+    const double coarsest = std::clamp(kEdgePerNoise * cloud.noise(),
+      diagonal / WrapSettings::kLengthDivisor, diagonal / kNoisyPointLengthDivisor);
+    settings.targetEdgeLength =
+      std::clamp(kPointEdgePerSpacing * spacing, diagonal / kMaxPointLengthDivisor, coarsest);
+  }
+  if (settings.gapSize)
+  {
+    return settings;
+  }
+  const double spacingGap = kPointGapPerSpacing * std::max(spacing, cloud.sparseSpacing);
+  settings.gapSize = spacingGap;
+  // A dense cloud's spacing gap lies under the grid's floor: a finer field lowers the floor. A
+  // sparser clean one's may span too few cells for the closing: a finer field resolves it.
+  if (const std::optional<double> cell = fieldCell(settings, box, givenStart))
+  {
+    const double dense = kMinPointGapCells * *cell / (kDensePointGapPerSpacing * spacing);
+    const bool sparse = !noisy && spacingGap >= kMinPointGapCells * *cell;
+    const double finer = std::max(dense, sparse ? kSparsePointGapCells * *cell / spacingGap : 0.0);
+    if (finer > 1)
+    {
+      const double resolution =
+        std::ceil(std::min(finer, kMaxPointResolutionFactor) * settings.resolution);
+      settings.resolution =
+        static_cast<int>(std::min(resolution, double(std::numeric_limits<int>::max())));
+    }
+  }
+  // The cell depends on the gap (the box holds the closing): twice round settles it.
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    const std::optional<double> cell = fieldCell(settings, box, givenStart);
+    if (!cell)
+    {
+      break;
+    }
+    settings.gapSize = std::max(spacingGap, kMinPointGapCells * *cell);
+  }
+  return settings;
+}
+
+Status checkEdgeLength(const WrapSettings& settings, double edgeLength, const Box& targetBox)
+{
+  // Equilateral triangles of the shortest adaptive edge over the box's surface (more than the
+  // wrap's): vertices about 2 A / (sqrt(3) l^2).
+  const double shortest = settings.edgeLengthRange[0] * edgeLength;
+  const double vertices = 2 * 2 * targetBox.halfArea() / (std::sqrt(3.0) * shortest * shortest);
+  if (!(vertices <= WrapSettings::kMaxVertices))
+  {
+    std::ostringstream message;
+    message << "Target Edge Length " << edgeLength << " would make about " << vertices
+            << " vertices on this target (at most " << WrapSettings::kMaxVertices << "); raise it";
+    return Status::failure(message.str());
+  }
+  return {};
+}
+
+} // namespace shrinkwrap

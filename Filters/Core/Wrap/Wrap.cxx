@@ -1,0 +1,100 @@
+#include "Wrap/Wrap.h"
+
+#include "Distance/SignedDistance.h"
+#include "Evolution/StartingSurface.h"
+
+#include <string>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+// The shares of a setup's progress: the field is most of it.
+constexpr double kFieldsShare = 0.8;
+
+Status startOf(const WrapTarget& target, const WrapPlan& plan, const WrapFields& fields,
+  const Contour& contour, Notes& notes, SurfaceMesh& start)
+{
+  int specks = 0;
+  const Status status = startingSurface(fields.driving.grid(), plan.targetBox, target.start.get(),
+    plan.start(), plan.settings.evolution.flips, contour, start, specks);
+  if (specks > 0)
+  {
+    warn(notes, "Left out " + std::to_string(specks) +
+        " piece(s) of the starting surface smaller than two cells of the distance field");
+  }
+  return status;
+}
+} // namespace
+
+Status makeTarget(TriangleSoup polygons, PointList points, WrapTarget& target)
+{
+  target = WrapTarget();
+  if (!polygons.triangles.empty())
+  {
+    if (Status valid = checkSoup(polygons); !valid)
+    {
+      return valid;
+    }
+    target.polygons = std::make_shared<const TriangleSoup>(std::move(polygons));
+  }
+  if (!points.empty() || !target.polygons)
+  {
+    Status valid = checkPoints(points);
+    if (valid && !target.polygons)
+    {
+      valid = checkPointsEnclose(points);
+    }
+    if (!valid)
+    {
+      return valid;
+    }
+    target.points = std::make_shared<const PointCloud>(measureCloud(std::move(points)));
+  }
+  return {};
+}
+
+Status startWrap(const WrapTarget& target, const WrapPlan& plan, const Contour& contour,
+  const Progress& progress, Notes& notes, std::unique_ptr<WrapSession>& session)
+{
+  WrapFields fields;
+  Status status = makeWrapFields(target, plan, progress.stage(0, kFieldsShare), notes, fields);
+  SurfaceMesh start;
+  if (status)
+  {
+    status = startOf(target, plan, fields, contour, notes, start);
+  }
+  if (status)
+  {
+    status = WrapSession::create(std::move(fields), plan, start, session);
+  }
+  return status;
+}
+
+Status wrap(const WrapTarget& target, const WrapSettings& settings, const Contour& contour,
+  WrapResult& result, const Progress& progress)
+{
+  result = WrapResult();
+  std::unique_ptr<WrapSession> session;
+  Status status = planWrap(target, settings, result.plan);
+  if (status)
+  {
+    status = startWrap(target, result.plan, contour, progress.stage(0, 0.3), result.notes, session);
+  }
+  if (!status)
+  {
+    return status;
+  }
+  if (!session->advanceTo(settings.steps, progress.stage(0.3, 1)))
+  {
+    return Status::failure("aborted");
+  }
+  const WrapSession::Surface surface = session->surface(settings.steps);
+  result.surface = { surface.points, *surface.cached->triangles };
+  result.steps = surface.step;
+  result.failure = session->failure();
+  return {};
+}
+
+} // namespace shrinkwrap

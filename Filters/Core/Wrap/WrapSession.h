@@ -1,0 +1,71 @@
+// One shrink-wrap run (Algorithm 3) as a session the filter keeps while its inputs and properties
+// stay: the fields, the evolver, and the cache of computed steps. Asking for a step computes what is
+// missing from the nearest cached step before it.
+#ifndef ShrinkWrap_WrapSession_h
+#define ShrinkWrap_WrapSession_h
+
+#include "Evolution/Evolver.h"
+#include "Evolution/StepCache.h"
+#include "Wrap/WrapFields.h"
+#include "Wrap/WrapPlan.h"
+
+#include <memory>
+#include <string>
+
+namespace shrinkwrap
+{
+
+class WrapSession
+{
+public:
+  // `start` ready to evolve (startingSurface()). The plan's target box centres the scaled
+  // coordinates and, without remeshing, sizes phi (Section 2.4: the mean co-volume of the sphere
+  // inscribed in the target's box is tau).
+  static Status create(WrapFields fields, const WrapPlan& plan, const SurfaceMesh& start,
+    std::unique_ptr<WrapSession>& session);
+
+  // The step shown for a wanted one: after a failure, the last good step at most.
+  int shown(int wanted) const { return this->LastGood >= 0 ? std::min(wanted, this->LastGood) : wanted; }
+  // Computes the missing steps up to shown(k); false when progress asked to stop (the steps computed
+  // stay cached).
+  bool advanceTo(int k, const Progress& progress = {});
+  // The surface of step k (or the nearest cached one before it) in the caller's units.
+  struct Surface
+  {
+    int step = 0;
+    std::vector<Vec3> points;
+    const StepCache::Step* cached = nullptr;
+  };
+  Surface surface(int k) const;
+
+  // Edits the evolver's current surface (Evolver::edit); phi follows the new vertex count when the
+  // settings scale automatically, the current step is cached anew and later ones are dropped.
+  Status edit(const std::function<void(SurfaceMesh&)>& change);
+
+  const WrapFields& fields() const { return this->Fields; }
+  const WrapPlan& plan() const { return this->Plan; }
+  const Evolver& evolver() const { return *this->Evolving; }
+  int computedSteps() const { return this->Computed; }
+  int lastGood() const { return this->LastGood; }
+  const std::string& failure() const { return this->Failure; }
+
+private:
+  WrapSession() = default;
+  double scaleFor(int vertexCount) const;
+  void cacheCurrent(bool connectivityChanged, bool edited = false);
+
+  WrapPlan Plan;
+  EvolverSettings Evolution; // the plan's
+  WrapFields Fields;
+  double Radius = 1; // of the sphere inscribed in the target's box
+  std::unique_ptr<Evolver> Evolving;
+  StepCache Cache;
+  StepCache::Triangles EvolverTriangles; // the evolver's current connectivity
+  int LastGood = -1; // set when a step failed: the last step that did not
+  std::string Failure;
+  int Computed = 0;
+};
+
+} // namespace shrinkwrap
+
+#endif

@@ -1,10 +1,12 @@
 #include "RankInputs.h"
 
+#include <vtkAlgorithm.h>
 #include <vtkAppendFilter.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
 #include <vtkIdList.h>
 #include <vtkInformation.h>
+#include <vtkInformationVector.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
@@ -362,6 +364,63 @@ std::vector<int> piecesOfLeaves(vtkCompositeDataSet* composite, const std::vecto
     return here;
   }
   return sharedOut();
+}
+
+void askWholeInputs(vtkInformationVector** inputVector, int ports, bool anyTime)
+{
+  for (int port = 0; port < ports; ++port)
+  {
+    for (int c = 0; c < inputVector[port]->GetNumberOfInformationObjects(); ++c)
+    {
+      vtkInformation* info = inputVector[port]->GetInformationObject(c);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+      if (anyTime)
+      {
+        info->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      }
+    }
+  }
+}
+
+vtkMTimeType newestModification(vtkAlgorithm* filter, int ports)
+{
+  vtkMTimeType newest = filter->GetMTime();
+  for (int port = 0; port < ports; ++port)
+  {
+    for (int c = 0; c < filter->GetNumberOfInputConnections(port); ++c)
+    {
+      if (vtkDataObject* data = filter->GetInputDataObject(port, c))
+      {
+        newest = std::max(newest, data->GetMTime());
+      }
+    }
+  }
+  return newest;
+}
+
+vtkCompositeDataSet* compositeOf(vtkInformationVector* port)
+{
+  for (int c = 0; c < port->GetNumberOfInformationObjects(); ++c)
+  {
+    if (auto* composite = vtkCompositeDataSet::GetData(port, c))
+    {
+      return composite;
+    }
+  }
+  return nullptr;
+}
+
+std::vector<vtkDataSet*> leavesOf(vtkCompositeDataSet* composite)
+{
+  std::vector<vtkDataSet*> leaves;
+  auto at = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
+  for (at->InitTraversal(); !at->IsDoneWithTraversal(); at->GoToNextItem())
+  {
+    leaves.push_back(vtkDataSet::SafeDownCast(at->GetCurrentDataObject()));
+  }
+  return leaves;
 }
 
 } // namespace convert

@@ -7,15 +7,21 @@
 
 #include "Distance/SlabDistance.h"
 
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkNew.h>
 #include <vtkSmartPointer.h>
+
+#include <algorithm>
 
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
 
-class vtkCompositeDataSet;
+class vtkAlgorithm;
 class vtkDataObject;
+class vtkInformationVector;
 class vtkDataSet;
 class vtkInformation;
 class vtkMultiProcessController;
@@ -83,6 +89,44 @@ PieceRequest pieceRequest(vtkInformation* outInfo);
 std::vector<int> piecesOfLeaves(vtkCompositeDataSet* composite, const std::vector<vtkDataSet*>& leaves,
   const PieceRequest& request, vtkMultiProcessController* controller,
   const std::function<std::vector<int>()>& sharedOut);
+
+// Asks a filter's inputs on its first `ports` ports for all of their data (piece 0 of 1, no ghost
+// levels), and with `anyTime` at the time they have (no time asked for).
+void askWholeInputs(vtkInformationVector** inputVector, int ports, bool anyTime);
+
+// The newest modification of `filter` and of its inputs' data on its first `ports` ports.
+vtkMTimeType newestModification(vtkAlgorithm* filter, int ports);
+
+// The first composite among a port's inputs, if any.
+vtkCompositeDataSet* compositeOf(vtkInformationVector* port);
+
+// The leaves of a composite, in its iterator's order.
+std::vector<vtkDataSet*> leavesOf(vtkCompositeDataSet* composite);
+
+// A composite's leaves computed by the pieces `computedOn` gives them (piecesOfLeaves): `output`
+// takes the input's shape, and at each leaf a new Leaf that compute(leaf, flat index, made, first,
+// share) fills where this piece computes it (first and share: the leaf's part of one progress bar
+// over them); empty elsewhere.
+template <typename Leaf, typename Compute>
+void computeLeaves(vtkCompositeDataSet* input, vtkCompositeDataSet* output,
+  const std::vector<int>& computedOn, int piece, Compute&& compute)
+{
+  output->CopyStructure(input);
+  const std::vector<vtkDataSet*> leaves = leavesOf(input);
+  const auto here = static_cast<double>(std::count(computedOn.begin(), computedOn.end(), piece));
+  auto at = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
+  int done = 0;
+  std::size_t count = 0;
+  for (at->InitTraversal(); !at->IsDoneWithTraversal(); at->GoToNextItem(), ++count)
+  {
+    vtkNew<Leaf> made;
+    if (leaves[count] && computedOn[count] == piece)
+    {
+      compute(leaves[count], at->GetCurrentFlatIndex(), made.Get(), done++ / here, 1 / here);
+    }
+    output->SetDataSet(at, made);
+  }
+}
 
 } // namespace convert
 } // namespace shrinkwrap

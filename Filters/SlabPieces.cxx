@@ -1,6 +1,12 @@
 #include "SlabPieces.h"
 
+#include <vtkExtentTranslator.h>
 #include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationIntegerRequestKey.h>
+#include <vtkNew.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkMultiProcessController.h>
 
 #include <algorithm>
@@ -147,6 +153,22 @@ void piecesFromSlabs(vtkMultiProcessController* controller, const GridLattice& l
       }
     }
   }
+}
+
+// Ghost layers, when asked for (a contour or gradient across piece borders): the nodes beyond the
+// piece proper (as the pipeline's extent translator splits the grid) are marked, so that their
+// cells are not counted twice.
+void markGhosts(const shrinkwrap::GridLattice& lattice, vtkInformation* outInfo, vtkImageData* output)
+{
+  int whole[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+  int proper[6];
+  vtkNew<vtkExtentTranslator> translator;
+  vtkInformationIntegerRequestKey* split = vtkExtentTranslator::UPDATE_SPLIT_MODE();
+  translator->PieceToExtentThreadSafe(
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()), 0, whole, proper,
+    split->Has(outInfo) ? split->Get(outInfo) : vtkExtentTranslator::BLOCK_MODE, 0);
+  output->GenerateGhostArray(proper);
 }
 
 } // namespace convert

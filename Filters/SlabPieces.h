@@ -12,6 +12,8 @@
 #include <string>
 
 class vtkFloatArray;
+class vtkImageData;
+class vtkInformation;
 class vtkMultiProcessController;
 
 namespace shrinkwrap
@@ -41,6 +43,11 @@ Extent evenSlab(const GridLattice& lattice, int r, int n);
 // overlaps. Collective.
 void piecesFromSlabs(vtkMultiProcessController* controller, const GridLattice& lattice,
   vtkFloatArray* slab, const int wanted[6], vtkFloatArray* piece);
+
+// Ghost layers, when asked for (a contour or gradient across piece borders): the nodes of `output`
+// beyond this piece proper (as the pipeline's extent translator splits the grid) are marked, so that
+// their cells are not counted twice.
+void markGhosts(const GridLattice& lattice, vtkInformation* outInfo, vtkImageData* output);
 
 } // namespace convert
 } // namespace shrinkwrap

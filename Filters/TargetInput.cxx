@@ -2,6 +2,8 @@
 
 #include "vtkInputGeometry.h"
 
+#include "Wrap/Wrap.h"
+
 #include <vtkPolyData.h>
 
 #include <string>
@@ -87,6 +89,36 @@ Status readTarget(vtkDataObject* data, int inputGeometry, const Wording& words, 
     readPoints(data, input, words, parts, notes);
   }
   return {};
+}
+
+namespace
+{
+// The note that says which points are wrapped ("the target's 20000 points are wrapped").
+std::string pointsNote(const TargetParts& parts, int inputGeometry, const Wording& words)
+{
+  const bool beside = parts.use.polygons;
+  return std::string(beside ? "the " + std::string(words.input) + "'s polygons and the "
+                            : "the " + std::string(words.input) + "'s ") +
+    std::to_string(parts.points.size()) + (beside ? " points beside them" : " points") + " are " +
+    words.verb + (inputGeometry == vtkInputGeometry::AUTOMATIC ? " (it has no polygons)" : "");
+}
+} // namespace
+
+Status wrapTarget(vtkDataObject* data, int inputGeometry, WrapTarget& target, Notes& notes)
+{
+  const Wording words{ "target", "wrapped" };
+  TargetParts parts;
+  Status status = readTarget(data, inputGeometry, words, parts, notes);
+  const std::string note = parts.points.empty() ? "" : pointsNote(parts, inputGeometry, words);
+  if (status)
+  {
+    status = makeTarget(std::move(parts.polygons), std::move(parts.points), target);
+  }
+  if (status && !note.empty())
+  {
+    inform(notes, note);
+  }
+  return status;
 }
 
 } // namespace convert

@@ -8,6 +8,9 @@
 #include "Common/TriangleSoup.h"
 #include "Distance/PointTree.h"
 #include "VTKConversions.h"
+#include "Wrap/WrapPlan.h"
+
+#include <string>
 
 class vtkDataObject;
 
@@ -35,6 +38,9 @@ struct TargetParts
 // The parts of `data` that `inputGeometry` (vtkInputGeometry) takes; why there are none, if none.
 Status readTarget(vtkDataObject* data, int inputGeometry, const Wording& words, TargetParts& parts,
   Notes& notes);
+
+// The target of a wrap from `data` (Wrap.h: makeTarget), with a note of the points wrapped.
+Status wrapTarget(vtkDataObject* data, int inputGeometry, WrapTarget& target, Notes& notes);
 
 } // namespace convert
 } // namespace shrinkwrap

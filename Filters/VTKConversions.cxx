@@ -20,6 +20,7 @@
 #include <vtkIdList.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -392,73 +393,6 @@ TriangleSoup contour(const DistanceGrid& grid, double value)
   return surface;
 }
 
-namespace
-{
-template <typename Array>
-Array* named(Array* array, const char* name, int components, vtkIdType tuples)
-{
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
-  return array;
-}
-
-// Per vertex: d, -grad d . N, H (h = -H N), |V_i|, N and v_T.
-void addPointArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
-  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
-{
-  SurfaceGeometry g;
-  computeGeometry(mesh, x, g);
-  const int nv = static_cast<int>(x.size());
-  vtkNew<vtkFloatArray> distance, alignment, curvature, coVolume, normals, tangential;
-  named(distance.Get(), "Distance", 1, nv);
-  named(alignment.Get(), "AdvectionAlignment", 1, nv);
-  named(curvature.Get(), "MeanCurvature", 1, nv);
-  named(coVolume.Get(), "CoVolume", 1, nv);
-  named(normals.Get(), "Normals", 3, nv);
-  named(tangential.Get(), "TangentialVelocity", 3, nv);
-  for (int i = 0; i < nv; ++i)
-  {
-    const DistanceSample d = field.sample(x[i]);
-    distance->SetValue(i, static_cast<float>(d.value));
-    alignment->SetValue(i, static_cast<float>(-d.gradient.dot(g.normal[i])));
-    curvature->SetValue(i, static_cast<float>(-g.curvature[i].dot(g.normal[i])));
-    coVolume->SetValue(i, static_cast<float>(g.coVolume[i]));
-    normals->SetTuple3(i, g.normal[i].x(), g.normal[i].y(), g.normal[i].z());
-    const Vec3& v = tangentialVelocity[i];
-    tangential->SetTuple3(i, v.x(), v.y(), v.z());
-  }
-  for (vtkDataArray* a : { distance.Get(), alignment.Get(), curvature.Get(), coVolume.Get(), tangential.Get() })
-  {
-    output->GetPointData()->AddArray(a);
-  }
-  output->GetPointData()->SetNormals(normals);
-  output->GetPointData()->SetActiveScalars("Distance");
-}
-
-// Per triangle: the quality measures of MeshQuality.h.
-void addCellArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, vtkPolyData* output)
-{
-  const int nt = mesh.triangleCount();
-  vtkNew<vtkFloatArray> minAngle, maxAngle, jacobian;
-  named(minAngle.Get(), "MinAngle", 1, nt);
-  named(maxAngle.Get(), "MaxAngle", 1, nt);
-  named(jacobian.Get(), "JacobianCondition", 1, nt);
-  for (int t = 0; t < nt; ++t)
-  {
-    const auto& tri = mesh.triangles()[t];
-    const TriangleQuality q = triangleQuality(x[tri[0]], x[tri[1]], x[tri[2]]);
-    minAngle->SetValue(t, static_cast<float>(q.minAngle));
-    maxAngle->SetValue(t, static_cast<float>(q.maxAngle));
-    jacobian->SetValue(t, static_cast<float>(q.jacobianCondition));
-  }
-  for (vtkDataArray* a : { minAngle.Get(), maxAngle.Get(), jacobian.Get() })
-  {
-    output->GetCellData()->AddArray(a);
-  }
-}
-} // namespace
-
 void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
@@ -478,122 +412,38 @@ void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 
   output->SetPolys(cells);
 }
 
-void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
-  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
+Notes addSignStatus(const SignedDistanceResult& result, bool asked, vtkImageData* output)
 {
-  setTriangles(x, mesh.triangles(), output);
-  addPointArrays(x, mesh, field, tangentialVelocity, output);
-  addCellArrays(x, mesh, output);
-}
-
-void addSelfIntersections(const SelfIntersections& crossings, vtkPolyData* output)
-{
-  vtkNew<vtkUnsignedCharArray> cells;
-  named(cells.Get(), "SelfIntersecting", 1, static_cast<vtkIdType>(crossings.intersecting.size()));
-  for (std::size_t t = 0; t < crossings.intersecting.size(); ++t)
+  const std::string status = signStatus(result, asked);
+  vtkNew<vtkIntArray> isSigned;
+  isSigned->SetName("Signed");
+  isSigned->InsertNextValue(result.isSigned ? 1 : 0);
+  vtkNew<vtkStringArray> statusArray;
+  statusArray->SetName("DistanceStatus");
+  statusArray->InsertNextValue(status);
+  output->GetFieldData()->AddArray(isSigned);
+  output->GetFieldData()->AddArray(statusArray);
+  Notes notes;
+  if (signNeedsWarning(result, asked))
   {
-    cells->SetValue(static_cast<vtkIdType>(t), crossings.intersecting[t]);
+    warn(notes, "The distance field is " + status);
   }
-  output->GetCellData()->AddArray(cells);
-  vtkNew<vtkIntArray> pairs;
-  pairs->SetName("SelfIntersections");
-  pairs->InsertNextValue(static_cast<int>(std::min<long long>(crossings.pairs, VTK_INT_MAX)));
-  output->GetFieldData()->AddArray(pairs);
+  return notes;
 }
 
-void addStepFields(int step, double time, const std::string& status, vtkPolyData* output)
+void report(vtkObject* self, const char* filter, const std::vector<Note>& notes)
 {
-  vtkNew<vtkIntArray> stepIndex;
-  stepIndex->SetName("StepIndex");
-  stepIndex->InsertNextValue(step);
-  vtkNew<vtkDoubleArray> times;
-  times->SetName("Time");
-  times->InsertNextValue(time);
-  vtkNew<vtkStringArray> statuses;
-  statuses->SetName("Status");
-  statuses->InsertNextValue(status);
-  output->GetFieldData()->AddArray(stepIndex);
-  output->GetFieldData()->AddArray(times);
-  output->GetFieldData()->AddArray(statuses);
-  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
-}
-
-WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, double seconds)
-{
-  WrapSummary summary;
-  summary.sizes = sizes;
-  summary.steps = steps;
-  summary.seconds = seconds;
-  summary.vertices = static_cast<int>(output->GetNumberOfPoints());
-  if (vtkDataArray* d = output->GetPointData()->GetArray("Distance"); d && d->GetNumberOfTuples() > 0)
+  for (const Note& note : notes)
   {
-    std::vector<double> a(d->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < d->GetNumberOfTuples(); ++i)
+    if (note.kind == Note::Warning)
     {
-      a[i] = std::abs(d->GetComponent(i, 0));
+      vtkWarningWithObjectMacro(self, << note.text << ".");
     }
-    std::sort(a.begin(), a.end());
-    const double last = static_cast<double>(a.size() - 1);
-    summary.distance = { a[static_cast<std::size_t>(0.5 * last)], a[static_cast<std::size_t>(0.95 * last)], a.back() };
-  }
-  if (vtkDataArray* m = output->GetCellData()->GetArray("MinAngle"); m && m->GetNumberOfTuples() > 0)
-  {
-    vtkIdType small = 0;
-    for (vtkIdType t = 0; t < m->GetNumberOfTuples(); ++t)
+    else
     {
-      small += m->GetComponent(t, 0) < 20.0;
+      vtkOutputWindowDisplayText((std::string(filter) + ": " + note.text + ".\n").c_str());
     }
-    summary.smallAngleShare = static_cast<double>(small) / m->GetNumberOfTuples();
   }
-  if (vtkDataArray* p = output->GetFieldData()->GetArray("SelfIntersections"))
-  {
-    summary.selfIntersections = static_cast<long long>(p->GetComponent(0, 0));
-  }
-  return summary;
-}
-
-std::string WrapSummary::text() const
-{
-  char line[512];
-  const double c = this->sizes.cell > 0 ? this->sizes.cell : 1.0;
-  char length[64] = "Remeshing off"; // no L is used then
-  if (this->sizes.edgeLength)
-  {
-    std::snprintf(length, sizeof(length), "Target Edge Length %.3g", *this->sizes.edgeLength);
-  }
-  std::snprintf(line, sizeof(line),
-    "%d steps in %.2f s, %d vertices: |distance| to the target median %.3g (%.2g cells), 95%% %.3g (%.2g cells), "
-    "largest %.3g (%.2g cells); %.2f%% of triangles under 20 degrees; closed 2-manifold, %lld self-intersecting "
-    "triangle pairs; Gap Size %.3g, %s, field cell %.3g",
-    this->steps, this->seconds, this->vertices, this->distance[0], this->distance[0] / c, this->distance[1],
-    this->distance[1] / c, this->distance[2], this->distance[2] / c, 100 * this->smallAngleShare,
-    this->selfIntersections, this->sizes.gap, length, this->sizes.cell);
-  return line;
-}
-
-void addSummary(const WrapSummary& summary, vtkPolyData* output)
-{
-  vtkFieldData* fields = output->GetFieldData();
-  auto add = [&](const char* name, std::vector<double> values) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->SetNumberOfComponents(static_cast<int>(values.size()));
-    a->InsertNextTuple(values.data());
-    fields->AddArray(a);
-  };
-  const std::array<double, 3>& d = summary.distance;
-  const double c = summary.sizes.cell > 0 ? summary.sizes.cell : 1.0;
-  add("DistancePercentiles", { d[0], d[1], d[2] });
-  add("DistancePercentilesInCells", { d[0] / c, d[1] / c, d[2] / c });
-  add("FieldCellSize", { summary.sizes.cell });
-  add("GapSize", { summary.sizes.gap });
-  add("TargetEdgeLength", { summary.sizes.edgeLength.value_or(0) }); // 0: Remeshing off
-  add("SmallAngleShare", { summary.smallAngleShare });
-  add("ComputeSeconds", { summary.seconds });
-  vtkNew<vtkStringArray> text;
-  text->SetName("Summary");
-  text->InsertNextValue(summary.text());
-  fields->AddArray(text);
 }
 
 } // namespace convert

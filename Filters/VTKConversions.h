@@ -5,9 +5,11 @@
 #define ShrinkWrap_VTKConversions_h
 
 #include "Distance/DistanceGrid.h"
+#include "Distance/SignedDistance.h"
 #include "Distance/PointTree.h"
 #include "Distance/TargetDistance.h"
 #include "Surface/SelfIntersections.h"
+#include "Common/Notes.h"
 #include "Common/Status.h"
 #include "Wrap/WrapPlan.h"
 #include "Surface/SurfaceGeometry.h"
@@ -22,6 +24,7 @@
 #include <vector>
 
 class vtkDataObject;
+class vtkObject;
 class vtkDataSet;
 class vtkImageData;
 class vtkPolyData;
@@ -98,34 +101,13 @@ TriangleSoup contour(const DistanceGrid& grid, double value);
 // Points (as doubles) and triangles as `output`'s geometry.
 void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles, vtkPolyData* output);
 
-// The wrap's surface as `output`: points x, triangles, point data Distance, AdvectionAlignment,
-// MeanCurvature, CoVolume, Normals, TangentialVelocity; cell data MinAngle, MaxAngle,
-// JacobianCondition (see vtkShrinkWrapFilter.h).
-void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
-  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output);
+// Field data Signed (1 or 0) and DistanceStatus (the sentence of signStatus) of a field; a warning
+// note when the sign is one a user should hear of (signNeedsWarning).
+Notes addSignStatus(const SignedDistanceResult& result, bool asked, vtkImageData* output);
 
-// Cell data SelfIntersecting (1 where a triangle crosses another) and field data SelfIntersections
-// (the number of crossing pairs).
-void addSelfIntersections(const SelfIntersections& crossings, vtkPolyData* output);
-
-// A wrap's figures as a user reads them, from its output's own arrays: |Distance| at the vertices
-// (median, 95th percentile, largest; in the target's units and in cells of the field), the share of
-// triangles with MinAngle under 20 degrees, self-intersecting pairs (SelfIntersections), and the
-// sizes the run used.
-struct WrapSummary
-{
-  std::array<double, 3> distance{}; // median, 95th percentile (value at rank floor(p (n - 1))), largest
-  WrapSizes sizes;
-  double smallAngleShare = 0;       // of the triangles
-  long long selfIntersections = 0;
-  int vertices = 0, steps = 0;
-  double seconds = 0;               // computing (fields, start and steps) in this session
-  std::string text() const;         // one line: what the output messages show at the end of a run
-};
-WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, double seconds);
-// As field data: DistancePercentiles, DistancePercentilesInCells (3 each), FieldCellSize, GapSize,
-// TargetEdgeLength, SmallAngleShare, ComputeSeconds, Summary (the text).
-void addSummary(const WrapSummary& summary, vtkPolyData* output);
+// Notes as a filter's messages: warnings as its warnings, the others in the output messages
+// prefixed by `filter` ("Shrink Wrap: ...").
+void report(vtkObject* self, const char* filter, const std::vector<Note>& notes);
 
 // A filter's output object (REQUEST_DATA_OBJECT): a composite of the same kind as `composite`, or,
 // without one, a `Leaf`; the output is kept when it is of that kind already.
@@ -140,9 +122,6 @@ void makeOutput(vtkInformation* outInfo, vtkCompositeDataSet* composite)
     outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
   }
 }
-
-// Field data of the wrap's output: StepIndex, Time and Status; and the output's DATA_TIME_STEP.
-void addStepFields(int step, double time, const std::string& status, vtkPolyData* output);
 
 } // namespace convert
 } // namespace shrinkwrap

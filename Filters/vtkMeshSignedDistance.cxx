@@ -4,7 +4,9 @@
 #include "Distance/SignedDistance.h"
 #include "Distance/SlabDistance.h"
 #include "VTKConversions.h"
+#include "PropertyBinding.h"
 #include "RankInputs.h"
+#include "FieldRun.h"
 #include "SlabPieces.h"
 #include "TargetInput.h"
 #include "vtkInputGeometry.h"
@@ -42,36 +44,32 @@ vtkStandardNewMacro(vtkMeshSignedDistance);
 
 namespace convert = shrinkwrap::convert;
 
-namespace
+
+// The core's settings that the properties stand for.
+struct vtkMeshSignedDistance::FieldSettings
 {
-// Ghost layers, when asked for (a contour or gradient across piece borders): the nodes beyond the
-// piece proper (as the pipeline's extent translator splits the grid) are marked, so that their
-// cells are not counted twice.
-void markGhosts(const shrinkwrap::GridLattice& lattice, vtkInformation* outInfo, vtkImageData* output)
+  shrinkwrap::GridPlacement placement;
+  shrinkwrap::SignedDistanceSettings distance;
+};
+
+// Every property beside the core setting it stands for (PropertyBinding.h).
+template <typename Filter, typename Settings, typename Bind>
+void vtkMeshSignedDistance::BindProperties(Filter& f, Settings& s, Bind&& bind)
 {
-  int whole[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
-  int proper[6];
-  vtkNew<vtkExtentTranslator> translator;
-  vtkInformationIntegerRequestKey* split = vtkExtentTranslator::UPDATE_SPLIT_MODE();
-  translator->PieceToExtentThreadSafe(
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()), 0, whole, proper,
-    split->Has(outInfo) ? split->Get(outInfo) : vtkExtentTranslator::BLOCK_MODE, 0);
-  output->GenerateGhostArray(proper);
+  bind("BoxScale", f.BoxScale, s.placement.boxScale);
+  bind("OffsetFactor", f.OffsetFactor, s.placement.offsetFactor);
+  bind("Resolution", f.Resolution, s.placement.resolution);
+  bind("CellSize", f.CellSize, s.placement.cellSize);
+  bind("SweepMethod", f.SweepMethod, s.distance.sweep); // CLOSEST_POINT, EIKONAL
+  bind("BandLayers", f.BandLayers, s.distance.bandLayers);
+  bind("ComputeSign", f.ComputeSign, s.distance.computeSign);
 }
-} // namespace
 
 vtkMeshSignedDistance::vtkMeshSignedDistance()
 {
-  const shrinkwrap::GridPlacement placement;
-  this->BoxScale = placement.boxScale;
-  this->OffsetFactor = placement.offsetFactor;
-  this->Resolution = placement.resolution;
-  this->CellSize = placement.cellSize;
-  const shrinkwrap::SignedDistanceSettings distance;
-  this->SweepMethod = distance.sweep == shrinkwrap::SweepMethod::Eikonal ? EIKONAL : CLOSEST_POINT;
-  this->BandLayers = distance.bandLayers;
-  this->ComputeSign = distance.computeSign;
+  const FieldSettings defaults; // stated once, in the core's settings
+  BindProperties(*this, defaults,
+    [](const char*, auto& property, const auto& setting) { convert::assign(property, setting); });
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
   this->SetProgressText("Mesh Signed Distance");
@@ -132,8 +130,7 @@ shrinkwrap::Status vtkMeshSignedDistance::ComputeLattice(
     return shrinkwrap::explicitGrid(
       box, { this->OutputDimensions[0], this->OutputDimensions[1], this->OutputDimensions[2] }, lattice);
   }
-  const shrinkwrap::GridPlacement placement{ this->BoxScale, this->OffsetFactor, this->Resolution, this->CellSize };
-  return shrinkwrap::placeGrid(surfaceBounds, placement, lattice);
+  return shrinkwrap::placeGrid(surfaceBounds, this->CoreSettings().placement, lattice);
 }
 
 int vtkMeshSignedDistance::RequestInformation(
@@ -186,21 +183,9 @@ int vtkMeshSignedDistance::RequestInformation(
 int vtkMeshSignedDistance::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  // Distances need the whole mesh.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  convert::askWholeInputs(inputVector, 1, false); // distances need the whole mesh
   return 1;
 }
-
-// The input as this filter measures it.
-struct vtkMeshSignedDistance::Measured
-{
-  shrinkwrap::TriangleSoup soup;  // its triangles (none: points only)
-  shrinkwrap::TriangleSoup cloud; // its points (none: polygons only), as the cloud's points
-  shrinkwrap::GridLattice lattice;
-};
 
 bool vtkMeshSignedDistance::Measure(vtkDataObject* input, Measured& measured)
 {
@@ -237,8 +222,13 @@ int vtkMeshSignedDistance::RequestData(
   vtkNew<vtkFloatArray> values;
   shrinkwrap::SignedDistanceResult result;
   const bool byPieces = this->ByPieces(outInfo);
-  if (byPieces ? !this->ComputePieces(ready, measured, outInfo, extent, values, result)
-               : !ready || !this->Compute(measured, 0, lattice.dims[2] - 1, nullptr, values, result))
+  const bool computed = byPieces
+    ? this->Computed(convert::computePieces(this->Controller, ready, measured,
+                       this->CoreSettings().distance, this->ProgressOf(), outInfo, extent, values,
+                       result),
+        result)
+    : ready && this->Compute(measured, 0, lattice.dims[2] - 1, values, result);
+  if (!computed)
   {
     return 1;
   }
@@ -254,9 +244,9 @@ int vtkMeshSignedDistance::RequestData(
   }
   if (byPieces && outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) > 0)
   {
-    markGhosts(lattice, outInfo, output);
+    convert::markGhosts(lattice, outInfo, output);
   }
-  this->AddStatus(result, output);
+  convert::report(this, "Mesh Signed Distance", convert::addSignStatus(result, this->ComputeSign, output));
   return 1;
 }
 
@@ -271,43 +261,6 @@ bool vtkMeshSignedDistance::ByPieces(vtkInformation* outInfo) const
     this->SweepMethod == CLOSEST_POINT && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
 }
 
-// This rank's piece (its update extent, into `extent`), computed with the other ranks. Collective:
-// every rank must measure the same surface on the same grid, and one that cannot, or holds another
-// input, stops all of them (rather than leave the others waiting for it).
-bool vtkMeshSignedDistance::ComputePieces(bool ready, const Measured& measured,
-  vtkInformation* outInfo, int extent[6], vtkFloatArray* values,
-  shrinkwrap::SignedDistanceResult& result)
-{
-  const convert::ControllerExchange exchange(this->Controller);
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
-  const convert::Agreement agreement = convert::agree(
-    exchange, ready, measured.soup, measured.cloud.points.size(), measured.lattice, extent);
-  if (!agreement.why.empty())
-  {
-    vtkErrorMacro("Cannot compute the field by pieces: " << agreement.why);
-    return false;
-  }
-  if (!ready)
-  {
-    return false;
-  }
-  if (agreement.slabs) // slabs of whole planes (the split this filter asks for): each its own
-  {
-    return this->Compute(measured, extent[4], extent[5], &exchange, values, result);
-  }
-  // Pieces of other shapes (a consumer that splits otherwise): even shares of planes, handed round.
-  const int rank = this->Controller->GetLocalProcessId();
-  const convert::Extent share =
-    convert::evenSlab(measured.lattice, rank, this->Controller->GetNumberOfProcesses());
-  vtkNew<vtkFloatArray> slab;
-  if (!this->Compute(measured, share[4], share[5], &exchange, slab, result))
-  {
-    return false;
-  }
-  convert::piecesFromSlabs(this->Controller, measured.lattice, slab, extent, values);
-  return true;
-}
-
 bool vtkMeshSignedDistance::FieldOf(vtkDataObject* input, vtkImageData* output)
 {
   Measured measured;
@@ -318,7 +271,7 @@ bool vtkMeshSignedDistance::FieldOf(vtkDataObject* input, vtkImageData* output)
   const shrinkwrap::GridLattice& lattice = measured.lattice;
   vtkNew<vtkFloatArray> values;
   shrinkwrap::SignedDistanceResult result;
-  if (!this->Compute(measured, 0, lattice.dims[2] - 1, nullptr, values, result))
+  if (!this->Compute(measured, 0, lattice.dims[2] - 1, values, result))
   {
     return false;
   }
@@ -326,49 +279,36 @@ bool vtkMeshSignedDistance::FieldOf(vtkDataObject* input, vtkImageData* output)
   output->SetOrigin(lattice.origin.data());
   output->SetSpacing(lattice.spacing.data());
   output->GetPointData()->SetScalars(values);
-  this->AddStatus(result, output);
+  convert::report(this, "Mesh Signed Distance", convert::addSignStatus(result, this->ComputeSign, output));
   return true;
 }
 
 // Each block's field is computed whole in one process; under MPI the blocks are shared out among the
 // pieces by their grids' nodes, or computed where they are when the composite arrives distributed
 // (the other pieces leave a block empty).
-void vtkMeshSignedDistance::ExecuteBlocks(vtkCompositeDataSet* input, vtkInformation* outInfo, vtkCompositeDataSet* output)
+void vtkMeshSignedDistance::ExecuteBlocks(
+  vtkCompositeDataSet* input, vtkInformation* outInfo, vtkCompositeDataSet* output)
 {
   output->Initialize();
-  output->CopyStructure(input);
   const convert::PieceRequest request = convert::pieceRequest(outInfo);
-  vtkSmartPointer<vtkCompositeDataIterator> block = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
-  std::vector<vtkDataSet*> leaves;
-  for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
-  {
-    leaves.push_back(vtkDataSet::SafeDownCast(block->GetCurrentDataObject()));
-  }
-  const std::vector<int> computedOn = convert::piecesOfLeaves(input, leaves, request, this->Controller, [&] {
-    std::vector<double> nodes; // the cost of a block's field
-    for (vtkDataSet* leaf : leaves)
-    {
-      shrinkwrap::GridLattice lattice;
-      const bool placed = leaf && this->ComputeLattice(convert::boundsOf(leaf), lattice);
-      nodes.push_back(placed ? static_cast<double>(lattice.dims[0]) * lattice.dims[1] * lattice.dims[2] : 1.0);
-    }
-    return convert::shareOut(nodes, request.pieces);
-  });
-  const int piece = request.piece;
-  const auto here = static_cast<double>(std::count(computedOn.begin(), computedOn.end(), piece));
-  std::size_t count = 0;
-  int done = 0;
+  const std::vector<vtkDataSet*> leaves = convert::leavesOf(input);
+  const std::vector<int> computedOn =
+    convert::piecesOfLeaves(input, leaves, request, this->Controller, [&] {
+      std::vector<double> nodes; // the cost of a block's field
+      for (vtkDataSet* leaf : leaves)
+      {
+        shrinkwrap::GridLattice lattice;
+        const bool placed = leaf && this->ComputeLattice(convert::boundsOf(leaf), lattice);
+        nodes.push_back(placed ? static_cast<double>(lattice.nodeCount()) : 1.0);
+      }
+      return convert::shareOut(nodes, request.pieces);
+    });
   bool goOn = true; // until a run is aborted or runs out of memory
-  for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem(), ++count)
-  {
-    vtkNew<vtkImageData> field;
-    if (goOn && leaves[count] && computedOn[count] == piece)
-    {
-      this->SetProgressShiftScale(done++ / here, 1 / here); // one progress bar over the blocks
-      goOn = this->FieldOf(leaves[count], field);
-    }
-    output->SetDataSet(block, field);
-  }
+  convert::computeLeaves<vtkImageData>(input, output, computedOn, request.piece,
+    [&](vtkDataSet* leaf, unsigned int, vtkImageData* field, double first, double share) {
+      this->SetProgressShiftScale(first, share); // one progress bar over the blocks
+      goOn = goOn && this->FieldOf(leaf, field);
+    });
   this->SetProgressShiftScale(0, 1);
 }
 
@@ -379,7 +319,7 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
   shrinkwrap::Notes notes;
   shrinkwrap::Status status =
     convert::readTarget(data, this->InputGeometry, { "input", "measured" }, parts, notes);
-  this->Report(notes);
+  convert::report(this, "Mesh Signed Distance", notes);
   if (status && parts.use.polygons)
   {
     status = shrinkwrap::checkSoup(parts.polygons);
@@ -399,11 +339,11 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
   cloud.points.assign(parts.points.begin(), parts.points.end());
   if (!cloud.points.empty())
   {
+    const bool beside = parts.use.polygons;
     vtkOutputWindowDisplayText(
       ("Mesh Signed Distance: the field is the unsigned distance to the nearest of " +
-        std::string(parts.use.polygons ? "the input's polygons and " : "its ") +
-        std::to_string(cloud.points.size()) +
-        (parts.use.polygons ? " points beside them" : " points") +
+        std::string(beside ? "the input's polygons and " : "its ") +
+        std::to_string(cloud.points.size()) + (beside ? " points beside them" : " points") +
         (this->InputGeometry == vtkInputGeometry::AUTOMATIC ? " (it has no polygons)" : "") + ".\n")
         .c_str());
     bounds.extend(shrinkwrap::Box::around(cloud.points));
@@ -411,101 +351,31 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
   return true;
 }
 
-void vtkMeshSignedDistance::Report(const shrinkwrap::Notes& notes)
-{
-  for (const shrinkwrap::Note& note : notes)
-  {
-    if (note.kind == shrinkwrap::Note::Warning)
-    {
-      vtkWarningMacro(<< note.text << ".");
-    }
-    else
-    {
-      vtkOutputWindowDisplayText(("Mesh Signed Distance: " + note.text + ".\n").c_str());
-    }
-  }
-}
 
-shrinkwrap::SignedDistanceSettings vtkMeshSignedDistance::DistanceSettings() const
+vtkMeshSignedDistance::FieldSettings vtkMeshSignedDistance::CoreSettings() const
 {
-  shrinkwrap::SignedDistanceSettings settings;
-  settings.sweep =
-    this->SweepMethod == EIKONAL ? shrinkwrap::SweepMethod::Eikonal : shrinkwrap::SweepMethod::ClosestPoint;
-  settings.bandLayers = this->BandLayers;
-  settings.computeSign = this->ComputeSign;
+  FieldSettings settings;
+  BindProperties(*this, settings,
+    [](const char*, const auto& property, auto& setting) { convert::assign(setting, property); });
   return settings;
 }
 
+// The distances at planes first .. last (convert::computeField); false (reported) when they could
+// not be computed or the run was aborted.
 bool vtkMeshSignedDistance::Compute(const Measured& measured, int first, int last,
-  const shrinkwrap::SlabExchange* exchange, vtkFloatArray* values,
-  shrinkwrap::SignedDistanceResult& result)
+  vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result)
 {
-  const shrinkwrap::TriangleSoup& soup = measured.soup;
-  const shrinkwrap::TriangleSoup& cloud = measured.cloud;
-  const shrinkwrap::GridLattice& lattice = measured.lattice;
-  const shrinkwrap::SignedDistanceSettings settings = this->DistanceSettings();
-  // Under MPI, what must fit is this rank's piece (with a few planes around it), not the grid.
-  const shrinkwrap::GridLattice planes = shrinkwrap::planesOf(lattice, first, last);
-  const int halo = exchange ? settings.bandLayers + 2 : 0;
-  const shrinkwrap::Status fits = shrinkwrap::checkMemory(
-    shrinkwrap::planesOf(lattice, std::max(0, first - halo), std::min(lattice.dims[2] - 1, last + halo)), settings);
-  if (!fits)
+  const shrinkwrap::Status status = convert::computeField(measured, first, last, nullptr,
+    this->CoreSettings().distance, this->ProgressOf(), values, result);
+  return this->Computed(status, result);
+}
+
+bool vtkMeshSignedDistance::Computed(
+  const shrinkwrap::Status& status, const shrinkwrap::SignedDistanceResult& result)
+{
+  if (!status)
   {
-    vtkErrorMacro("Cannot compute the field: " << fits.message() << "; lower Resolution or raise CellSize"
-                                               << (exchange ? ", or run on more MPI ranks." : "."));
-  }
-  if (exchange && !shrinkwrap::everyProcess(*exchange, static_cast<bool>(fits)))
-  {
-    if (fits)
-    {
-      vtkErrorMacro("Cannot compute the field: another MPI rank cannot (see its error).");
-    }
-    return false;
-  }
-  if (!fits)
-  {
-    return false;
-  }
-  values->SetName("SignedDistance");
-  const shrinkwrap::Progress progress([this](double fraction) {
-    this->UpdateProgress(fraction);
-    return !this->GetAbortExecute();
-  });
-  try // the memory estimate can be beaten by a process limit (ulimit -v, a job's cap)
-  {
-    if (!values->SetNumberOfValues(planes.nodeCount()))
-    {
-      throw std::bad_alloc();
-    }
-    shrinkwrap::onAllCores([&] {
-      float* distance = values->GetPointer(0);
-      if (exchange)
-      {
-        const shrinkwrap::Status status = shrinkwrap::computeSlabDistance(
-          soup, cloud.points, lattice, first, last, settings, *exchange, distance, result, progress);
-        if (!status)
-        {
-          throw std::runtime_error(status.message());
-        }
-      }
-      else if (cloud.points.empty())
-        result = shrinkwrap::computeSignedDistance(soup, lattice, settings, distance, progress);
-      else if (soup.triangles.empty())
-        result = shrinkwrap::computePointDistance(cloud.points, lattice, settings, distance, progress);
-      else
-        result = shrinkwrap::computeUnionDistance(soup, cloud.points, lattice, settings, distance, progress);
-    });
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro("Out of memory for a " << lattice.dims[0] << " x " << lattice.dims[1] << " x "
-                                         << lattice.dims[2] << " grid: the process may not allocate it; lower "
-                                            "Resolution or raise CellSize.");
-    return false;
-  }
-  catch (const std::exception& e) // e.g. threads that cannot start under the same limits
-  {
-    vtkErrorMacro("Mesh Signed Distance failed: " << e.what() << ".");
+    vtkErrorMacro(<< status.message() << ".");
     return false;
   }
   if (!result.completed)
@@ -517,42 +387,30 @@ bool vtkMeshSignedDistance::Compute(const Measured& measured, int first, int las
   return true;
 }
 
-void vtkMeshSignedDistance::AddStatus(const shrinkwrap::SignedDistanceResult& result, vtkImageData* output)
+shrinkwrap::Progress vtkMeshSignedDistance::ProgressOf()
 {
-  std::ostringstream status;
-  status << shrinkwrap::signStatus(result, this->ComputeSign != 0);
-  if (shrinkwrap::signNeedsWarning(result, this->ComputeSign != 0))
-  {
-    vtkWarningMacro("The distance field is " << status.str() << ".");
-  }
-  vtkNew<vtkIntArray> isSigned;
-  isSigned->SetName("Signed");
-  isSigned->InsertNextValue(result.isSigned ? 1 : 0);
-  vtkNew<vtkStringArray> statusArray;
-  statusArray->SetName("DistanceStatus");
-  statusArray->InsertNextValue(status.str());
-  output->GetFieldData()->AddArray(isSigned);
-  output->GetFieldData()->AddArray(statusArray);
+  return shrinkwrap::Progress([this](double fraction) {
+    this->UpdateProgress(fraction);
+    return !this->GetAbortExecute();
+  });
 }
+
 
 void vtkMeshSignedDistance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "InputGeometry: " << convert::geometryName(this->InputGeometry) << "\n";
-  os << indent << "BoxScale: " << this->BoxScale << "\n";
-  os << indent << "OffsetFactor: " << this->OffsetFactor << "\n";
+  const FieldSettings unused;
+  BindProperties(*this, unused, [&](const char* name, const auto& property, const auto&) {
+    os << indent;
+    convert::printProperty(os, name, property);
+  });
   os << indent << "GridCellSize: " << this->GridCellSize << "\n";
-  os << indent << "Resolution: " << this->Resolution << "\n";
-  os << indent << "CellSize: " << this->CellSize << "\n";
   os << indent << "UseExplicitGrid: " << this->UseExplicitGrid << "\n";
-  os << indent << "OutputBounds: " << this->OutputBounds[0] << " " << this->OutputBounds[1] << " "
-     << this->OutputBounds[2] << " " << this->OutputBounds[3] << " " << this->OutputBounds[4] << " "
-     << this->OutputBounds[5] << "\n";
-  os << indent << "OutputDimensions: " << this->OutputDimensions[0] << " " << this->OutputDimensions[1] << " "
-     << this->OutputDimensions[2] << "\n";
-  os << indent << "SweepMethod: " << (this->SweepMethod == EIKONAL ? "Eikonal" : "ClosestPoint") << "\n";
-  os << indent << "BandLayers: " << this->BandLayers << "\n";
-  os << indent << "ComputeSign: " << this->ComputeSign << "\n";
+  os << indent;
+  convert::printProperty(os, "OutputBounds", this->OutputBounds);
+  os << indent;
+  convert::printProperty(os, "OutputDimensions", this->OutputDimensions);
   os << indent << "FieldPerBlock: " << this->FieldPerBlock << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
 }

@@ -61,7 +61,9 @@ namespace shrinkwrap
 namespace convert
 {
 struct GatheredInput;
+struct MeasuredInput;
 }
+class Progress;
 struct Box;
 struct GridLattice;
 struct Note;
@@ -234,23 +236,21 @@ private:
   std::unique_ptr<shrinkwrap::convert::GatheredInput> Gathered;
   // The output lattice: explicit, or placed around the bounds of the input's surface.
   shrinkwrap::Status ComputeLattice(const shrinkwrap::Box& surfaceBounds, shrinkwrap::GridLattice& lattice) const;
-  shrinkwrap::SignedDistanceSettings DistanceSettings() const;
+  struct FieldSettings; // the core's settings of the field (placement, distances)
+  FieldSettings CoreSettings() const;
+  template <typename Filter, typename Settings, typename Bind>
+  static void BindProperties(Filter& filter, Settings& settings, Bind&& bind);
   // What InputGeometry measures of the input: its triangles (`soup`) and points (`cloud`, points
   // only), either empty when not measured, with the bounds of both; false (reported) if nothing.
   bool ReadInput(vtkDataObject* input, shrinkwrap::TriangleSoup& soup, shrinkwrap::TriangleSoup& cloud,
     shrinkwrap::Box& bounds);
-  void Report(const std::vector<shrinkwrap::Note>& notes);
-  struct Measured; // the input's triangles and points, and the lattice placed around them
+  using Measured = shrinkwrap::convert::MeasuredInput;
   bool Measure(vtkDataObject* input, Measured& measured); // false (reported) if it cannot
   bool ByPieces(vtkInformation* outInfo) const;
-  bool ComputePieces(bool ready, const Measured& measured, vtkInformation* outInfo, int extent[6],
-    vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
-  // The distances at planes first .. last of the lattice, threaded: all of them, or with `exchange`
-  // this MPI rank's piece, computed with the other ranks; false (reported) when memory ran out or the
-  // run was aborted.
-  bool Compute(const Measured& measured, int first, int last, const shrinkwrap::SlabExchange* exchange,
-    vtkFloatArray* values, shrinkwrap::SignedDistanceResult& result);
-  void AddStatus(const shrinkwrap::SignedDistanceResult& result, vtkImageData* output);
+  bool Compute(const Measured& measured, int first, int last, vtkFloatArray* values,
+    shrinkwrap::SignedDistanceResult& result);
+  bool Computed(const shrinkwrap::Status& status, const shrinkwrap::SignedDistanceResult& result);
+  shrinkwrap::Progress ProgressOf();
   // The whole field of `input` in this process alone, as `output` (empty when it cannot be computed);
   // false when the run was aborted or ran out of memory.
   bool FieldOf(vtkDataObject* input, vtkImageData* output);

@@ -68,7 +68,6 @@
 
 #include "vtkInputGeometry.h" // for InputGeometry's values
 
-#include <functional> // for Execute's start
 #include <memory>     // for the internals
 #include <optional>   // for a field's lattice
 #include <vector>     // for the inputs
@@ -79,12 +78,19 @@ class vtkImageData;
 class vtkMultiProcessController;
 namespace shrinkwrap
 {
+namespace convert
+{
+struct GatheredInput;
+struct WrapInputs;
+class WrapRuns;
+}
 struct GridLattice;
 struct Note;
 class Progress;
 struct WrapPlan;
 struct WrapSettings;
 struct WrapSizes;
+class WrapSession;
 }
 
 class SHRINKWRAPFILTERS_EXPORT vtkShrinkWrapFilter : public vtkPolyDataAlgorithm
@@ -379,12 +385,11 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  // The current session (started by `start` when there is none for the inputs as they are), advanced
-  // to the step asked for, into `output`.
-  void Execute(const std::function<bool()>& start, vtkInformation* outInfo, vtkPolyData* output);
   void ExecuteBlocks(vtkCompositeDataSet* blocks, vtkInformationVector** inputVector, vtkInformation* outInfo,
     vtkCompositeDataSet* output);
   void SetProperties(const shrinkwrap::WrapSettings& settings); // the defaults are stated there
+  template <typename Filter, typename Settings, typename Bind>
+  static void BindProperties(Filter& filter, Settings& settings, Bind&& bind);
 
   int InputGeometry = vtkInputGeometry::AUTOMATIC;
   double TimeStep;
@@ -431,28 +436,19 @@ private:
   double FieldCellSize = 0; // planned in RequestInformation, the run's in RequestData; as are
   double ChosenGapSize = 0; // these two
   double ChosenTargetEdgeLength = 0;
-  // The converted target, the plan, the sessions: everything derived from the inputs and properties.
-  struct vtkInternals;
-  std::unique_ptr<vtkInternals> Internals;
+  // The converted target, the plan, the runs: everything derived from the inputs and properties.
+  std::unique_ptr<shrinkwrap::convert::WrapRuns> Runs;
+  // A distributed target as gathered on this rank (convert::wholeInput).
+  std::unique_ptr<shrinkwrap::convert::GatheredInput> Gathered;
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
-  bool Inputs(const std::vector<vtkDataObject*>& port0, vtkDataObject* port1, vtkDataObject*& target,
-    vtkImageData*& field, bool complain);
-  std::optional<shrinkwrap::GridLattice> FieldLattice(
-    vtkInformationVector** inputVector, vtkImageData* field);
-  bool HasInitialSurface() { return this->GetNumberOfInputConnections(2) > 0; }
-  // The plan for the inputs and properties as they are (null: none; the internals say why).
-  const shrinkwrap::WrapPlan* Plan(
-    vtkDataObject* data, const std::optional<shrinkwrap::GridLattice>& field, bool givenStart);
   // One surface: of the target, or of all a composite target's blocks together.
   void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
-  bool StartSession(vtkDataObject* target, vtkImageData* field, vtkPolyData* initial);
+  void Execute(unsigned int slot, const shrinkwrap::convert::WrapInputs& inputs,
+    vtkInformation* outInfo, vtkPolyData* output);
   void ShowSizes(const shrinkwrap::WrapSizes& sizes);
-  void Report(const std::vector<shrinkwrap::Note>& notes);
   shrinkwrap::Progress ProgressOf(double begin, double end);
-  int StepAsked(vtkInformation* outInfo) const;
-  bool Advance(int step);
-  void WriteOutput(int wanted, bool finished, vtkPolyData* output);
+  bool Advance(shrinkwrap::WrapSession& session, int step);
 };
 
 #endif

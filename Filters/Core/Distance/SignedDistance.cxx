@@ -299,6 +299,19 @@ SignedDistanceResult computeUnionDistance(const TriangleSoup& soup, const std::v
   return result;
 }
 
+SignedDistanceResult computeDistance(const TriangleSoup& soup, const std::vector<Vec3>& points,
+  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance,
+  const Progress& progress)
+{
+  if (points.empty())
+  {
+    return computeSignedDistance(soup, lattice, settings, distance, progress);
+  }
+  return soup.triangles.empty()
+    ? computePointDistance(points, lattice, settings, distance, progress)
+    : computeUnionDistance(soup, points, lattice, settings, distance, progress);
+}
+
 namespace
 {
 std::string gibibytes(double bytes)

@@ -91,6 +91,12 @@ SignedDistanceResult computePointDistance(const PointSource& source, const GridL
 SignedDistanceResult computeUnionDistance(const TriangleSoup& soup, const std::vector<Vec3>& points,
   const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 
+// The field of `soup` and `points` together, by which of them there are: the soup's signed field,
+// the points' unsigned one, or the unsigned distance to the nearer of both.
+SignedDistanceResult computeDistance(const TriangleSoup& soup, const std::vector<Vec3>& points,
+  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance,
+  const Progress& progress = {});
+
 // Why points have no distance field, if they have none: none at all, or NaN, infinite or out-of-range
 // coordinates.
 Status checkPoints(const std::vector<Vec3>& points);

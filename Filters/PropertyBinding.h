@@ -1,0 +1,74 @@
+// Between a filter's properties and the core's settings they stand for: one value at a time, by
+// type: enums as their numbers, a size the settings leave unset (automatic) as 0, a switch as 0 or
+// 1, a pair as two numbers. A filter lists its properties beside their settings once
+// (vtkShrinkWrapFilter::BindProperties) and reads that list both ways and in PrintSelf.
+#ifndef ShrinkWrap_PropertyBinding_h
+#define ShrinkWrap_PropertyBinding_h
+
+#include <algorithm>
+#include <optional>
+#include <ostream>
+#include <type_traits>
+
+namespace shrinkwrap
+{
+namespace convert
+{
+
+template <typename T>
+struct IsOptional : std::false_type
+{
+};
+template <typename T>
+struct IsOptional<std::optional<T>> : std::true_type
+{
+};
+
+template <typename To, typename From>
+void assign(To& to, const From& from)
+{
+  if constexpr (IsOptional<From>::value)
+  {
+    to = from.value_or(0);
+  }
+  else if constexpr (IsOptional<To>::value)
+  {
+    to = from != 0 ? To(from) : To(); // a negative value is the settings' to refuse
+  }
+  else if constexpr (std::is_array_v<To>)
+  {
+    std::copy(from.begin(), from.end(), to);
+  }
+  else if constexpr (std::is_array_v<From>)
+  {
+    std::copy(from, from + to.size(), to.begin());
+  }
+  else
+  {
+    to = static_cast<To>(from);
+  }
+}
+
+// "Name: value" (a pair as two numbers), a line of PrintSelf.
+template <typename T>
+void printProperty(std::ostream& os, const char* name, const T& value)
+{
+  os << name << ":";
+  if constexpr (std::is_array_v<T>)
+  {
+    for (const auto& v : value)
+    {
+      os << " " << v;
+    }
+  }
+  else
+  {
+    os << " " << value;
+  }
+  os << "\n";
+}
+
+} // namespace convert
+} // namespace shrinkwrap
+
+#endif

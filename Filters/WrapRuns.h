@@ -1,0 +1,133 @@
+// What Shrink Wrap keeps between its pipeline's requests: its target as the core takes it, the plan
+// made for it, and the runs that compute the wrap's steps (one for a whole target, one per block of
+// a composite wrapped block by block). Each is kept while the inputs and properties stay as they
+// were (a key: their newest modification time).
+#ifndef ShrinkWrap_WrapRuns_h
+#define ShrinkWrap_WrapRuns_h
+
+#include "Common/Notes.h"
+#include "Common/Status.h"
+#include "Wrap/WrapPlan.h"
+#include "Wrap/WrapSession.h"
+
+#include <vtkType.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+class vtkDataObject;
+class vtkDataSet;
+class vtkInformationVector;
+class vtkImageData;
+class vtkInformation;
+class vtkPolyData;
+
+namespace shrinkwrap
+{
+namespace convert
+{
+
+// A wrap's inputs as the pipeline gives them.
+struct WrapInputs
+{
+  vtkDataObject* target = nullptr; // a dataset, or a composite wrapped as its blocks appended
+  vtkImageData* field = nullptr;   // a distance field given beside it (optional)
+  vtkPolyData* start = nullptr;    // a surface to start from (optional)
+};
+
+// The wrap's inputs on the filter's ports. Port 0 may hold the target and its distance field
+// together (ParaView connects both there when both are selected as Shrink Wrap is created): an image
+// with a SignedDistance point array is then the field, unless port 1 has one. `fieldLattice` is the
+// field's as the pipeline information gives it (RequestInformation comes before the field is
+// computed). Failure when port 0 holds more than one target.
+Status wrapInputs(
+  vtkInformationVector** inputVector, WrapInputs& inputs, std::optional<GridLattice>& fieldLattice);
+
+// The wrap's times: step k at k `timeStep` (0 counts as 1), for `steps` steps, as the output's time
+// steps and range; and the step a request asks for: its time snapped to a step (clamped to the
+// steps there are before rounding: a time far past the end is the last step), else (no time, NaN)
+// the last.
+void advertiseSteps(vtkInformation* outInfo, int steps, double timeStep);
+int stepAsked(vtkInformation* outInfo, int steps, double timeStep);
+
+// The piece that wraps each block (shareOut), by the wrap's expected vertex count: the block's area
+// over L^2 (L as with Remeshing); 1 for a block without polygons (points: no area to go by).
+std::vector<int> piecesOfBlocks(
+  const std::vector<vtkDataSet*>& targets, int pieces, WrapSettings settings);
+
+class WrapRuns
+{
+public:
+  struct Run
+  {
+    std::unique_ptr<WrapSession> session;
+    vtkMTimeType key = 0;
+    double seconds = 0; // computing: fields, start and steps
+  };
+  // The run of a slot: 0 the whole target, 1 + flat index a block of a composite.
+  Run& run(unsigned int slot) { return this->Runs[slot]; }
+  // Forgets the blocks' runs and shares when `key` is not the one they were made for.
+  void keepBlocksFor(vtkMTimeType key);
+  void clear();
+  int computedSteps() const; // over all runs
+
+  // The plan for `target` as it is, with a field of `field`'s lattice and a given start or not, made
+  // once while `key` stays; null when none can be made (`status()` says why). Its target's notes
+  // (what of it is wrapped) are in `targetNotes()`.
+  const WrapPlan* plan(vtkDataObject* target, const std::optional<GridLattice>& field,
+    bool givenStart, vtkMTimeType key, int inputGeometry, const WrapSettings& settings);
+  const Status& status() const { return this->Planned.status; }
+  const Notes& targetNotes() const { return this->Converted.notes; }
+
+  // Starts `run` on `inputs` (Wrap.h: the plan, then its fields, start and session); false, with
+  // `status`, when it cannot. Notes: what the user should know.
+  bool start(Run& run, const WrapInputs& inputs, vtkMTimeType key, int inputGeometry,
+    const WrapSettings& settings, Notes& notes, Status& status);
+
+  // The piece that wraps each block, as `share()` gives it, made once per key and piece count.
+  template <typename Share>
+  const std::vector<int>& blockPieces(int pieces, Share&& share)
+  {
+    if (this->Shares.empty() || this->SharesOf != pieces)
+    {
+      this->Shares = share();
+      this->SharesOf = pieces;
+    }
+    return this->Shares;
+  }
+
+private:
+  // The target as the core takes it, converted once while the data and Input Geometry stay.
+  struct ConvertedTarget
+  {
+    const vtkDataObject* data = nullptr;
+    vtkMTimeType key = 0; // the data's
+    int geometry = 0;
+    Status status;
+    WrapTarget target;
+    Notes notes;
+  } Converted;
+  const ConvertedTarget& TargetOf(vtkDataObject* data, int inputGeometry);
+
+  struct PlannedWrap
+  {
+    vtkMTimeType key = 0;
+    const vtkDataObject* data = nullptr;
+    std::optional<GridLattice> field;
+    bool givenStart = false;
+    Status status;
+    WrapPlan plan;
+  } Planned;
+
+  std::map<unsigned int, Run> Runs;
+  vtkMTimeType BlocksKey = 0;
+  std::vector<int> Shares;
+  int SharesOf = 0;
+};
+
+} // namespace convert
+} // namespace shrinkwrap
+
+#endif

@@ -5,6 +5,8 @@
 #ifndef ShrinkWrap_PropertyBinding_h
 #define ShrinkWrap_PropertyBinding_h
 
+#include <vtkIndent.h>
+
 #include <algorithm>
 #include <optional>
 #include <ostream>
@@ -66,6 +68,15 @@ void printProperty(std::ostream& os, const char* name, const T& value)
     os << " " << value;
   }
   os << "\n";
+}
+
+// A bind for BindProperties that prints each property as a line of PrintSelf.
+inline auto propertyPrinter(std::ostream& os, vtkIndent indent)
+{
+  return [&os, indent](const char* name, const auto& property, const auto&) {
+    os << indent;
+    printProperty(os, name, property);
+  };
 }
 
 } // namespace convert

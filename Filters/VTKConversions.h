@@ -17,7 +17,9 @@
 #include "Common/TriangleSoup.h"
 
 #include <vtkCompositeDataSet.h>
+#include <vtkDemandDrivenPipeline.h>
 #include <vtkInformation.h>
+#include <vtkInformationVector.h>
 #include <vtkSmartPointer.h>
 
 #include <string>
@@ -109,18 +111,27 @@ Notes addSignStatus(const SignedDistanceResult& result, bool asked, vtkImageData
 // prefixed by `filter` ("Shrink Wrap: ...").
 void report(vtkObject* self, const char* filter, const std::vector<Note>& notes);
 
-// A filter's output object (REQUEST_DATA_OBJECT): a composite of the same kind as `composite`, or,
-// without one, a `Leaf`; the output is kept when it is of that kind already.
+// A filter's output object, when `request` asks for it (REQUEST_DATA_OBJECT; then true): a
+// composite of the same kind as `composite`, or, without one, a `Leaf`; the output is kept when it
+// is of that kind already.
 template <typename Leaf>
-void makeOutput(vtkInformation* outInfo, vtkCompositeDataSet* composite)
+bool makeOutput(vtkInformation* request, vtkInformationVector* outputs, vtkCompositeDataSet* composite)
 {
-  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
-  if (composite ? !output || std::string(output->GetClassName()) != composite->GetClassName() : !Leaf::SafeDownCast(output))
+  if (!request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
   {
-    vtkSmartPointer<vtkDataObject> made = composite ? vtkSmartPointer<vtkDataObject>::Take(composite->NewInstance())
-                                                    : vtkSmartPointer<vtkDataObject>(vtkSmartPointer<Leaf>::New());
+    return false;
+  }
+  vtkInformation* outInfo = outputs->GetInformationObject(0);
+  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+  if (composite ? !output || std::string(output->GetClassName()) != composite->GetClassName()
+                : !Leaf::SafeDownCast(output))
+  {
+    vtkSmartPointer<vtkDataObject> made = composite
+      ? vtkSmartPointer<vtkDataObject>::Take(composite->NewInstance())
+      : vtkSmartPointer<vtkDataObject>(vtkSmartPointer<Leaf>::New());
     outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
   }
+  return true;
 }
 
 } // namespace convert

@@ -3,25 +3,25 @@
 #include "Common/Parallel.h"
 #include "Distance/SignedDistance.h"
 #include "Distance/SlabDistance.h"
-#include "VTKConversions.h"
+#include "FieldRun.h"
 #include "PropertyBinding.h"
 #include "RankInputs.h"
-#include "FieldRun.h"
 #include "SlabPieces.h"
 #include "TargetInput.h"
+#include "VTKConversions.h"
 #include "vtkInputGeometry.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkExtentTranslator.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
-#include "vtkInformationVector.h"
-#include "vtkExtentTranslator.h"
 #include "vtkInformationIntegerRequestKey.h"
+#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
@@ -32,18 +32,17 @@
 #include "vtkStringArray.h"
 
 #include <algorithm>
-#include <cstring>
 #include <array>
-#include <vector>
+#include <cstring>
 #include <new>
-#include <stdexcept>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkMeshSignedDistance);
 
 namespace convert = shrinkwrap::convert;
-
 
 // The core's settings that the properties stand for.
 struct vtkMeshSignedDistance::FieldSettings
@@ -85,38 +84,23 @@ vtkCxxSetObjectMacro(vtkMeshSignedDistance, Controller, vtkMultiProcessControlle
 
 int vtkMeshSignedDistance::FillInputPortInformation(int, vtkInformation* info)
 {
-  // Composite inputs are taken whole (one field of all their meshes): left to the composite pipeline,
-  // they would run once per block.
+  // Composite inputs are taken whole (one field of all their meshes): left to the composite
+  // pipeline, they would run once per block.
   info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
 
-int vtkMeshSignedDistance::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject"); // an image, or a composite of them
-  return 1;
-}
-
 vtkTypeBool vtkMeshSignedDistance::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
-  {
-    return this->RequestDataObject(request, inputVector, outputVector);
-  }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
-}
-
-// FieldPerBlock with a composite input gives a composite of the same kind (a field per block),
-// anything else an image.
-int vtkMeshSignedDistance::RequestDataObject(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  convert::makeOutput<vtkImageData>(outputVector->GetInformationObject(0),
-    this->FieldPerBlock ? vtkCompositeDataSet::GetData(inputVector[0], 0) : nullptr);
-  return 1;
+  // FieldPerBlock with a composite input gives a composite of the same kind (a field per block),
+  // anything else an image.
+  vtkCompositeDataSet* blocks =
+    this->FieldPerBlock ? vtkCompositeDataSet::GetData(inputVector[0], 0) : nullptr;
+  return convert::makeOutput<vtkImageData>(request, outputVector, blocks) ||
+    this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
 shrinkwrap::Status vtkMeshSignedDistance::ComputeLattice(
@@ -127,8 +111,8 @@ shrinkwrap::Status vtkMeshSignedDistance::ComputeLattice(
     shrinkwrap::Box box; // as given: inverted bounds are an error, not swapped
     box.min = shrinkwrap::Vec3(this->OutputBounds[0], this->OutputBounds[2], this->OutputBounds[4]);
     box.max = shrinkwrap::Vec3(this->OutputBounds[1], this->OutputBounds[3], this->OutputBounds[5]);
-    return shrinkwrap::explicitGrid(
-      box, { this->OutputDimensions[0], this->OutputDimensions[1], this->OutputDimensions[2] }, lattice);
+    return shrinkwrap::explicitGrid(box,
+      { this->OutputDimensions[0], this->OutputDimensions[1], this->OutputDimensions[2] }, lattice);
   }
   return shrinkwrap::placeGrid(surfaceBounds, this->CoreSettings().placement, lattice);
 }
@@ -137,8 +121,8 @@ int vtkMeshSignedDistance::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   // Downstream filters (slices, contours, streaming) need the grid now. A grid placed around the
-  // input needs the input's bounds, so the input is brought up to date here; RequestData derives the
-  // same lattice from the same bounds.
+  // input needs the input's bounds, so the input is brought up to date here; RequestData derives
+  // the same lattice from the same bounds.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
   this->GridCellSize = 0;
@@ -152,7 +136,8 @@ int vtkMeshSignedDistance::RequestInformation(
     vtkAlgorithm* producer = this->GetInputAlgorithm(0, 0);
     const int port = this->GetInputConnection(0, 0)->GetIndex();
     producer->UpdatePiece(0, 1, 0);
-    vtkDataObject* input = convert::wholeInput(producer->GetOutputDataObject(port), this->Controller, this->Gathered);
+    vtkDataObject* input =
+      convert::wholeInput(producer->GetOutputDataObject(port), this->Controller, this->Gathered);
     // The bounds of what ReadInput will measure.
     const shrinkwrap::Box polygons = convert::surfaceBounds(convert::polygonMeshes(input).meshes);
     const convert::Geometry use = convert::chooseGeometry(this->InputGeometry, !polygons.empty());
@@ -169,7 +154,8 @@ int vtkMeshSignedDistance::RequestInformation(
   if (this->ComputeLattice(bounds, lattice))
   {
     this->GridCellSize = lattice.spacing.maxCoeff();
-    const int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
+    const int extent[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0,
+      lattice.dims[2] - 1 };
     outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
     outInfo->Set(vtkDataObject::ORIGIN(), lattice.origin.data(), 3);
     outInfo->Set(vtkDataObject::SPACING(), lattice.spacing.data(), 3);
@@ -213,8 +199,8 @@ int vtkMeshSignedDistance::RequestData(
   }
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
-  vtkDataObject* input =
-    convert::wholeInput(vtkDataObject::GetData(inputVector[0], 0), this->Controller, this->Gathered);
+  vtkDataObject* input = convert::wholeInput(
+    vtkDataObject::GetData(inputVector[0], 0), this->Controller, this->Gathered);
   Measured measured;
   const bool ready = this->Measure(input, measured);
   const shrinkwrap::GridLattice& lattice = measured.lattice;
@@ -223,9 +209,9 @@ int vtkMeshSignedDistance::RequestData(
   shrinkwrap::SignedDistanceResult result;
   const bool byPieces = this->ByPieces(outInfo);
   const bool computed = byPieces
-    ? this->Computed(convert::computePieces(this->Controller, ready, measured,
-                       this->CoreSettings().distance, this->ProgressOf(), outInfo, extent, values,
-                       result),
+    ? this->Computed(
+        convert::computePieces(this->Controller, ready, measured, this->CoreSettings().distance,
+          this->ProgressOf(), outInfo, extent, values, result),
         result)
     : ready && this->Compute(measured, 0, lattice.dims[2] - 1, values, result);
   if (!computed)
@@ -242,11 +228,13 @@ int vtkMeshSignedDistance::RequestData(
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
     output->Crop(extent);
   }
-  if (byPieces && outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) > 0)
+  if (byPieces &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) > 0)
   {
     convert::markGhosts(lattice, outInfo, output);
   }
-  convert::report(this, "Mesh Signed Distance", convert::addSignStatus(result, this->ComputeSign, output));
+  convert::report(
+    this, "Mesh Signed Distance", convert::addSignStatus(result, this->ComputeSign, output));
   return 1;
 }
 
@@ -258,7 +246,8 @@ bool vtkMeshSignedDistance::ByPieces(vtkInformation* outInfo) const
   return controller && controller->GetNumberOfProcesses() > 1 &&
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) ==
     controller->GetNumberOfProcesses() &&
-    this->SweepMethod == CLOSEST_POINT && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
+    this->SweepMethod == CLOSEST_POINT &&
+    outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
 }
 
 bool vtkMeshSignedDistance::FieldOf(vtkDataObject* input, vtkImageData* output)
@@ -279,13 +268,14 @@ bool vtkMeshSignedDistance::FieldOf(vtkDataObject* input, vtkImageData* output)
   output->SetOrigin(lattice.origin.data());
   output->SetSpacing(lattice.spacing.data());
   output->GetPointData()->SetScalars(values);
-  convert::report(this, "Mesh Signed Distance", convert::addSignStatus(result, this->ComputeSign, output));
+  convert::report(
+    this, "Mesh Signed Distance", convert::addSignStatus(result, this->ComputeSign, output));
   return true;
 }
 
-// Each block's field is computed whole in one process; under MPI the blocks are shared out among the
-// pieces by their grids' nodes, or computed where they are when the composite arrives distributed
-// (the other pieces leave a block empty).
+// Each block's field is computed whole in one process; under MPI the blocks are shared out among
+// the pieces by their grids' nodes, or computed where they are when the composite arrives
+// distributed (the other pieces leave a block empty).
 void vtkMeshSignedDistance::ExecuteBlocks(
   vtkCompositeDataSet* input, vtkInformation* outInfo, vtkCompositeDataSet* output)
 {
@@ -351,7 +341,6 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
   return true;
 }
 
-
 vtkMeshSignedDistance::FieldSettings vtkMeshSignedDistance::CoreSettings() const
 {
   FieldSettings settings;
@@ -395,22 +384,23 @@ shrinkwrap::Progress vtkMeshSignedDistance::ProgressOf()
   });
 }
 
+int vtkMeshSignedDistance::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject"); // an image, or a composite of them
+  return 1;
+}
 
 void vtkMeshSignedDistance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "InputGeometry: " << convert::geometryName(this->InputGeometry) << "\n";
+  const auto print = convert::propertyPrinter(os, indent);
+  print("InputGeometry", convert::geometryName(this->InputGeometry), 0);
+  print("UseExplicitGrid", this->UseExplicitGrid, 0);
+  print("OutputBounds", this->OutputBounds, 0);
+  print("OutputDimensions", this->OutputDimensions, 0);
   const FieldSettings unused;
-  BindProperties(*this, unused, [&](const char* name, const auto& property, const auto&) {
-    os << indent;
-    convert::printProperty(os, name, property);
-  });
-  os << indent << "GridCellSize: " << this->GridCellSize << "\n";
-  os << indent << "UseExplicitGrid: " << this->UseExplicitGrid << "\n";
-  os << indent;
-  convert::printProperty(os, "OutputBounds", this->OutputBounds);
-  os << indent;
-  convert::printProperty(os, "OutputDimensions", this->OutputDimensions);
-  os << indent << "FieldPerBlock: " << this->FieldPerBlock << "\n";
-  os << indent << "Controller: " << this->Controller << "\n";
+  BindProperties(*this, unused, print);
+  print("GridCellSize", this->GridCellSize, 0);
+  print("FieldPerBlock", this->FieldPerBlock, 0);
+  print("Controller", this->Controller, 0);
 }

@@ -206,14 +206,14 @@ protected:
   vtkMeshSignedDistance();
   ~vtkMeshSignedDistance() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  // The pipeline's passes (ProcessRequest also makes the output object), then the ports.
   vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
-  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
 
   int InputGeometry = vtkInputGeometry::AUTOMATIC;
   // Defaults: the constructor takes them from the core's settings structs, where they are stated once.

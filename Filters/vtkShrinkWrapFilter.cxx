@@ -65,36 +65,34 @@ template <typename Filter, typename Settings, typename Bind>
 void vtkShrinkWrapFilter::BindProperties(Filter& f, Settings& s, Bind&& bind)
 {
   auto& e = s.evolution;
-  bind("TimeStep", f.TimeStep, e.timeStep);
-  bind("NumberOfSteps", f.NumberOfSteps, s.steps);
-  bind("SubdivisionLevel", f.SubdivisionLevel, s.start.subdivision);
-  bind("C1", f.C1, e.C1);
-  bind("C2", f.C2, e.C2);
-  bind("C", f.C, e.C);
-  bind("D", f.D, e.D);
-  bind("TangentialRedistribution", f.TangentialRedistribution, e.redistribution);
-  bind("OmegaAngle", f.OmegaAngle, e.omegaAngle);
-  bind("OmegaVolume", f.OmegaVolume, e.omegaVolume);
-  bind("RhoA", f.RhoA, e.rhoA);
-  bind("DistanceWeighting", f.DistanceWeighting, e.distanceWeight);
-  bind("EdgeFlips", f.EdgeFlips, e.edgeFlips);
-  bind("EdgeCollapses", f.EdgeCollapses, e.edgeCollapses);
-  bind("CoverRims", f.CoverRims, e.rims.cover);
-  bind("FitFacets", f.FitFacets, e.facetFit);
-  bind("CreaseAngle", f.CreaseAngle, e.rims.creaseAngle);
-  bind("FlipDihedralLimit", f.FlipDihedralLimit, e.flips.maxDihedral);
-  bind("StartingShape", f.StartingShape, s.start.shape);
-  bind("StartOffset", f.StartOffset, s.start.offset);
-  bind("GapSize", f.GapSize, s.gapSize);
-  bind("CloseHoles", f.CloseHoles, s.closeHoles);
-  bind("Remeshing", f.Remeshing, s.remeshing);
-  bind("TargetEdgeLength", f.TargetEdgeLength, s.targetEdgeLength);
-  bind("EdgeLengthRange", f.EdgeLengthRange, s.edgeLengthRange);
-  bind("InitialRelaxation", f.InitialRelaxation, s.start.relaxation);
+  // The run, and eqs. (3) and (4).
+  bind("NumberOfSteps", f.NumberOfSteps, s.steps), bind("TimeStep", f.TimeStep, e.timeStep);
+  bind("C1", f.C1, e.C1), bind("C2", f.C2, e.C2), bind("C", f.C, e.C), bind("D", f.D, e.D);
   bind("AutomaticScaling", f.AutomaticScaling, s.automaticScaling);
   bind("SolverTolerance", f.SolverTolerance, e.solverTolerance);
+  // The tangential redistribution (Section 2.3, eq. (10)).
+  bind("TangentialRedistribution", f.TangentialRedistribution, e.redistribution);
+  bind("OmegaAngle", f.OmegaAngle, e.omegaAngle), bind("OmegaVolume", f.OmegaVolume, e.omegaVolume);
+  bind("DistanceWeighting", f.DistanceWeighting, e.distanceWeight), bind("RhoA", f.RhoA, e.rhoA);
+  // The sizes, the field and the cache.
+  bind("GapSize", f.GapSize, s.gapSize), bind("CloseHoles", f.CloseHoles, s.closeHoles);
+  bind("TargetEdgeLength", f.TargetEdgeLength, s.targetEdgeLength);
+  bind("EdgeLengthRange", f.EdgeLengthRange, s.edgeLengthRange);
   bind("Resolution", f.Resolution, s.resolution);
   bind("CacheMemoryLimit", f.CacheMemoryLimit, s.cacheMiB);
+  // The start.
+  bind("StartingShape", f.StartingShape, s.start.shape),
+    bind("StartOffset", f.StartOffset, s.start.offset);
+  bind("SubdivisionLevel", f.SubdivisionLevel, s.start.subdivision);
+  bind("InitialRelaxation", f.InitialRelaxation, s.start.relaxation);
+  // The connectivity edits and the landing.
+  bind("Remeshing", f.Remeshing, s.remeshing);
+  bind("EdgeFlips", f.EdgeFlips, e.edgeFlips),
+    bind("FlipDihedralLimit", f.FlipDihedralLimit, e.flips.maxDihedral);
+  bind("EdgeCollapses", f.EdgeCollapses, e.edgeCollapses);
+  bind("CoverRims", f.CoverRims, e.rims.cover),
+    bind("CreaseAngle", f.CreaseAngle, e.rims.creaseAngle);
+  bind("FitFacets", f.FitFacets, e.facetFit);
 }
 
 void vtkShrinkWrapFilter::SetProperties(const WrapSettings& settings)
@@ -144,21 +142,11 @@ int vtkShrinkWrapFilter::FillOutputPortInformation(int, vtkInformation* info)
 vtkTypeBool vtkShrinkWrapFilter::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
-  {
-    return this->RequestDataObject(request, inputVector, outputVector);
-  }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
-}
-
-// A composite target gives a composite of the same kind (a wrap per block), anything else a surface.
-int vtkShrinkWrapFilter::RequestDataObject(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  vtkCompositeDataSet* composite =
+  // A composite target gives a composite of the same kind (a wrap per block), else a surface.
+  vtkCompositeDataSet* blocks =
     this->WrapBlocksTogether ? nullptr : convert::compositeOf(inputVector[0]);
-  convert::makeOutput<vtkPolyData>(outputVector->GetInformationObject(0), composite);
-  return 1;
+  return convert::makeOutput<vtkPolyData>(request, outputVector, blocks) ||
+    this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
 int vtkShrinkWrapFilter::ComputePipelineMTime(vtkInformation* request,
@@ -180,7 +168,8 @@ int vtkShrinkWrapFilter::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // Every evolution step is a time step of the output.
-  convert::advertiseSteps(outputVector->GetInformationObject(0), this->NumberOfSteps, this->TimeStep);
+  convert::advertiseSteps(
+    outputVector->GetInformationObject(0), this->NumberOfSteps, this->TimeStep);
   // ParaView reads information properties after RequestInformation, not after RequestData: the
   // panel's sizes are planned here from the inputs as they stand (0 while the target has not been
   // computed, and for a composite wrapped block by block); RequestData then shows the run's.
@@ -227,7 +216,8 @@ int vtkShrinkWrapFilter::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
   output->Initialize();
-  vtkCompositeDataSet* blocks = this->WrapBlocksTogether ? nullptr : convert::compositeOf(inputVector[0]);
+  vtkCompositeDataSet* blocks =
+    this->WrapBlocksTogether ? nullptr : convert::compositeOf(inputVector[0]);
   this->SetProgressShiftScale(0, 1); // (a run that threw may have left a block's share)
   try // memory can run out below any estimate (a process limit, a job's cap)
   {
@@ -277,8 +267,9 @@ void vtkShrinkWrapFilter::ExecuteBlocks(vtkCompositeDataSet* blocks,
   const std::vector<int> wrappedOn =
     convert::piecesOfLeaves(blocks, targets, request, this->Controller, [&] {
       return this->Runs->blockPieces(request.pieces, [&] {
-        return request.pieces > 1 ? convert::piecesOfBlocks(targets, request.pieces, this->CoreSettings())
-                                  : std::vector<int>(targets.size(), 0);
+        return request.pieces > 1
+          ? convert::piecesOfBlocks(targets, request.pieces, this->CoreSettings())
+          : std::vector<int>(targets.size(), 0);
       });
     });
   convert::computeLeaves<vtkPolyData>(blocks, output, wrappedOn, request.piece,
@@ -289,7 +280,6 @@ void vtkShrinkWrapFilter::ExecuteBlocks(vtkCompositeDataSet* blocks,
   this->SetProgressShiftScale(0, 1);
   this->ShowSizes({}); // each block had sizes of its own
 }
-
 
 // Every rank takes part (the target is made whole on each); piece 0 wraps it, under MPI the other
 // pieces are empty.
@@ -303,13 +293,13 @@ void vtkShrinkWrapFilter::ExecuteWhole(
   {
     vtkErrorMacro(<< one.message() << ".");
   }
-  inputs.target = convert::wholeInput(one ? inputs.target : nullptr, this->Controller, this->Gathered);
+  inputs.target =
+    convert::wholeInput(one ? inputs.target : nullptr, this->Controller, this->Gathered);
   if (one && convert::pieceRequest(outInfo).piece == 0)
   {
     this->Execute(0, inputs, outInfo, output);
   }
 }
-
 
 shrinkwrap::Progress vtkShrinkWrapFilter::ProgressOf(double begin, double end)
 {
@@ -364,11 +354,13 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
     }
   }
   // The pipeline takes an execution as up to date even when a property changed while it ran (a
-  // panel edit, a script's callback): RunAgain makes the next request run again, with the new values.
+  // panel edit, a script's callback): RunAgain makes the next request run again, with the new
+  // values.
   if (this->SessionKey() != key)
   {
     this->RunAgain = true;
-    vtkWarningMacro("Properties or inputs changed during the run; they apply from the next update.");
+    vtkWarningMacro(
+      "Properties or inputs changed during the run; they apply from the next update.");
   }
 }
 
@@ -403,10 +395,7 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "InputGeometry: " << convert::geometryName(this->InputGeometry) << "\n";
   const WrapSettings unused;
-  BindProperties(*this, unused, [&](const char* name, const auto& property, const auto&) {
-    os << indent;
-    convert::printProperty(os, name, property);
-  });
+  BindProperties(*this, unused, convert::propertyPrinter(os, indent));
   os << indent << "WrapBlocksTogether: " << this->WrapBlocksTogether << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "FieldCellSize: " << this->FieldCellSize << "\n";

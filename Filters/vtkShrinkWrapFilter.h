@@ -379,7 +379,6 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
-  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int ComputePipelineMTime(vtkInformation* request, vtkInformationVector** inInfoVec,
     vtkInformationVector* outInfoVec, int requestFromOutputPort, vtkMTimeType* mtime) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

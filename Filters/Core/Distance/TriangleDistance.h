@@ -29,6 +29,35 @@ struct TrianglePoint
   Feature feature;
 };
 
+namespace detail
+{
+// Ericson's tests at corner q of a triangle with corner a, edge e = q - a and other edge f from a:
+// p's offset from q projected on e and f, whether p lies in q's vertex region, and the barycentric
+// numerator v that, with those projections at a (ea, fa), says whether it lies in edge e's region.
+struct Corner
+{
+  double e, f, v;
+  bool vertex, edge;
+};
+
+inline Corner corner(const Vec3& e, const Vec3& f, const Vec3& qp, double ea, double fa)
+{
+  Corner c;
+  c.e = e.dot(qp);
+  c.f = f.dot(qp);
+  c.vertex = c.e >= 0 && c.f <= c.e;
+  c.v = ea * c.f - c.e * fa;
+  c.edge = c.v <= 0 && ea >= 0 && c.e <= 0;
+  return c;
+}
+
+// The point t / length of the way along `edge` from `from` (from itself on a degenerate edge).
+inline Vec3 alongEdge(const Vec3& from, const Vec3& edge, double t, double length)
+{
+  return length > 0 ? Vec3(from + (t / length) * edge) : from;
+}
+} // namespace detail
+
 inline TrianglePoint closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
@@ -37,48 +66,42 @@ inline TrianglePoint closestPointOnTriangle(const Vec3& p, const Vec3& a, const 
   {
     return { a, Feature::Vertex0 };
   }
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3)
+  const detail::Corner atB = detail::corner(ab, ac, p - b, d1, d2); // d3, d4 and vc of Ericson's
+  if (atB.vertex)
   {
     return { b, Feature::Vertex1 };
   }
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+  if (atB.edge)
   {
-    const double denom = d1 - d3;
-    return { denom > 0 ? Vec3(a + (d1 / denom) * ab) : a, Feature::Edge01 };
+    return { detail::alongEdge(a, ab, d1, d1 - atB.e), Feature::Edge01 };
   }
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6)
+  const detail::Corner atC = detail::corner(ac, ab, p - c, d2, d1); // d6, d5 and vb
+  if (atC.vertex)
   {
     return { c, Feature::Vertex2 };
   }
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+  if (atC.edge)
   {
-    const double denom = d2 - d6;
-    return { denom > 0 ? Vec3(a + (d2 / denom) * ac) : a, Feature::Edge20 };
+    return { detail::alongEdge(a, ac, d2, d2 - atC.e), Feature::Edge20 };
   }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  const double va = atB.e * atC.e - atC.f * atB.f;
+  const double toB = atB.f - atB.e, toC = atC.f - atC.e; // d4 - d3, d5 - d6
+  if (va <= 0 && toB >= 0 && toC >= 0)
   {
-    const double denom = (d4 - d3) + (d5 - d6);
-    return { denom > 0 ? Vec3(b + ((d4 - d3) / denom) * (c - b)) : b, Feature::Edge12 };
+    return { detail::alongEdge(b, c - b, toB, toB + toC), Feature::Edge12 };
   }
-  const double sum = va + vb + vc;
+  const double sum = va + atC.v + atB.v;
   if (!(sum > 0))
   {
     // Degenerate (collinear) triangle that slipped through the tests above: nearest corner.
-    const double da = ap.squaredNorm(), db = bp.squaredNorm(), dc = cp.squaredNorm();
+    const double da = ap.squaredNorm(), db = (p - b).squaredNorm(), dc = (p - c).squaredNorm();
     if (da <= db && da <= dc)
     {
       return { a, Feature::Vertex0 };
     }
     return db <= dc ? TrianglePoint{ b, Feature::Vertex1 } : TrianglePoint{ c, Feature::Vertex2 };
   }
-  const double v = vb / sum, w = vc / sum;
+  const double v = atC.v / sum, w = atB.v / sum;
   return { a + v * ab + w * ac, Feature::Face };
 }
 

@@ -41,48 +41,58 @@ bool flipGainsAngle(const std::vector<Vec3>& x, int i, int j, int c, int d, doub
   return after >= before + minGain;
 }
 
-// Over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j). The rings describe the
-// connectivity before the pass, hence one flip per vertex.
+FlipPass::FlipPass(const SurfaceMesh& mesh, const FlipSettings& settings)
+  : Settings(settings)
+  , X(mesh.points())
+  , CosMax(std::cos(settings.maxDihedral * M_PI / 180.0))
+  , Triangles(mesh.triangles())
+  , Guard(X, Triangles, settings.guardOnlyIn)
+  , Touched(mesh.vertexCount(), 0)
+{
+}
+
+bool FlipPass::free(const SurfaceMesh& mesh, int i, int j, int c, int d) const
+{
+  const std::vector<char>& t = this->Touched;
+  return !(t[i] || t[j] || t[c] || t[d] || mesh.valence(i) <= 3 || mesh.valence(j) <= 3 || c == d);
+}
+
+bool FlipPass::flip(SurfaceMesh& mesh, int i, int j, int c, int d)
+{
+  const bool guarded = this->Settings.avoidCrossings;
+  if (!flipKeepsShape(this->X, i, j, c, d, this->CosMax) ||
+    (guarded && this->Guard.flipCrosses(i, j, c, d)) || !mesh.flip(i, j))
+  {
+    return false;
+  }
+  this->Touched[i] = this->Touched[j] = this->Touched[c] = this->Touched[d] = 1;
+  ++this->Flips;
+  if (guarded)
+  {
+    this->Guard.addFlip(i, j, c, d);
+  }
+  return true;
+}
+
+// Over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j).
 int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
 {
-  const std::vector<Vec3>& x = mesh.points();
-  const double cosMax = std::cos(settings.maxDihedral * M_PI / 180.0);
-  const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // flips change the mesh's own
-  CrossingGuard guard(x, triangles, settings.guardOnlyIn);
-  std::vector<char> touched(mesh.vertexCount(), 0);
-  int flips = 0;
+  FlipPass pass(mesh, settings);
   for (int i = 0; i < mesh.vertexCount(); ++i)
   {
     for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
     {
       const int j = mesh.ring(p);
       const int c = mesh.ring(mesh.next(i, p)), d = mesh.ring(mesh.previous(i, p));
-      if (j < i || touched[i] || touched[j] || touched[c] || touched[d] || mesh.valence(i) <= 3 ||
-        mesh.valence(j) <= 3 || c == d)
-      {
-        continue;
-      }
       // (c, d) already an edge: the flip would pinch the surface.
-      if (!flipGainsAngle(x, i, j, c, d, settings.minGain) || mesh.ringEntry(c, d) >= 0)
+      if (j > i && pass.free(mesh, i, j, c, d) &&
+        flipGainsAngle(pass.points(), i, j, c, d, settings.minGain) && mesh.ringEntry(c, d) < 0)
       {
-        continue;
-      }
-      if (!flipKeepsShape(x, i, j, c, d, cosMax) || (settings.avoidCrossings && guard.flipCrosses(i, j, c, d)))
-      {
-        continue;
-      }
-      if (mesh.flip(i, j))
-      {
-        touched[i] = touched[j] = touched[c] = touched[d] = 1;
-        ++flips;
-        if (settings.avoidCrossings)
-        {
-          guard.addFlip(i, j, c, d);
-        }
+        pass.flip(mesh, i, j, c, d);
       }
     }
   }
-  return mesh.commit() ? flips : 0;
+  return mesh.commit() ? pass.flips() : 0;
 }
 
 } // namespace shrinkwrap

@@ -7,6 +7,7 @@
 #define ShrinkWrap_EdgeFlips_h
 
 #include "Common/Box.h"
+#include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceMesh.h"
 
 #include <array>
@@ -32,6 +33,31 @@ bool flipKeepsShape(const std::vector<Vec3>& x, int i, int j, int c, int d, doub
 // Whether flipping edge (i, j) of triangles (i, j, c) and (i, d, j) to (c, d) raises the pair's smallest
 // angle by at least minGain (radians): the test of flipEdges, before its checks of shape and crossings.
 bool flipGainsAngle(const std::vector<Vec3>& x, int i, int j, int c, int d, double minGain);
+
+// One pass of flips, decided from the surface as the pass began (the rings stay so until the commit):
+// a vertex takes part in at most one flip, and a flip is refused that would leave a vertex of
+// valence 3 or less, pinch the surface, change its shape or cross it.
+class FlipPass
+{
+public:
+  FlipPass(const SurfaceMesh& mesh, const FlipSettings& settings);
+  // Whether edge (i, j), c and d the far corners of its triangles, may flip before the shape and
+  // crossing checks: no end touched yet, both ends of valence above 3.
+  bool free(const SurfaceMesh& mesh, int i, int j, int c, int d) const;
+  // Flips (i, j) to (c, d) where it keeps the shape and crosses nothing; true when it did.
+  bool flip(SurfaceMesh& mesh, int i, int j, int c, int d);
+  const std::vector<Vec3>& points() const { return this->X; }
+  int flips() const { return this->Flips; }
+
+private:
+  const FlipSettings& Settings;
+  const std::vector<Vec3>& X;
+  double CosMax;
+  std::vector<std::array<int, 3>> Triangles; // as the pass began: flips change the mesh's own
+  CrossingGuard Guard;
+  std::vector<char> Touched;
+  int Flips = 0;
+};
 
 // One pass of flips over the edges of `mesh` (a vertex takes part in at most one flip; the evolver
 // runs a pass after every step), committed. Returns the number of flips.

@@ -177,42 +177,28 @@ int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, co
 
 int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings)
 {
-  const std::vector<Vec3>& x = mesh.points();
-  const double cosMax = std::cos(settings.maxDihedral * M_PI / 180.0);
-  const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // flips change the mesh's own
-  CrossingGuard guard(x, triangles, settings.guardOnlyIn);
-  std::vector<char> touched(mesh.vertexCount(), 0);
   auto deviation = [](int a, int b, int c, int d) {
     return std::abs(a - 6) + std::abs(b - 6) + std::abs(c - 6) + std::abs(d - 6);
   };
-  int flips = 0;
+  FlipPass pass(mesh, settings);
   for (const auto& e : edgesOf(mesh))
   {
     const int i = e[0], j = e[1];
     const int p = mesh.ringEntry(i, j);
     const int c = mesh.ring(mesh.next(i, p)), d = mesh.ring(mesh.previous(i, p));
-    if (touched[i] || touched[j] || touched[c] || touched[d] || mesh.valence(i) <= 3 || mesh.valence(j) <= 3 ||
-      c == d)
+    if (!pass.free(mesh, i, j, c, d))
     {
       continue;
     }
     const int vi = mesh.valence(i), vj = mesh.valence(j), vc = mesh.valence(c), vd = mesh.valence(d);
-    // A flip that the angle pass (flipEdges, after each step's edits) would flip back is churn: both
-    // passes flipped about 190 edges at every step of the noisy camel's 200,000 points, to no end.
-    if (deviation(vi - 1, vj - 1, vc + 1, vd + 1) >= deviation(vi, vj, vc, vd) || mesh.ringEntry(c, d) >= 0 ||
-      flipGainsAngle(x, c, d, i, j, settings.minGain) || !flipKeepsShape(x, i, j, c, d, cosMax) ||
-      (settings.avoidCrossings && guard.flipCrosses(i, j, c, d)) || !mesh.flip(i, j))
+    // A flip that the angle pass (flipEdges, after each step's edits) would flip back is churn.
+    if (deviation(vi - 1, vj - 1, vc + 1, vd + 1) < deviation(vi, vj, vc, vd) &&
+      mesh.ringEntry(c, d) < 0 && !flipGainsAngle(pass.points(), c, d, i, j, settings.minGain))
     {
-      continue;
-    }
-    touched[i] = touched[j] = touched[c] = touched[d] = 1;
-    ++flips;
-    if (settings.avoidCrossings)
-    {
-      guard.addFlip(i, j, c, d);
+      pass.flip(mesh, i, j, c, d);
     }
   }
-  return flips > 0 && mesh.commit() ? flips : 0;
+  return pass.flips() > 0 && mesh.commit() ? pass.flips() : 0;
 }
 
 RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings)

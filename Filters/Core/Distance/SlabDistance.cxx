@@ -266,8 +266,372 @@ RegionSides decideSides(const Messages& all, const std::vector<PlaneRange>& owne
 
 } // namespace
 
-Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice& whole, int first, int last,
-  const SignedDistanceSettings& settings, const SlabExchange& exchange, float* distance,
+namespace
+{
+// One rank's slab, computed in rounds with the other ranks: the rounds' shared state.
+class SlabRun
+{
+public:
+  SlabRun(const DistanceSource& source, const GridLattice& whole, int first, int last,
+    const SignedDistanceSettings& settings, const SlabExchange& exchange, const Progress& progress)
+    : Source(source)
+    , Whole(whole)
+    , Settings(settings)
+    , Exchange(exchange)
+    , Report(progress)
+    , Planes(whole.dims[2])
+    , PlaneSize(static_cast<std::int64_t>(whole.dims[0]) * whole.dims[1])
+    , Mine{ std::max(first, 0), std::min(last, whole.dims[2] - 1) }
+    , Rank(exchange.rank())
+  {
+  }
+
+  Status sharePlanes();                          // round 1
+  void bandOfSlab();                             // this slab's outline and band
+  bool decideSigns(SignedDistanceResult& result); // round 2; false: a rank stopped
+  bool sweep(float* distance);                   // round 3
+  bool finish(SignedDistanceResult& result, float* distance); // round 4
+
+private:
+  void signOthersPlanes(RegionSides& sides);
+  void readColumnSites(ColumnSites& others);
+
+  const DistanceSource& Source;
+  const GridLattice& Whole;
+  const SignedDistanceSettings& Settings;
+  const SlabExchange& Exchange;
+  const Progress& Report;
+  const int Planes;
+  const std::int64_t PlaneSize;
+  const PlaneRange Mine;
+  const int Rank;
+  std::vector<PlaneRange> Computed, Owned; // by rank
+  PlaneRange Own{ 0, -1 };
+  PlaneRange Outer{ 0, -1 }; // Mine with the planes around it that its band and votes need
+  GridLattice OuterLattice, Slab;
+  std::int64_t SlabStart = 0; // the outer lattice's index of the slab's node 0
+  bool MeshInsideGrid = false;
+  bool Stopped = false;
+  Messages All;
+  std::vector<std::uint8_t> State;
+  DistanceBand Band;
+  bool NeedWinding = false;
+  long long BandSize = 0;
+  std::vector<std::int32_t> Site;
+  std::vector<Vec3> SitePoints, SiteNormals;
+};
+
+// Round 1: who computes which planes, and who owns them.
+Status SlabRun::sharePlanes()
+{
+  Writer ranges;
+  ranges.put(this->Mine.first);
+  ranges.put(this->Mine.last);
+  exchangeRound(this->Exchange, false, ranges, this->All);
+  for (std::size_t r = 0; r < this->All.count(); ++r)
+  {
+    Reader in{ this->All.data(r) };
+    const int f = in.get<int>();
+    this->Computed.push_back({ f, in.get<int>() });
+  }
+  if (!ownPlanes(this->Computed, this->Planes, this->Owned))
+  {
+    return Status::failure("the pieces leave planes of the grid to no process");
+  }
+  this->Own = this->Owned[this->Rank];
+  // The band in the planes around this slab too: the band of a plane depends on the cells of the
+  // planes next to it (and bandLayers more), and the votes of the slab's regions on the plane
+  // beyond each side.
+  const int halo = this->Settings.bandLayers + 2;
+  this->Outer = { std::max(0, this->Mine.first - halo), std::min(this->Planes - 1, this->Mine.last + halo) };
+  this->OuterLattice = planesOf(this->Whole, this->Outer.first, this->Outer.last);
+  this->Slab = planesOf(this->Whole, this->Mine.first, this->Mine.last);
+  this->SlabStart = (this->Mine.first - this->Outer.first) * this->PlaneSize;
+  this->MeshInsideGrid = strictlyInside(this->Source.bounds(), this->Whole.bounds());
+  return {};
+}
+
+void SlabRun::bandOfSlab()
+{
+  if (this->Mine.empty())
+  {
+    return;
+  }
+  std::vector<std::int64_t> cells;
+  this->Stopped = !this->Source.outline(this->OuterLattice, this->Report.stage(0.05, 0.2), cells);
+  this->State.assign(this->OuterLattice.nodeCount(), Unvisited);
+  std::array<bool, 6> faces = allFaces(!this->MeshInsideGrid);
+  faces[4] = faces[4] && this->Outer.first == 0;
+  faces[5] = faces[5] && this->Outer.last == this->Planes - 1;
+  std::vector<std::int64_t> nodes =
+    bandNodes(this->OuterLattice, cells, this->Settings.bandLayers, faces, this->State.data());
+  // Exact distances where they are used: the slab's planes and the plane beyond each side.
+  const std::int64_t from = std::max(0, this->Mine.first - 1 - this->Outer.first) * this->PlaneSize;
+  const std::int64_t to =
+    (std::min(this->Outer.last, this->Mine.last + 1) - this->Outer.first + 1) * this->PlaneSize;
+  nodes.erase(std::remove_if(nodes.begin(), nodes.end(),
+                [&](std::int64_t n) { return n < from || n >= to; }),
+    nodes.end());
+  this->Stopped = this->Stopped ||
+    !computeBand(this->Source, this->OuterLattice, std::move(nodes),
+      bandSearchRadius(this->Whole, this->Settings.bandLayers), onSurfaceDistance(this->Whole),
+      this->Report.stage(0.2, 0.45), this->Band, this->State.data());
+}
+
+// Round 2: the sign regions, flooded per slab, joined across the borders, decided together. The
+// nodes outside the box around the whole band are one region (the outside), without a flood.
+bool SlabRun::decideSigns(SignedDistanceResult& result)
+{
+  const int shift = this->Outer.first; // whole-grid planes from the outer lattice's
+  std::array<int, 6> extent = nodeExtent(this->OuterLattice, this->Band.nodes);
+  extent[4] = this->Band.nodes.empty() ? this->Planes : extent[4] + shift;
+  extent[5] += this->Band.nodes.empty() ? 0 : shift;
+  Writer bandBox;
+  bandBox.put(extent);
+  if (!exchangeRound(this->Exchange, this->Stopped, bandBox, this->All))
+  {
+    return false;
+  }
+  for (std::size_t r = 0; r < this->All.count(); ++r)
+  {
+    Reader in{ this->All.data(r) };
+    const auto e = in.get<std::array<int, 6>>();
+    for (int a = 0; a < 3; ++a)
+    {
+      extent[2 * a] = std::min(extent[2 * a], e[2 * a]);
+      extent[2 * a + 1] = std::max(extent[2 * a + 1], e[2 * a + 1]);
+    }
+  }
+  std::array<int, 6> shell;
+  const bool withShell = outsideShell(this->Whole.dims, this->MeshInsideGrid, extent, shell);
+  shell[4] -= shift;
+  shell[5] -= shift;
+  SlabRegions regions;
+  std::vector<int> labelled; // the owned planes next to or inside other slabs (outer planes)
+  for (int k = this->Own.first; k <= this->Own.last; ++k)
+  {
+    bool wanted = k == this->Own.first || k == this->Own.last;
+    for (std::size_t r = 0; r < this->Computed.size(); ++r)
+    {
+      wanted = wanted || (static_cast<int>(r) != this->Rank && this->Computed[r].holds(k));
+    }
+    if (wanted)
+    {
+      labelled.push_back(k - shift);
+    }
+  }
+  if (!this->Stopped && !this->Own.empty())
+  {
+    regions = floodSlabRegions(this->OuterLattice, this->Own.first - shift, this->Own.last - shift,
+      labelled, withShell ? &shell : nullptr, this->State.data(), this->Report.stage(0.45, 0.55),
+      this->Stopped);
+  }
+  for (int& k : regions.planes)
+  {
+    k += shift;
+  }
+  Writer message;
+  message.put(regions.inside);
+  message.put(regions.outside);
+  message.put(regions.planes);
+  message.put(regions.labels);
+  if (!exchangeRound(this->Exchange, this->Stopped, message, this->All))
+  {
+    return false;
+  }
+  RegionSides sides = decideSides(this->All, this->Owned, this->PlaneSize, this->MeshInsideGrid);
+  std::vector<char> isInside(regions.seed.size());
+  for (std::size_t r = 0; r < isInside.size(); ++r)
+  {
+    const std::int64_t region = sides.firstRegion[this->Rank] + static_cast<std::int64_t>(r);
+    isInside[r] = sides.inside[sides.regions.find(region)];
+  }
+  if (!this->Own.empty())
+  {
+    labelSlabRegions(this->OuterLattice, this->Own.first - shift, this->Own.last - shift, regions,
+      isInside, this->State.data());
+  }
+  this->signOthersPlanes(sides);
+  if (sides.votes.inverted)
+  {
+    invertBandSigns(this->State.data(), static_cast<std::int64_t>(this->State.size()));
+  }
+  result.signDisagreements = sides.votes.disagreeing;
+  result.invertedOrientation = sides.votes.inverted;
+  result.isSigned = sides.votes.consistent();
+  result.signMethod = result.isSigned ? SignMethod::Votes : SignMethod::None;
+  this->NeedWinding = !result.isSigned && this->Settings.windingNumber &&
+    !this->Source.sidesConfirmed().empty();
+  return true;
+}
+
+// Planes this process computes but others own: their regions' sides from the owners' labels.
+void SlabRun::signOthersPlanes(RegionSides& sides)
+{
+  for (int k = this->Mine.first; k <= this->Mine.last; ++k)
+  {
+    if (this->Own.holds(k))
+    {
+      continue;
+    }
+    const auto owner = static_cast<int>(std::find_if(this->Owned.begin(), this->Owned.end(),
+                                          [&](const PlaneRange& o) { return o.holds(k); }) -
+      this->Owned.begin());
+    std::uint8_t* planeState = this->State.data() + (k - this->Outer.first) * this->PlaneSize;
+    for (std::int64_t n = 0; n < this->PlaneSize; ++n)
+    {
+      if (planeState[n] == Unvisited)
+      {
+        const std::int64_t root = sides.regionAt(owner, k, n);
+        planeState[n] = root >= 0 && sides.inside[root] ? Inside : Outside;
+      }
+    }
+  }
+}
+
+// Round 3: the x and y passes alone, the z pass with the other slabs' winners of each column.
+bool SlabRun::sweep(float* distance)
+{
+  this->Site.assign(this->Slab.nodeCount(), -1);
+  if (this->NeedWinding)
+  {
+    this->SiteNormals = trustedNormals(this->Source, this->Band);
+  }
+  for (std::size_t k = 0; k < this->Band.nodes.size(); ++k)
+  {
+    const std::int64_t n = this->Band.nodes[k] - this->SlabStart;
+    if (n >= 0 && n < this->Slab.nodeCount())
+    {
+      this->Site[n] = static_cast<std::int32_t>(k);
+    }
+  }
+  this->BandSize = static_cast<long long>(this->Band.nodes.size());
+  this->SitePoints = std::move(this->Band.closest);
+  this->Band = DistanceBand(); // the rest of the band is done with: its memory goes to the passes
+  const SlabPlanes planes{ this->Whole, this->Mine.first, this->Mine.last, this->Own.first,
+    this->Own.last };
+  ColumnSites winners;
+  if (!this->Stopped && !this->Mine.empty())
+  {
+    this->Stopped = !sweepClosestPointsInPlanes(
+      this->Slab, this->SitePoints, this->Site.data(), this->Report.stage(0.55, 0.75));
+  }
+  if (!this->Stopped && !this->Own.empty())
+  {
+    winners = columnWinners(
+      planes, othersPlanes(this->Computed, this->Rank), this->SitePoints, this->Site.data());
+  }
+  Writer message;
+  message.put(winners.start);
+  auto winning = [&](const std::vector<Vec3>& of) {
+    std::vector<Vec3> values(winners.sites.size());
+    std::transform(winners.sites.begin(), winners.sites.end(), values.begin(),
+      [&](std::int32_t s) { return of[s]; });
+    return values;
+  };
+  message.put(winning(this->SitePoints));
+  message.put(this->NeedWinding ? winning(this->SiteNormals) : std::vector<Vec3>());
+  winners = ColumnSites();
+  if (!exchangeRound(this->Exchange, this->Stopped, message, this->All))
+  {
+    return false;
+  }
+  if (!this->Mine.empty())
+  {
+    ColumnSites others;
+    this->readColumnSites(others);
+    sweepColumns(planes, this->SitePoints, others, this->Site.data(), distance);
+    this->Stopped = !this->Report.report(0.85);
+  }
+  return true;
+}
+
+// The other slabs' winners of each column (round 3's messages), appended to this slab's sites.
+void SlabRun::readColumnSites(ColumnSites& others)
+{
+  const std::size_t ranks = this->All.count();
+  others.start.assign(this->PlaneSize + 1, 0);
+  std::vector<std::vector<std::int64_t>> starts(ranks);
+  std::vector<std::int32_t> firstSite(ranks);
+  for (std::size_t r = 0; r < ranks; ++r)
+  {
+    Reader in{ this->All.data(r) };
+    starts[r] = in.getVector<std::int64_t>();
+    if (static_cast<int>(r) == this->Rank || starts[r].empty())
+    {
+      starts[r].clear();
+      continue;
+    }
+    firstSite[r] = static_cast<std::int32_t>(this->SitePoints.size());
+    const auto p = in.getVector<Vec3>();
+    const auto n = in.getVector<Vec3>();
+    this->SitePoints.insert(this->SitePoints.end(), p.begin(), p.end());
+    this->SiteNormals.insert(this->SiteNormals.end(), n.begin(), n.end());
+    for (std::int64_t c = 0; c < this->PlaneSize; ++c)
+    {
+      others.start[c + 1] += starts[r][c + 1] - starts[r][c];
+    }
+  }
+  std::partial_sum(others.start.begin(), others.start.end(), others.start.begin());
+  others.sites.resize(others.start.back());
+  std::vector<std::int64_t> fill(others.start.begin(), others.start.end() - 1);
+  this->All = Messages(); // read: its memory goes to the z pass
+  for (std::size_t r = 0; r < starts.size(); ++r)
+  {
+    for (std::int64_t c = 0; c < static_cast<std::int64_t>(starts[r].size()) - 1; ++c)
+    {
+      for (std::int64_t s = starts[r][c]; s < starts[r][c + 1]; ++s)
+      {
+        others.sites[fill[c]++] = firstSite[r] + static_cast<std::int32_t>(s);
+      }
+    }
+  }
+}
+
+// Round 4: the winding number where the votes disagreed, and the counts of all slabs.
+bool SlabRun::finish(SignedDistanceResult& result, float* distance)
+{
+  WindingSignResult winding;
+  if (this->NeedWinding && !this->Stopped && !this->Mine.empty())
+  {
+    winding = signByWindingNumber(this->Source, this->Slab, this->SitePoints, this->SiteNormals,
+      this->Site.data(), this->State.data() + this->SlabStart, this->Report.stage(0.85, 0.98));
+    this->Stopped = !winding.completed;
+  }
+  Writer counts;
+  counts.put(this->BandSize);
+  counts.put(winding.evaluated);
+  counts.put(winding.inside);
+  if (!exchangeRound(this->Exchange, this->Stopped, counts, this->All))
+  {
+    return false;
+  }
+  long long inside = 0;
+  for (std::size_t r = 0; r < this->All.count(); ++r)
+  {
+    Reader in{ this->All.data(r) };
+    result.bandNodes += in.get<long long>();
+    result.windingEvaluations += in.get<long long>();
+    inside += in.get<long long>();
+  }
+  if (this->NeedWinding)
+  {
+    const auto& confirmed = this->Source.sidesConfirmed();
+    result.unconfirmedTriangles = std::count(confirmed.begin(), confirmed.end(), 0);
+    result.invertedOrientation = false;
+    result.isSigned = inside > 0;
+    result.signMethod = result.isSigned ? SignMethod::WindingNumber : SignMethod::None;
+  }
+  if (!this->Mine.empty())
+  {
+    applySigns(this->State.data() + this->SlabStart, this->Slab.nodeCount(), result.isSigned, distance);
+  }
+  return true;
+}
+} // namespace
+
+Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice& whole, int first,
+  int last, const SignedDistanceSettings& settings, const SlabExchange& exchange, float* distance,
   SignedDistanceResult& result, const Progress& progress)
 {
   result = SignedDistanceResult();
@@ -275,280 +639,17 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
   {
     return Status::failure("the Eikonal sweep cannot be computed by pieces");
   }
-  const int nz = whole.dims[2];
-  const std::int64_t planeSize = static_cast<std::int64_t>(whole.dims[0]) * whole.dims[1];
-  const PlaneRange mine{ std::max(first, 0), std::min(last, nz - 1) };
-
-  // Round 1: who computes which planes, and who owns them.
-  Messages all;
-  Writer ranges;
-  ranges.put(mine.first);
-  ranges.put(mine.last);
-  exchangeRound(exchange, false, ranges, all);
-  std::vector<PlaneRange> computed, owned;
-  for (std::size_t r = 0; r < all.count(); ++r)
+  SlabRun run(source, whole, first, last, settings, exchange, progress);
+  if (Status shared = run.sharePlanes(); !shared)
   {
-    Reader in{ all.data(r) };
-    const int f = in.get<int>();
-    computed.push_back({ f, in.get<int>() });
+    return shared;
   }
-  if (!ownPlanes(computed, nz, owned))
-  {
-    return Status::failure("the pieces leave planes of the grid to no process");
-  }
-  const int rank = exchange.rank();
-  const PlaneRange own = owned[rank];
-
-  // The band, in the planes around this slab too: the band of a plane depends on the cells of the
-  // planes next to it (and bandLayers more), and the votes of the slab's regions on the plane
-  // beyond each side.
-  const int halo = settings.bandLayers + 2;
-  const PlaneRange outer{ std::max(0, mine.first - halo), std::min(nz - 1, mine.last + halo) };
-  const GridLattice outerLattice = planesOf(whole, outer.first, outer.last);
-  const GridLattice slab = planesOf(whole, mine.first, mine.last);
-  const std::int64_t slabStart = (mine.first - outer.first) * planeSize; // outer index of the slab's node 0
-  const Box grid = whole.bounds();
-  const Box surface = source.bounds();
-  const bool meshInsideGrid = strictlyInside(surface, grid);
-  bool stopped = false;
-  std::vector<std::uint8_t> state;
-  DistanceBand band;
-  if (!mine.empty())
-  {
-    std::vector<std::int64_t> cells;
-    stopped = !source.outline(outerLattice, progress.stage(0.05, 0.2), cells);
-    state.assign(outerLattice.nodeCount(), Unvisited);
-    std::array<bool, 6> faces = allFaces(!meshInsideGrid);
-    faces[4] = faces[4] && outer.first == 0;
-    faces[5] = faces[5] && outer.last == nz - 1;
-    std::vector<std::int64_t> nodes = bandNodes(outerLattice, cells, settings.bandLayers, faces, state.data());
-    // Exact distances where they are used: the slab's planes and the plane beyond each side.
-    const std::int64_t from = std::max(0, mine.first - 1 - outer.first) * planeSize,
-                       to = (std::min(outer.last, mine.last + 1) - outer.first + 1) * planeSize;
-    nodes.erase(std::remove_if(nodes.begin(), nodes.end(), [&](std::int64_t n) { return n < from || n >= to; }),
-      nodes.end());
-    stopped = stopped ||
-      !computeBand(source, outerLattice, std::move(nodes), bandSearchRadius(whole, settings.bandLayers),
-        onSurfaceDistance(whole), progress.stage(0.2, 0.45), band, state.data());
-  }
-
-  // Round 2: the sign regions, flooded per slab, joined across the borders, decided together. The
-  // nodes outside the box around the whole band are one region (the outside), without a flood.
-  bool needWinding = false;
-  if (settings.computeSign)
-  {
-    std::array<int, 6> extent = nodeExtent(outerLattice, band.nodes);
-    extent[4] = band.nodes.empty() ? nz : extent[4] + outer.first; // in whole-grid planes
-    extent[5] += band.nodes.empty() ? 0 : outer.first;
-    Writer bandBox;
-    bandBox.put(extent);
-    if (!exchangeRound(exchange, stopped, bandBox, all))
-    {
-      return {};
-    }
-    for (std::size_t r = 0; r < all.count(); ++r)
-    {
-      Reader in{ all.data(r) };
-      const auto e = in.get<std::array<int, 6>>();
-      for (int a = 0; a < 3; ++a)
-      {
-        extent[2 * a] = std::min(extent[2 * a], e[2 * a]);
-        extent[2 * a + 1] = std::max(extent[2 * a + 1], e[2 * a + 1]);
-      }
-    }
-    std::array<int, 6> shell;
-    const bool withShell = outsideShell(whole.dims, meshInsideGrid, extent, shell);
-    shell[4] -= outer.first; // in the outer lattice's planes
-    shell[5] -= outer.first;
-    SlabRegions regions;
-    std::vector<int> labelled; // whole-grid planes: the owned planes next to or inside other slabs
-    for (int k = own.first; k <= own.last; ++k)
-    {
-      bool wanted = k == own.first || k == own.last;
-      for (std::size_t r = 0; r < computed.size(); ++r)
-      {
-        wanted = wanted || (static_cast<int>(r) != rank && computed[r].holds(k));
-      }
-      if (wanted)
-      {
-        labelled.push_back(k - outer.first);
-      }
-    }
-    if (!stopped && !own.empty())
-    {
-      regions = floodSlabRegions(outerLattice, own.first - outer.first, own.last - outer.first, labelled,
-        withShell ? &shell : nullptr, state.data(), progress.stage(0.45, 0.55), stopped);
-    }
-    for (int& k : regions.planes)
-    {
-      k += outer.first;
-    }
-    Writer message;
-    message.put(regions.inside);
-    message.put(regions.outside);
-    message.put(regions.planes);
-    message.put(regions.labels);
-    if (!exchangeRound(exchange, stopped, message, all))
-    {
-      return {};
-    }
-    RegionSides sides = decideSides(all, owned, planeSize, meshInsideGrid);
-    std::vector<char> isInside(regions.seed.size());
-    for (std::size_t r = 0; r < isInside.size(); ++r)
-    {
-      isInside[r] = sides.inside[sides.regions.find(sides.firstRegion[rank] + static_cast<std::int64_t>(r))];
-    }
-    if (!own.empty())
-    {
-      labelSlabRegions(outerLattice, own.first - outer.first, own.last - outer.first, regions, isInside, state.data());
-    }
-    // Planes this process computes but others own: their regions' sides from the owners' labels.
-    for (int k = mine.first; k <= mine.last; ++k)
-    {
-      if (own.holds(k))
-      {
-        continue;
-      }
-      const int owner = static_cast<int>(std::find_if(owned.begin(), owned.end(), [&](const PlaneRange& o) {
-        return o.holds(k);
-      }) - owned.begin());
-      std::uint8_t* planeState = state.data() + (k - outer.first) * planeSize;
-      for (std::int64_t n = 0; n < planeSize; ++n)
-      {
-        if (planeState[n] == Unvisited)
-        {
-          const std::int64_t root = sides.regionAt(owner, k, n);
-          planeState[n] = root >= 0 && sides.inside[root] ? Inside : Outside;
-        }
-      }
-    }
-    if (sides.votes.inverted)
-    {
-      invertBandSigns(state.data(), static_cast<std::int64_t>(state.size()));
-    }
-    result.signDisagreements = sides.votes.disagreeing;
-    result.invertedOrientation = sides.votes.inverted;
-    result.isSigned = sides.votes.consistent();
-    result.signMethod = result.isSigned ? SignMethod::Votes : SignMethod::None;
-    needWinding = !result.isSigned && settings.windingNumber && !source.sidesConfirmed().empty();
-  }
-
-  // Round 3: the x and y passes alone, the z pass with the other slabs' winners of each column.
-  std::vector<std::int32_t> site(slab.nodeCount(), -1);
-  std::vector<Vec3> siteNormals = needWinding ? trustedNormals(source, band) : std::vector<Vec3>();
-  for (std::size_t k = 0; k < band.nodes.size(); ++k)
-  {
-    const std::int64_t n = band.nodes[k] - slabStart;
-    if (n >= 0 && n < slab.nodeCount())
-    {
-      site[n] = static_cast<std::int32_t>(k);
-    }
-  }
-  const auto bandSize = static_cast<long long>(band.nodes.size());
-  std::vector<Vec3> sitePoints = std::move(band.closest);
-  band = DistanceBand(); // the rest of the band is done with: its memory goes to the passes
-  const SlabPlanes planes{ whole, mine.first, mine.last, own.first, own.last };
-  ColumnSites winners;
-  if (!stopped && !mine.empty())
-  {
-    stopped = !sweepClosestPointsInPlanes(slab, sitePoints, site.data(), progress.stage(0.55, 0.75));
-  }
-  if (!stopped && !own.empty())
-  {
-    winners = columnWinners(planes, othersPlanes(computed, rank), sitePoints, site.data());
-  }
-  Writer message;
-  message.put(winners.start);
-  auto winning = [&](const std::vector<Vec3>& of) {
-    std::vector<Vec3> values(winners.sites.size());
-    std::transform(winners.sites.begin(), winners.sites.end(), values.begin(), [&](std::int32_t s) { return of[s]; });
-    return values;
-  };
-  message.put(winning(sitePoints));
-  message.put(needWinding ? winning(siteNormals) : std::vector<Vec3>());
-  winners = ColumnSites();
-  if (!exchangeRound(exchange, stopped, message, all))
+  run.bandOfSlab();
+  // A round that finds a rank stopped (aborted) ends every rank's run there, not completed.
+  if ((settings.computeSign && !run.decideSigns(result)) || !run.sweep(distance) ||
+    !run.finish(result, distance))
   {
     return {};
-  }
-  if (!mine.empty())
-  {
-    ColumnSites others;
-    others.start.assign(planeSize + 1, 0);
-    std::vector<std::vector<std::int64_t>> starts(all.count());
-    std::vector<std::int32_t> firstSite(all.count());
-    for (std::size_t r = 0; r < all.count(); ++r)
-    {
-      Reader in{ all.data(r) };
-      starts[r] = in.getVector<std::int64_t>();
-      if (static_cast<int>(r) == rank || starts[r].empty())
-      {
-        starts[r].clear();
-        continue;
-      }
-      firstSite[r] = static_cast<std::int32_t>(sitePoints.size());
-      const auto p = in.getVector<Vec3>();
-      const auto n = in.getVector<Vec3>();
-      sitePoints.insert(sitePoints.end(), p.begin(), p.end());
-      siteNormals.insert(siteNormals.end(), n.begin(), n.end());
-      for (std::int64_t c = 0; c < planeSize; ++c)
-      {
-        others.start[c + 1] += starts[r][c + 1] - starts[r][c];
-      }
-    }
-    std::partial_sum(others.start.begin(), others.start.end(), others.start.begin());
-    others.sites.resize(others.start.back());
-    std::vector<std::int64_t> fill(others.start.begin(), others.start.end() - 1);
-    all = Messages(); // read: its memory goes to the z pass
-    for (std::size_t r = 0; r < starts.size(); ++r)
-    {
-      for (std::int64_t c = 0; c < static_cast<std::int64_t>(starts[r].size()) - 1; ++c)
-      {
-        for (std::int64_t s = starts[r][c]; s < starts[r][c + 1]; ++s)
-        {
-          others.sites[fill[c]++] = firstSite[r] + static_cast<std::int32_t>(s);
-        }
-      }
-    }
-    sweepColumns(planes, sitePoints, others, site.data(), distance);
-    stopped = !progress.report(0.85);
-  }
-
-  // Round 4: the winding number where the votes disagreed, and the counts of all slabs.
-  WindingSignResult winding;
-  if (needWinding && !stopped && !mine.empty())
-  {
-    winding = signByWindingNumber(
-      source, slab, sitePoints, siteNormals, site.data(), state.data() + slabStart, progress.stage(0.85, 0.98));
-    stopped = !winding.completed;
-  }
-  Writer counts;
-  counts.put(bandSize);
-  counts.put(winding.evaluated);
-  counts.put(winding.inside);
-  if (!exchangeRound(exchange, stopped, counts, all))
-  {
-    return {};
-  }
-  long long inside = 0;
-  for (std::size_t r = 0; r < all.count(); ++r)
-  {
-    Reader in{ all.data(r) };
-    result.bandNodes += in.get<long long>();
-    result.windingEvaluations += in.get<long long>();
-    inside += in.get<long long>();
-  }
-  if (needWinding)
-  {
-    const auto& confirmed = source.sidesConfirmed();
-    result.unconfirmedTriangles = std::count(confirmed.begin(), confirmed.end(), 0);
-    result.invertedOrientation = false;
-    result.isSigned = inside > 0;
-    result.signMethod = result.isSigned ? SignMethod::WindingNumber : SignMethod::None;
-  }
-  if (!mine.empty())
-  {
-    applySigns(state.data() + slabStart, slab.nodeCount(), result.isSigned, distance);
   }
   result.completed = progress.report(1);
   return {};

@@ -5,6 +5,7 @@
 #include "Surface/TriangleGrid.h"
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -579,13 +580,15 @@ void CrossingGuard::add(const std::vector<Made>& made)
   }
 }
 
-int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
-  const std::vector<std::array<int, 3>>& triangles, std::vector<int>* crossing)
+namespace
 {
-  const int nt = static_cast<int>(triangles.size());
-  std::vector<Box> swept(nt);
-  std::vector<int> moving; // two triangles that stay cannot begin to cross
-  for (int t = 0; t < nt; ++t)
+// Each triangle's box swept from `previous` to `next`, and the triangles that move (two that stay
+// cannot begin to cross).
+std::vector<Box> sweptBoxes(const std::vector<Vec3>& previous, const std::vector<Vec3>& next,
+  const std::vector<std::array<int, 3>>& triangles, std::vector<int>& moving)
+{
+  std::vector<Box> swept(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     bool moves = false;
     for (int v : triangles[t])
@@ -596,11 +599,63 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
     }
     if (moves)
     {
-      moving.push_back(t);
+      moving.push_back(static_cast<int>(t));
     }
   }
+  return swept;
+}
+
+// Per vertex v of `vertices` its triangles: triangles[at[v] .. at[v + 1]).
+struct VertexTriangles
+{
+  std::vector<int> at, triangles;
+  VertexTriangles(const std::vector<std::array<int, 3>>& all, std::size_t vertices)
+    : at(vertices + 1, 0)
+  {
+    for (const auto& tri : all)
+    {
+      for (int v : tri)
+      {
+        ++this->at[v + 1];
+      }
+    }
+    for (std::size_t v = 0; v < vertices; ++v)
+    {
+      this->at[v + 1] += this->at[v];
+    }
+    this->triangles.resize(this->at.back());
+    std::vector<int> fill(this->at.begin(), this->at.end() - 1);
+    for (std::size_t t = 0; t < all.size(); ++t)
+    {
+      for (int v : all[t])
+      {
+        this->triangles[fill[v]++] = static_cast<int>(t);
+      }
+    }
+  }
+  // The triangles around `vertices`, each once, in order.
+  std::vector<int> around(const std::vector<int>& vertices) const
+  {
+    std::vector<int> found;
+    for (int v : vertices)
+    {
+      found.insert(found.end(), this->triangles.begin() + this->at[v],
+        this->triangles.begin() + this->at[v + 1]);
+    }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+  }
+};
+} // namespace
+
+int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
+  const std::vector<std::array<int, 3>>& triangles, std::vector<int>* crossing)
+{
+  std::vector<int> moving;
+  std::vector<Box> swept = sweptBoxes(previous, next, triangles, moving);
   const TriangleGrid grid(std::move(swept), TriangleGrid::cellSizeFor(next, triangles));
-  if (nt < 2 || grid.empty())
+  if (triangles.size() < 2 || grid.empty())
   {
     return 0;
   }
@@ -609,8 +664,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
     return !crosses(facetOf(previous, triangles[s]), facetOf(previous, triangles[t]), margin);
   };
   std::vector<std::pair<int, int>> found = crossingsOf(grid, next, triangles, moving);
-  // Per vertex v its triangles trianglesAt[at[v] .. at[v + 1]), built when a first vertex is held.
-  std::vector<int> at, trianglesAt;
+  std::unique_ptr<VertexTriangles> around; // built when a first vertex is held
   int held = 0;
   while (!found.empty())
   {
@@ -642,39 +696,12 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
       break;
     }
     held += static_cast<int>(moved.size());
-    if (at.empty())
+    if (!around)
     {
-      at.assign(next.size() + 1, 0);
-      for (const auto& tri : triangles)
-      {
-        for (int v : tri)
-        {
-          ++at[v + 1];
-        }
-      }
-      for (std::size_t v = 0; v < next.size(); ++v)
-      {
-        at[v + 1] += at[v];
-      }
-      trianglesAt.resize(at.back());
-      std::vector<int> fill(at.begin(), at.end() - 1);
-      for (int t = 0; t < nt; ++t)
-      {
-        for (int v : triangles[t])
-        {
-          trianglesAt[fill[v]++] = t;
-        }
-      }
+      around = std::make_unique<VertexTriangles>(triangles, next.size());
     }
     // Only the triangles around the held vertices changed: re-test them against their neighbours.
-    std::vector<int> changed;
-    for (int v : moved)
-    {
-      changed.insert(changed.end(), trianglesAt.begin() + at[v], trianglesAt.begin() + at[v + 1]);
-    }
-    std::sort(changed.begin(), changed.end());
-    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-    found = crossingsAmong(grid, next, triangles, changed);
+    found = crossingsAmong(grid, next, triangles, around->around(moved));
   }
   return held;
 }

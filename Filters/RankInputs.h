@@ -1,4 +1,4 @@
-// What each MPI rank works on (issue #14). Both filters need a whole target on a rank (distances need
+// What each MPI rank works on. Both filters need a whole target on a rank (distances need
 // every triangle), and the filters ask their input for all of it; but a source under ParaView's MPI
 // engine may hand each rank only its part whatever is asked (an in-situ adaptor, a script's source):
 // then the ranks gather the parts. A composite's blocks, each computed on its own, are shared out.

@@ -46,7 +46,7 @@ struct PolygonMeshes
 };
 PolygonMeshes polygonMeshes(vtkDataObject* input);
 
-// Every point of every leaf of an input, for an input measured as points (issue #13): Points is a
+// Every point of every leaf of an input, for an input measured as points: Points is a
 // std::vector<Vec3> (Mesh Signed Distance's soup) or a PointList (a wrap's cloud).
 template <typename Points>
 Points pointsOf(vtkDataObject* input);

@@ -14,7 +14,7 @@
  * triangle strips are triangulated; non-manifold meshes and duplicated points are accepted. Lines and vertices are ignored (with a warning). Coordinates
  * beyond +-1e30 are refused: a float field cannot hold their distances. An input without polygons or
  * 3-D cells (a point cloud, vertices, the points of lines) is measured by its points: the unsigned
- * distance to the nearest of them (issue #13). InputGeometry chooses otherwise for an input that has
+ * distance to the nearest of them. InputGeometry chooses otherwise for an input that has
  * both (a mesh with loose points, a scan beside a model).
  *
  * Output: vtkImageData with the point array "SignedDistance" (float). Field data: "Signed" (1 when the

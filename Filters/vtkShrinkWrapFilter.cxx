@@ -144,7 +144,7 @@ vtkTypeBool vtkShrinkWrapFilter::ProcessRequest(
 {
   // A composite target gives a composite of the same kind (a wrap per block), else a surface.
   vtkCompositeDataSet* blocks =
-    this->WrapBlocksTogether ? nullptr : convert::compositeOf(inputVector[0]);
+    this->WrapPerBlock ? convert::compositeOf(inputVector[0]) : nullptr;
   return convert::makeOutput<vtkPolyData>(request, outputVector, blocks) ||
     this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
@@ -178,7 +178,7 @@ int vtkShrinkWrapFilter::RequestInformation(
   std::optional<GridLattice> field;
   const bool one = convert::wrapInputs(inputVector, inputs, field).ok();
   const bool blockByBlock =
-    vtkCompositeDataSet::SafeDownCast(inputs.target) && !this->WrapBlocksTogether;
+    vtkCompositeDataSet::SafeDownCast(inputs.target) && this->WrapPerBlock;
   if (one && inputs.target && !blockByBlock)
   {
     onAllCores([&] { // a cloud's spacing is measured on all cores
@@ -217,7 +217,7 @@ int vtkShrinkWrapFilter::RequestData(
   vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
   output->Initialize();
   vtkCompositeDataSet* blocks =
-    this->WrapBlocksTogether ? nullptr : convert::compositeOf(inputVector[0]);
+    this->WrapPerBlock ? convert::compositeOf(inputVector[0]) : nullptr;
   this->SetProgressShiftScale(0, 1); // (a run that threw may have left a block's share)
   try // memory can run out below any estimate (a process limit, a job's cap)
   {
@@ -396,7 +396,7 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InputGeometry: " << convert::geometryName(this->InputGeometry) << "\n";
   const WrapSettings unused;
   BindProperties(*this, unused, convert::propertyPrinter(os, indent));
-  os << indent << "WrapBlocksTogether: " << this->WrapBlocksTogether << "\n";
+  os << indent << "WrapPerBlock: " << this->WrapPerBlock << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "FieldCellSize: " << this->FieldCellSize << "\n";
   os << indent << "ChosenGapSize: " << this->ChosenGapSize << "\n";

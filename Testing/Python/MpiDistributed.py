@@ -7,7 +7,7 @@
   each block on the rank that holds it, equal to that mesh's wrap alone.
 - Mesh Signed Distance with Field Per Block on a multiblock every rank holds: each block's field is
   computed on one rank only, equal to its mesh's field alone.
-- Shrink Wrap with Wrap Blocks Together: one surface, on piece 0, equal to the one-process result.
+- Shrink Wrap with Wrap Per Block off: one surface, on piece 0, equal to the one-process result.
 
 Usage: mpiexec -np N pvbatch --symmetric MpiDistributed.py <ShrinkWrap plugin .so> <mesh>
 """
@@ -139,11 +139,11 @@ for k in range(4):
 check(on_one_rank(here) == [1, 1, 1, 1], "Field Per Block: every block's field computed on one rank")
 
 # All blocks wrapped together: one surface, on piece 0.
-together = ShrinkWrap(Input=whole_blocks, WrapBlocksTogether=1, **settings)
+together = ShrinkWrap(Input=whole_blocks, WrapPerBlock=0, **settings)
 ours = points(local(together, 10 * wrap.TimeStep))
 alone = points(whole(together, 10 * wrap.TimeStep))
 check(isinstance(together.GetClientSideObject().GetOutputDataObject(0), vtkPolyData) and
       ((len(ours) > 0 and np.array_equal(ours, alone)) if rank == 0 else len(ours) == 0),
-      "Wrap Blocks Together: one surface on piece 0 (%d points)" % len(ours))
+      "Wrap Per Block off: one surface on piece 0 (%d points)" % len(ours))
 
 finish()

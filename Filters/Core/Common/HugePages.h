@@ -1,8 +1,6 @@
 // Large buffers in 2 MiB pages. Fresh memory is faulted in a page at a time on its first write, and on
-// a virtual machine a 4 KiB page's fault is slow: 3-4 ms a MB here, where the copy, the k-d tree and
-// the bins of a 200,000-point cloud took 4,500 faults (some 55 ms) of a 0.7 s wrap (RESULTS.md,
-// 2026-11-29, 11:10). Linux's transparent huge pages, asked for by madvise (Debian's default mode), fault in 2 MiB
-// at a time for about the cost of one small page. Buffers under kMinHugeBuffer, systems other than
+// a virtual machine a 4 KiB page's fault is slow; Linux's transparent huge pages, asked for by
+// madvise (Debian's default mode), fault in 2 MiB at a time for about the cost of one small page. Buffers under kMinHugeBuffer, systems other than
 // Linux, kernels that give no huge pages and AddressSanitizer builds get ordinary memory.
 #ifndef ShrinkWrap_HugePages_h
 #define ShrinkWrap_HugePages_h
@@ -25,8 +23,8 @@ void unmapHugePages(void* p, std::size_t bytes);
 // Whether buffers of kMinHugeBuffer and more are mapped: on Linux where the kernel gives huge pages to
 // a mapping that asks (transparent huge pages not "never"; read once, so a buffer is always freed the
 // way it was allocated), and not under AddressSanitizer, which checks the heap's bounds but not a
-// mapping's. Without huge pages a mapped buffer is faulted in anew at every wrap where the heap's is
-// reused (2% slower, RESULTS.md 2026-11-29 11:10).
+// mapping's. Without huge pages a mapped buffer would be faulted in anew at every wrap where the
+// heap's is reused.
 bool mapsLargeBuffers();
 
 // A std::allocator that maps buffers of kMinHugeBuffer and more in huge pages (which of the two a

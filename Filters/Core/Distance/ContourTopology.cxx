@@ -220,8 +220,8 @@ DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)
   {
     // Raised where that leaves the interpolant's topology as it is (it had no such join) and does not
     // lower the grid's count: a join undone raises it, or keeps it where the join spans several faces
-    // (the hand's thumb: six corners, the last one undoes it). A corner whose raise would cut a handle
-    // of the interpolant too, as inside the dragon's true handle, stays. Both counts change only in
+    // (each corner but the last leaves it). A corner whose raise would cut a handle of the
+    // interpolant too (a true handle's) stays. Both counts change only in
     // the node's cells.
     const ContourEuler before = aroundNode(lattice, values, n, value);
     const float old = values[n];

@@ -1,7 +1,7 @@
 // Which free nodes of a grid the border reaches through free face neighbours (6-connectivity): what a
 // flood fill from the border finds, and what it leaves are cavities. The closing of a point set fills
 // those (GapClosing.h). Found by joining runs of free nodes along x, row by row, in memory order (a
-// flood fill's queue jumps across the grid: 26 ms against 1 ms on 400,000 nodes).
+// flood fill's queue would jump across the grid).
 #ifndef ShrinkWrap_GridRegions_h
 #define ShrinkWrap_GridRegions_h
 

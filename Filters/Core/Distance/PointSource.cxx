@@ -77,18 +77,11 @@ namespace
 {
 // The sparse spacing (PointSpacing): each sampled point's nearest-neighbour distance averaged over
 // the sampled points within kLocalRadius of their own median spacing (a few dozen), and the 99th
-// percentile of those local means over their median. Chance alone takes it to 1.07-1.34 on uniform
-// samples of CGAL meshes (five draws of the benchmark's twenty clouds: 20,000 and 200,000 points,
-// clean and with 0.25% noise); samples whose density falls 2, 4 and 8 times across the mesh (20,000
-// points, two draws) reach 1.40-1.54, 1.65-1.99 and 1.92-2.51. Above kUniformTail the excess, times
-// kSparseGain (the percentile of a local mean lags the sparsest end), widens the median. With the
-// median alone such clouds of the hand, camel, sphere and mech part wrapped with a second layer
-// inside (the wrap entered their sparse side; genus up to 59); with this, 28 of 30 wrap as uniform
-// ones do (the two others: density falling 2 times; RESULTS.md, 2026-11-30). A point with fewer than
-// kLeastNeighbours sampled points within the radius (itself included) is a stray (a scan's outliers)
-// and has no local mean: with 3% of a uniform cloud's points strewn through its box, their own
-// distances took the percentile from 1.30 to 10.4; the windows of the sparsest 1% of points on ramps
-// of 8 hold 8-11 points (median; 4 of the mech part's 5,000 windows hold fewer than 5).
+// percentile of those local means over their median, which chance alone keeps below kUniformTail on
+// uniform samples. Above it the excess, times kSparseGain (the percentile of a local mean lags the
+// sparsest end), widens the median, so that a cloud whose density falls across it is not entered
+// on its sparse side. A point with fewer than kLeastNeighbours sampled points within the radius
+// (itself included) is a stray (a scan's outlier) and has no local mean.
 constexpr double kLocalRadius = 8;
 constexpr double kSparseQuantile = 0.99;
 constexpr double kUniformTail = 1.35;

@@ -1,4 +1,4 @@
-// A point set as a distance source (DistanceSource.h), for scans and sampled points (issue #13): the
+// A point set as a distance source (DistanceSource.h), for scans and sampled points: the
 // distance to the nearest input point, unsigned (points have no sides), from a k-d tree (PointTree.h)
 // where a mesh has its AABB tree, so that band, sweeps and field come unchanged from Algorithm 1.
 #ifndef ShrinkWrap_PointSource_h

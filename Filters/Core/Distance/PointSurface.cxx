@@ -31,23 +31,18 @@ constexpr double kEvenLean = 0.3;
 constexpr double kRimLean = 0.5;
 // In widths: a patch speaks for feet within this of its centre; further, one centred on the foot
 // does. A surface point's nearest sample of a uniform random cloud lies beyond r with probability
-// exp(-pi rho r^2): beyond half a width (1.5 median spacings) for one foot in five, which then cost a
-// fit each (15,000 of the 73,000 queries of the hand's 20,000-point wrap), beyond three quarters
-// (2.25 spacings) for one in thirty; within that the quadric, fitted over 2.5 widths, holds.
+// exp(-pi rho r^2): beyond three quarters of a width (2.25 median spacings) for one in thirty;
+// within that the quadric, fitted over 2.5 widths, holds.
 constexpr double kNearAnchor = 0.75;
 // A rim leaves half the directions around a centre empty; a random sample's sampling hole leaves
 // far less (its points lie all around, only nearer on one side).
 constexpr double kMaxAngularGap = 2 * M_PI / 3;
 // In widths: how far along a rim the search for its points reaches from each one found (a jagged rim's
-// points lie up to a few widths apart: the sawtooth rims of mech-holes-shark at 200,000 points, whose
-// teeth one width missed; RESULTS.md, 2026-11-28).
+// points lie up to a few widths apart).
 constexpr double kRimReach = 3;
 // In widths (of the finest scale at which the points around a rim point look flat): the largest RMS
-// height of the points over its plane. Clean points measure 0.005-0.05 at h (nine in ten on
-// mech-holes-shark's 20,000); noise of 0.25% of the diagonal hides the plane at h, and at the width
-// where it shows, its points lie within about a sixth of it. 0.2 finds the noisy mech part's rims
-// (0.08 at the finest fitting width: none), 0.5 also finds rims in the noisy armadillo's creases
-// (RESULTS.md, 2026-11-28, later).
+// height of the points over its plane: clean points lie within a few hundredths of it, noisy ones
+// (at the width where their plane shows) within about a sixth; above, the point is no rim's.
 constexpr double kMaxRimSpread = 0.2;
 // One point in 4^kTypicalSample tells the width at which most of a cloud's points look flat.
 constexpr int kTypicalSample = 4;

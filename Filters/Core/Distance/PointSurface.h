@@ -1,4 +1,4 @@
-// The surface a point set samples, for the near field of a wrap onto points (issue #13; TargetDistance.h).
+// The surface a point set samples, for the near field of a wrap onto points (TargetDistance.h).
 // Near x: the patch of x's nearest point, the plane fitted to the points around it (centroid and
 // covariance, Gaussian weights of width h) and over that plane a quadratic height field (moving least
 // squares); x's surface point lies on it. A patch depends on its point alone: fitted the first time a
@@ -111,8 +111,7 @@ private:
   Patch fitPatch(int id) const; // around point id, at the finest scale that fits from the typical one
   // Where no plane fits around x's nearest point (a part thinner than the fit's widths) on a cloud
   // whose noise hides the plane at h: the nearest point is the noise's outermost, and the closed
-  // field the caller would fall back on lies on the noise's outer envelope, 1.5-1.9 sigma out at
-  // 200,000 points (RESULTS.md, 2026-11-29). Instead, the mean depth of the points that the line
+  // field the caller would fall back on lies on the noise's outer envelope, sigmas out. Instead, the mean depth of the points that the line
   // from `inside` (the centroid of the points around the nearest) through x meets first, for the
   // caller to take only where it lies beyond that closed field (in a fold narrower than the line's
   // neighbourhood it would lie at the fold's mouth); nothing found on a clean cloud, or where fewer
@@ -132,8 +131,8 @@ private:
   int TypicalScale = 0;
   double TypicalNoise = 0;
   // The patches fitted so far, in chunks made as they fill (a wrap fits a few percent of a large
-  // cloud's points: per point only a slot, not a patch, which zeroed 27 MB on the noisy camel's
-  // 200,000 points); per input point, its patch's place in them: empty, being stored, or the place.
+  // cloud's points: per point only a slot, not a patch); per input point, its patch's place in them:
+  // empty, being stored, or the place.
   struct Chunk
   {
     static constexpr int kSize = 1024;

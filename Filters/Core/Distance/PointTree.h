@@ -1,4 +1,4 @@
-// A k-d tree over points (issue #13): the nearest point to a query, for a point set's distance
+// A k-d tree over points: the nearest point to a query, for a point set's distance
 // (PointSource.h) and for its spacing, a point's nearest neighbour at another position. Splits at the
 // median along the box's longest side, so that it is balanced and built in O(n log n); the points are
 // kept in leaf order for locality. Points with a NaN or infinite coordinate are left out.

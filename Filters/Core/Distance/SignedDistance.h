@@ -80,7 +80,7 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 SignedDistanceResult computeSignedDistance(const TriangleSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
-// The unsigned distance to the nearest of `points` (a scan, sampled points; issue #13): a PointSource
+// The unsigned distance to the nearest of `points` (a scan, sampled points): a PointSource
 // through the same band and sweeps; `settings.computeSign` does not apply (points have no inside).
 SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});

@@ -1,4 +1,4 @@
-// Algorithm 1 by pieces (issue #14): several processes (MPI ranks) each compute a slab of planes of
+// Algorithm 1 by pieces: several processes (MPI ranks) each compute a slab of planes of
 // one lattice, so memory and time per process follow its slab, and together they give the field of
 // the whole grid, node for node. Every process holds the whole surface. Each computes the band and
 // the x and y closest-point passes of its planes alone (they need nothing from other planes, given a

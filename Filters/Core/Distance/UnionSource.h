@@ -1,4 +1,4 @@
-// Several distance sources measured as one (issue #13: a mesh's polygons and its loose points, Mesh
+// Several distance sources measured as one (a mesh's polygons and its loose points, Mesh
 // Signed Distance's Input Geometry "Polygons and Points"): the nearest point of any of them, the cells
 // any of them touches. Unsigned: its parts' sides do not make one inside (a point has none), so a
 // caller computes no sign from it.

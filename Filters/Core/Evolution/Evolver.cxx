@@ -131,7 +131,7 @@ Evolver::Controls Evolver::controls() const
   c.eta.resize(nv);
   // The landing needs the remeshing's near-equilateral rings (h measures curvature only there), and
   // none at the vertices that hold the target's rims (a fold around a sheet's edge is no curvature of
-  // the target's: landed out, the folds left mech-holes-shark's rims out by 0.66% of the diagonal).
+  // the target's: landed out, the folds would leave the rims out).
   const bool fit = this->Field && s.facetFit != 0 && s.remeshing;
   const std::vector<double> rimVertices = fit && !this->RimSamples.empty()
     ? rimHolds(this->Mesh, this->scaledRimSamples(), s.remeshing->targetLength * this->Scale)
@@ -163,8 +163,7 @@ double Evolver::heightOverRing(int i, const Vec3& normal) const
   }
   // At most half the ring's mean edge l, so a landing of h / 4 stays within l / 8, the sagitta where the
   // surface's radius is one edge: where the wrap folds around a tip or a fin's edge, its height over
-  // the ring is no curvature of the target's (the armadillo's ear: landings up to l / 4 left its tip
-  // out by 1.6% or 2.9% of the diagonal as C moved by 1%, against 1.6-1.7% with this cap).
+  // the ring is no curvature of the target's.
   const double cap = 0.5 * std::sqrt(l2 / (end - begin));
   return std::clamp(normal.dot(y[i] - centroid / (end - begin)), -cap, cap);
 }
@@ -518,11 +517,10 @@ void Evolver::adjustConnectivity(StepReport& report)
   };
   if (s.flips.avoidCrossings || s.collapses.avoidCrossings)
   {
-    // The edits behind a crossing lie within about two edges of it. Where the hold-back kept two parts
-    // apart, the edits crossed the other part at nearly every late step (the camel's legs at
-    // Resolution 200: 17 rounds of 42 made again, a sixth of the wrap's time). While crossings are
-    // recent, the edits there are guarded from the first try (5 of 31 made again); not before, where
-    // guarding costs more than the rare redo.
+    // The edits behind a crossing lie within about two edges of it. Where the hold-back keeps two
+    // parts apart, the edits would cross the other part at nearly every late step: while crossings
+    // are recent, the edits there are guarded from the first try; not before, where guarding costs
+    // more than the rare redo.
     const double reach = TriangleGrid::cellSizeFor(this->Mesh.points(), this->Mesh.triangles());
     std::vector<Box> recent;
     for (const auto& boxes : this->RecentCrossings)

@@ -53,10 +53,9 @@ struct EvolverSettings
   double timeStep = 0.015; // tau (paper Fig. 11)
   double C1 = 1.0;         // eq. (3); C2 = 0 makes eps = C1 everywhere (pure MCF: C1 = 1, C2 = 0, C = 0)
   double C2 = 1.0;
-  // Eq. (4). Shrink Wrap's: C = 12 (the paper's 1) lands the offset start on the target in 25 steps,
-  // since advection closes a share tau C (0.18) of the remaining distance per step (0.82^25 < 1%); D = 0.5 (the paper's 0)
-  // pushes the membranes D = 0 spans over concave parts inwards. Measured on CGAL meshes
-  // (Testing/Benchmarks/RESULTS.md, issue #10).
+  // Eq. (4). C = 12 (the paper's 1) lands the offset start on the target in 25 steps: advection
+  // closes a share tau C (0.18) of the remaining distance per step (0.82^25 < 1%). D = 0.5 (the
+  // paper's 0) pushes the membranes D = 0 spans over concave parts inwards.
   double C = 12.0;
   double D = 0.5;
   // Where the vertices land: d = facetFit h / 4 instead of d = 0 (eq. (4) moves them by d minus
@@ -65,8 +64,7 @@ struct EvolverSettings
   // edges l, h = l^2 / (2R) and h / 4 = l^2 / (8R) is an edge's sagitta: facets between vertices on
   // the target cut inside convex parts by about that (and bulge out of concave ones), so vertices
   // that far out make the facets straddle the target instead. With remeshing only (its rings are
-  // near equilateral), and not at the vertices that hold rims. The means both ways fell by up to a
-  // third on CGAL meshes and their points (RESULTS.md, 2026-11-29). Stable: a vertex pushed out by e
+  // near equilateral), and not at the vertices that hold rims. Stable: a vertex pushed out by e
   // raises its own landing by e / 4. 0: on the target (the paper's scheme).
   double facetFit = 1.0;
   Redistribution redistribution = Redistribution::Angle; // the paper's tables also run None and Volume
@@ -119,7 +117,7 @@ struct EvolverSettings
     RemeshSettings r;
     r.iterations = 1;
     // No relaxation: the angle redistribution already moves vertices tangentially, and relaxing where
-    // two parts of the surface nearly touch let them cross (camel, hand).
+    // two parts of the surface nearly touch lets them cross.
     r.relaxWeight = 0;
     return r;
   }

@@ -9,8 +9,7 @@
 // per node near it (radius beyond the target's closest point, on the line through the node; where
 // another part of the target is nearer, moved onto the crease where the two fronts meet), spread over
 // the grid by the closest-point passes; a node whose own boundary point is clear has e = radius - d
-// exactly. No contour, no second distance field (which cost 5 to 10 times more, from a contour with
-// 10 times the target's triangles on the hand).
+// exactly. No contour, no second distance field (which would cost several times more).
 #ifndef ShrinkWrap_GapClosing_h
 #define ShrinkWrap_GapClosing_h
 

@@ -1,7 +1,7 @@
 // Rims of open sheets (a hole's edge, a fin, a CAD part's open shell) must stay inside the wrap. The wrap
 // folds around such a rim with a layer on each side of the sheet; once both layers lie on the sheet
 // (d = 0), nothing in eq. (4) pulls the fold back out to the rim, while the curvature term and the
-// remeshing's collapses pull it in, and the rim pokes out (mech-holes-shark: by 2% of the diagonal).
+// remeshing's collapses pull it in, and the rim pokes out.
 // So after each step, the points of the target's rims that lie outside the surface pull the nearest
 // triangle onto them, and during the step's remeshing the vertices that hold them stay in place.
 #ifndef ShrinkWrap_RimCoverage_h
@@ -21,14 +21,9 @@ struct RimSettings
   double spacing = 1;      // between samples along a rim, in target edge lengths L (L / 2: as close, slower)
   double tolerance = 0.02; // a sample this close to the surface (in L) counts as covered
   double reach = 1.5;      // samples farther from the surface than this (in L) are left alone
-  // Vertices of the nearest point of a sample this close (in L) stay in place in collapses (rimHolds).
-  // On mech-holes-shark the largest distance from the target to the wrap measured 0.36% of the
-  // diagonal at 0.1, 0.15 and 0.5, 0.46% at 0.25 (one rim point), 0.78% without (RESULTS.md); since
-  // the valence flips no longer churn, the largest is a pit off the rims (0.68%), the rims within 0.19%.
-  double hold = 0.1;
-  // Sharp creases count as rims where the target's faces turn by more than this (degrees; 180: none):
-  // a wrap's triangles otherwise cut a CAD part's edges and corners. Off by default: the wrap then
-  // follows them with more vertices (fandisk at 45: 8% more, past alpha wrap's at diag/50).
+  double hold = 0.1;       // vertices of a sample's nearest point this close (in L) stay in collapses
+  // Sharp creases count as rims where the target's faces turn by more than this (degrees; 180:
+  // none), so that the wrap keeps a CAD part's edges and corners, with more vertices.
   double creaseAngle = 180;
 };
 
@@ -45,7 +40,7 @@ std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& sam
 // weight it has in the nearest surface point of a sample within `reach`; 0 where it holds none. The
 // remeshing keeps such vertices in place (kAnchor, EdgeCollapses.h): merging a fold's vertex on
 // a rim with its neighbour at the edge's midpoint pulled the fold off the rim by most of an edge every
-// step, and the layers on both sides of the sheet then lay too close to move it back (mech-holes-shark).
+// step, and the layers on both sides of the sheet then lay too close to move it back.
 std::vector<double> rimHolds(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double reach);
 
 } // namespace shrinkwrap

@@ -51,8 +51,7 @@ int handlesWithoutSpecks(TriangleSoup surface, double speck)
 // `start`, the contour at `offset`, replaced by the contour at the highest lower offset with fewer
 // handles, if one has. Where two parts lie a little more than twice the offset apart, the grid's
 // contour may join them across the slot: a handle the closed field has not, which the Lagrangian wrap
-// can never open again (the hand's 20,000 points: thumb and index finger at 1 cell, apart at half a
-// cell; RESULTS.md, 2026-11-27 (night)). A lower offset cannot close a hole a higher one keeps open,
+// can never open again. A lower offset cannot close a hole a higher one keeps open,
 // so fewer handles there are such joins undone. The Euler characteristics of the contours, counted
 // without building them (ContourTopology.h), pick the offsets worth building.
 void fewestHandles(const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& start)
@@ -145,9 +144,8 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   {
     // The evolution's thresholds. Collapses chain over a dozen passes here, so the ones behind a
     // crossing lie farther from it than a step's do. In stages from two cells, the length doubling: a
-    // contour coarsened at once to several cells crossed itself where its walls lie a few cells apart,
-    // and each redo with guards cost three times the collapses (the noisy mech part's 20,000 points at
-    // diagonal / 30, 3.5 cells: 0.94 s; in two stages, none crossing, 0.20 s).
+    // contour coarsened at once to several cells crosses itself where its walls lie a few cells
+    // apart, and each redo with guards costs three times the collapses.
     const RemeshSettings remeshing;
     const double last = *settings.coarsenTo;
     const double first = 2 * h > 0 ? std::min(2 * h, last) : last;

@@ -1,4 +1,4 @@
-// A round of edits checked once (issue #10's speed). Edits rarely make the surface cross itself, and
+// A round of edits checked once. Edits rarely make the surface cross itself, and
 // guarding each one (CrossingGuard) costs more than checking once what they made: the edits are made
 // unguarded on a copy first, and the copy's new triangles are checked (the surface did not cross itself
 // before). Where they cross, the edits are made again with only those near the crossings guarded (a

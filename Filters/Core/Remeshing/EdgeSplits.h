@@ -1,4 +1,4 @@
-// Edge splits: the edit that adds vertices where the surface stretches (adaptive remeshing, issue #10,
+// Edge splits: the edit that adds vertices where the surface stretches (adaptive remeshing,
 // will choose the edges by length against a target; for now the caller names them).
 #ifndef ShrinkWrap_EdgeSplits_h
 #define ShrinkWrap_EdgeSplits_h

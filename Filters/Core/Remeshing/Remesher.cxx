@@ -43,8 +43,7 @@ void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings)
     const double length = square > 0 ? std::sqrt(square) : 0;
     sizes[i] = std::clamp(length / L, settings.shortest, settings.longest);
   }
-  // Sizes that jump between neighbours make poor triangles (2% of angles under 20 degrees on the
-  // fandisk without this): each may exceed a neighbour's by at most `grading` times the edge between
+  // Sizes that jump between neighbours make poor triangles: each may exceed a neighbour's by at most `grading` times the edge between
   // them (in L); three sweeps carry that about three rings out.
   for (int pass = 0; pass < 3; ++pass)
   {

@@ -113,8 +113,7 @@ bool crosses(const Facet& s, const Facet& t, double margin)
 // A guarded question's box (an edit's new triangles) is at most this many grid cells wide, but for
 // rare wide fans: where a guard holds a few boxes, the triangles and the edits of a pass are binned
 // only within that reach of them. Many boxes (thousands where the hold-back kept two parts apart) lie
-// all over the surface, and picking the triangles near them costs more than it saves (the mech part's
-// 20,000 points: 1.6 -> 4.2 s).
+// all over the surface, and picking the triangles near them costs more than it saves.
 constexpr double kQuestionCells = 4;
 constexpr std::size_t kFewBoxes = 32;
 

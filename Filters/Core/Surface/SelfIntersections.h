@@ -1,5 +1,5 @@
 // Where a closed triangle surface passes through itself: pairs of triangles that cross, not counting
-// the vertices and edges they share. The wrap must never output one (issue #10). Candidates come from a
+// the vertices and edges they share. The wrap must never output one. Candidates come from a
 // grid of triangle boxes (TriangleGrid, cells about two mean edge lengths wide); two triangles cross
 // when an edge of one passes through the other, decided by the signs of tetrahedron volumes.
 // Coplanar overlaps and mere touching (measure zero in an evolution) are not reported.

@@ -111,7 +111,7 @@ int TestPropertyDefaults(int argc, char* argv[])
       { "SetStartOffset", [&] { return one(w->GetStartOffset()); } },
       { "SetGapSize", [&] { return one(w->GetGapSize()); } },
       { "SetCloseHoles", [&] { return one(w->GetCloseHoles()); } },
-      { "SetWrapBlocksTogether", [&] { return one(w->GetWrapBlocksTogether()); } },
+      { "SetWrapPerBlock", [&] { return one(w->GetWrapPerBlock()); } },
       { "SetRemeshing", [&] { return one(w->GetRemeshing()); } },
       { "SetTargetEdgeLength", [&] { return one(w->GetTargetEdgeLength()); } },
       { "SetEdgeLengthRange",

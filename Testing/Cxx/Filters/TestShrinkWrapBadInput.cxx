@@ -161,7 +161,7 @@ void compositeInputs()
     auto both = wrapOf(append->GetOutput());
     both->Update();
     auto together = wrapOf(input);
-    together->SetWrapBlocksTogether(true);
+    together->SetWrapPerBlock(false);
     const Said saidTogether = whileSaying(together, [&] { together->Update(); });
     const std::vector<double> wrapBoth = pointsOf(both->GetOutputDataObject(0));
     SW_CHECK(saidTogether.errors == 0 && !wrapBoth.empty() && pointsOf(together->GetOutputDataObject(0)) == wrapBoth,

@@ -46,9 +46,9 @@ Status checkPlanes(const GridLattice& lattice, int first, int last, const SlabEx
 }
 } // namespace
 
-Status computeField(const MeasuredInput& measured, int first, int last, const SlabExchange* exchange,
-  const SignedDistanceSettings& settings, const Progress& progress, vtkFloatArray* values,
-  SignedDistanceResult& result)
+Status computeField(const MeasuredInput& measured, int first, int last,
+  const SlabExchange* exchange, const SignedDistanceSettings& settings, const Progress& progress,
+  vtkFloatArray* values, SignedDistanceResult& result)
 {
   const GridLattice& lattice = measured.lattice;
   if (const Status fits = checkPlanes(lattice, first, last, exchange, settings); !fits)
@@ -70,8 +70,8 @@ Status computeField(const MeasuredInput& measured, int first, int last, const Sl
           measured.soup, measured.cloud.points, lattice, settings, distance, progress);
         return;
       }
-      const Status status = computeSlabDistance(measured.soup, measured.cloud.points, lattice, first,
-        last, settings, *exchange, distance, result, progress);
+      const Status status = computeSlabDistance(measured.soup, measured.cloud.points, lattice,
+        first, last, settings, *exchange, distance, result, progress);
       if (!status)
       {
         throw std::runtime_error(status.message());
@@ -91,25 +91,26 @@ Status computeField(const MeasuredInput& measured, int first, int last, const Sl
   return {};
 }
 
-Status computePieces(vtkMultiProcessController* controller, bool ready, const MeasuredInput& measured,
-  const SignedDistanceSettings& settings, const Progress& progress, vtkInformation* outInfo,
-  int extent[6], vtkFloatArray* values, SignedDistanceResult& result)
+Status computePieces(vtkMultiProcessController* controller, bool ready,
+  const MeasuredInput& measured, const SignedDistanceSettings& settings, const Progress& progress,
+  vtkInformation* outInfo, int extent[6], vtkFloatArray* values, SignedDistanceResult& result)
 {
   const ControllerExchange exchange(controller);
   outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
-  const Agreement agreement = agree(
-    exchange, ready, measured.soup, measured.cloud.points.size(), measured.lattice, extent);
+  const Agreement agreement =
+    agree(exchange, ready, measured.soup, measured.cloud.points.size(), measured.lattice, extent);
   if (!agreement.why.empty())
   {
     return Status::failure("Cannot compute the field by pieces: " + agreement.why);
   }
   if (agreement.slabs) // slabs of whole planes (the split this filter asks for): each its own
   {
-    return computeField(measured, extent[4], extent[5], &exchange, settings, progress, values, result);
+    return computeField(
+      measured, extent[4], extent[5], &exchange, settings, progress, values, result);
   }
   // Pieces of other shapes (a consumer that splits otherwise): even shares of planes, handed round.
-  const Extent share = evenSlab(
-    measured.lattice, controller->GetLocalProcessId(), controller->GetNumberOfProcesses());
+  const Extent share =
+    evenSlab(measured.lattice, controller->GetLocalProcessId(), controller->GetNumberOfProcesses());
   vtkNew<vtkFloatArray> slab;
   const Status status =
     computeField(measured, share[4], share[5], &exchange, settings, progress, slab, result);

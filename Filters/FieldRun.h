@@ -31,17 +31,17 @@ struct MeasuredInput
 // The distances at planes first .. last of the lattice into `values`: all of them, or with
 // `exchange` this MPI rank's piece, computed with the other ranks. A failure says why (memory, a
 // rank that cannot); an abort leaves `result.completed` false.
-Status computeField(const MeasuredInput& measured, int first, int last, const SlabExchange* exchange,
-  const SignedDistanceSettings& settings, const Progress& progress, vtkFloatArray* values,
-  SignedDistanceResult& result);
+Status computeField(const MeasuredInput& measured, int first, int last,
+  const SlabExchange* exchange, const SignedDistanceSettings& settings, const Progress& progress,
+  vtkFloatArray* values, SignedDistanceResult& result);
 
 // This rank's piece (the update extent of `outInfo`, into `extent`) computed with the other ranks.
 // Collective: every rank must measure the same surface on the same grid (`ready`: this one could),
 // and one that cannot, or holds another input, stops all of them rather than leave the others
 // waiting for it.
-Status computePieces(vtkMultiProcessController* controller, bool ready, const MeasuredInput& measured,
-  const SignedDistanceSettings& settings, const Progress& progress, vtkInformation* outInfo,
-  int extent[6], vtkFloatArray* values, SignedDistanceResult& result);
+Status computePieces(vtkMultiProcessController* controller, bool ready,
+  const MeasuredInput& measured, const SignedDistanceSettings& settings, const Progress& progress,
+  vtkInformation* outInfo, int extent[6], vtkFloatArray* values, SignedDistanceResult& result);
 
 } // namespace convert
 } // namespace shrinkwrap

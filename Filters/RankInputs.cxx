@@ -4,17 +4,17 @@
 #include <vtkAppendFilter.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
 #include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
-#include <vtkStreamingDemandDrivenPipeline.h>
-#include <vtkCompositeDataSet.h>
-#include <vtkDataArray.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -54,7 +54,8 @@ public:
     this->add(array ? static_cast<std::uint64_t>(array->GetNumberOfValues()) : ~0ull);
     if (array && array->GetNumberOfValues() > 0)
     {
-      this->add(array->GetVoidPointer(0), static_cast<std::size_t>(array->GetNumberOfValues()) * array->GetDataTypeSize());
+      this->add(array->GetVoidPointer(0),
+        static_cast<std::size_t>(array->GetNumberOfValues()) * array->GetDataTypeSize());
     }
   }
   void add(vtkCellArray* cells)
@@ -129,14 +130,16 @@ vtkSmartPointer<vtkDataSet> unpacked(const char* bytes, std::size_t size)
   vtkNew<vtkPoints> coordinates;
   coordinates->SetDataTypeToDouble();
   coordinates->SetNumberOfPoints(points);
-  for (vtkIdType i = 0; i < points && at + 3 * sizeof(double) <= size; ++i, at += 3 * sizeof(double))
+  for (vtkIdType i = 0; i < points && at + 3 * sizeof(double) <= size;
+       ++i, at += 3 * sizeof(double))
   {
     double p[3];
     std::memcpy(p, bytes + at, sizeof(p));
     coordinates->SetPoint(i, p);
   }
   vtkSmartPointer<vtkPolyData> mesh = kind == 0 ? vtkSmartPointer<vtkPolyData>::New() : nullptr;
-  vtkSmartPointer<vtkUnstructuredGrid> grid = kind == 0 ? nullptr : vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkSmartPointer<vtkUnstructuredGrid> grid =
+    kind == 0 ? nullptr : vtkSmartPointer<vtkUnstructuredGrid>::New();
   if (mesh)
   {
     mesh->SetPoints(coordinates);
@@ -191,7 +194,8 @@ Messages ControllerExchange::allGather(const std::vector<char>& mine) const
   }
   Messages all;
   all.bytes.resize(static_cast<std::size_t>(offsets[n - 1] + lengths[n - 1]));
-  this->Controller->AllGatherV(mine.data(), all.bytes.data(), length, lengths.data(), offsets.data());
+  this->Controller->AllGatherV(
+    mine.data(), all.bytes.data(), length, lengths.data(), offsets.data());
   all.offsets.assign(offsets.begin(), offsets.end());
   all.offsets.push_back(all.bytes.size());
   return all;
@@ -218,7 +222,8 @@ std::uint64_t contentDigest(vtkDataObject* data)
     }
     if (auto* mesh = vtkPolyData::SafeDownCast(leaf))
     {
-      for (vtkCellArray* cells : { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
+      for (vtkCellArray* cells :
+        { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
       {
         digest.add(cells);
       }
@@ -232,7 +237,8 @@ std::uint64_t contentDigest(vtkDataObject* data)
   return digest.value();
 }
 
-std::vector<std::uint64_t> digestsOfRanks(vtkDataObject* input, vtkMultiProcessController* controller)
+std::vector<std::uint64_t> digestsOfRanks(
+  vtkDataObject* input, vtkMultiProcessController* controller)
 {
   const long long mine = input ? static_cast<long long>(contentDigest(input)) : 0;
   const int n = controller ? controller->GetNumberOfProcesses() : 1;
@@ -256,8 +262,8 @@ vtkSmartPointer<vtkDataSet> appendedLeaves(vtkDataObject* input)
   {
     return nullptr;
   }
-  const bool polygonal =
-    std::all_of(leaves.begin(), leaves.end(), [](vtkDataSet* leaf) { return vtkPolyData::SafeDownCast(leaf); });
+  const bool polygonal = std::all_of(
+    leaves.begin(), leaves.end(), [](vtkDataSet* leaf) { return vtkPolyData::SafeDownCast(leaf); });
   if (polygonal)
   {
     vtkNew<vtkAppendPolyData> append;
@@ -300,9 +306,11 @@ vtkDataObject* wholeInput(
   // Every rank sends its part once (nothing if a lower rank holds the same) and appends all parts
   // in rank order: the same whole on every rank.
   const int rank = controller->GetLocalProcessId();
-  const bool first = std::find(digests.begin(), digests.end(), digests[rank]) - digests.begin() == rank;
+  const bool first =
+    std::find(digests.begin(), digests.end(), digests[rank]) - digests.begin() == rank;
   const vtkSmartPointer<vtkDataSet> part = first && input ? appendedLeaves(input) : nullptr;
-  const Messages parts = ControllerExchange(controller).allGather(part ? packed(part) : std::vector<char>());
+  const Messages parts =
+    ControllerExchange(controller).allGather(part ? packed(part) : std::vector<char>());
   vtkNew<vtkMultiBlockDataSet> all;
   unsigned int block = 0;
   for (std::size_t r = 0; r < parts.count(); ++r)
@@ -325,7 +333,8 @@ std::vector<int> shareOut(const std::vector<double>& cost, int pieces)
 {
   std::vector<std::size_t> order(cost.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+  std::stable_sort(
+    order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   std::vector<double> load(std::max(1, pieces), 0);
   std::vector<int> piece(cost.size(), 0);
   for (std::size_t b : order)
@@ -345,14 +354,15 @@ PieceRequest pieceRequest(vtkInformation* outInfo)
   }
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
   {
-    request.pieces = std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+    request.pieces =
+      std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
   }
   return request;
 }
 
-std::vector<int> piecesOfLeaves(vtkCompositeDataSet* composite, const std::vector<vtkDataSet*>& leaves,
-  const PieceRequest& request, vtkMultiProcessController* controller,
-  const std::function<std::vector<int>()>& sharedOut)
+std::vector<int> piecesOfLeaves(vtkCompositeDataSet* composite,
+  const std::vector<vtkDataSet*>& leaves, const PieceRequest& request,
+  vtkMultiProcessController* controller, const std::function<std::vector<int>()>& sharedOut)
 {
   if (request.pieces > 1 && distributed(digestsOfRanks(composite, controller)))
   {

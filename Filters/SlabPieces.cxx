@@ -5,9 +5,9 @@
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationIntegerRequestKey.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
-#include <vtkMultiProcessController.h>
 
 #include <algorithm>
 #include <cstring>
@@ -61,8 +61,9 @@ Agreement agree(const ControllerExchange& exchange, bool ready, const TriangleSo
     int dims[3];
     double origin[3], spacing[3];
     int update[6];
-  } mine{ ready, static_cast<std::int64_t>(soup.points.size()), static_cast<std::int64_t>(soup.triangles.size()),
-    static_cast<std::int64_t>(loosePoints), { lattice.dims[0], lattice.dims[1], lattice.dims[2] },
+  } mine{ ready, static_cast<std::int64_t>(soup.points.size()),
+    static_cast<std::int64_t>(soup.triangles.size()), static_cast<std::int64_t>(loosePoints),
+    { lattice.dims[0], lattice.dims[1], lattice.dims[2] },
     { lattice.origin[0], lattice.origin[1], lattice.origin[2] },
     { lattice.spacing[0], lattice.spacing[1], lattice.spacing[2] },
     { update[0], update[1], update[2], update[3], update[4], update[5] } };
@@ -76,7 +77,8 @@ Agreement agree(const ControllerExchange& exchange, bool ready, const TriangleSo
     std::memcpy(&other, all.data(r), sizeof(other));
     const int* e = other.update;
     agreement.slabs = agreement.slabs &&
-      (e[5] < e[4] || (e[0] == 0 && e[1] == other.dims[0] - 1 && e[2] == 0 && e[3] == other.dims[1] - 1));
+      (e[5] < e[4] ||
+        (e[0] == 0 && e[1] == other.dims[0] - 1 && e[2] == 0 && e[3] == other.dims[1] - 1));
     if (!why.str().empty())
     {
       continue;
@@ -86,13 +88,15 @@ Agreement agree(const ControllerExchange& exchange, bool ready, const TriangleSo
       why << "MPI rank " << r << " cannot (see its error).";
     }
     else if (ready &&
-      (other.points != mine.points || other.triangles != mine.triangles || other.loose != mine.loose ||
-        !std::equal(other.dims, other.dims + 3, mine.dims) || !std::equal(other.origin, other.origin + 3, mine.origin) ||
+      (other.points != mine.points || other.triangles != mine.triangles ||
+        other.loose != mine.loose || !std::equal(other.dims, other.dims + 3, mine.dims) ||
+        !std::equal(other.origin, other.origin + 3, mine.origin) ||
         !std::equal(other.spacing, other.spacing + 3, mine.spacing)))
     {
-      why << "MPI rank " << r << " holds " << other.triangles << " triangles and a " << other.dims[0] << " x "
-          << other.dims[1] << " x " << other.dims[2] << " grid, rank " << exchange.rank() << " " << mine.triangles
-          << " and " << mine.dims[0] << " x " << mine.dims[1] << " x " << mine.dims[2]
+      why << "MPI rank " << r << " holds " << other.triangles << " triangles and a "
+          << other.dims[0] << " x " << other.dims[1] << " x " << other.dims[2] << " grid, rank "
+          << exchange.rank() << " " << mine.triangles << " and " << mine.dims[0] << " x "
+          << mine.dims[1] << " x " << mine.dims[2]
           << " (every rank needs the whole input and the same grid settings).";
     }
   }
@@ -103,7 +107,8 @@ Agreement agree(const ControllerExchange& exchange, bool ready, const TriangleSo
 // The planes rank r of n computes when the pieces asked for are not slabs: an even share.
 Extent evenSlab(const GridLattice& lattice, int r, int n)
 {
-  return { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, r * lattice.dims[2] / n, (r + 1) * lattice.dims[2] / n - 1 };
+  return { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, r * lattice.dims[2] / n,
+    (r + 1) * lattice.dims[2] / n - 1 };
 }
 
 // Each rank's piece (`wanted`, its update extent, of any shape) from the ranks' slabs of planes
@@ -122,7 +127,8 @@ void piecesFromSlabs(vtkMultiProcessController* controller, const GridLattice& l
   piece->SetNumberOfValues(nodesOf(own));
   for (int d = 0; d < n; ++d)
   {
-    const Extent target = { all[6 * d], all[6 * d + 1], all[6 * d + 2], all[6 * d + 3], all[6 * d + 4], all[6 * d + 5] };
+    const Extent target = { all[6 * d], all[6 * d + 1], all[6 * d + 2], all[6 * d + 3],
+      all[6 * d + 4], all[6 * d + 5] };
     const Extent part = intersection(mine, target);
     const int width = part[1] - part[0] + 1;
     std::vector<float> send(nodesOf(part));
@@ -139,8 +145,8 @@ void piecesFromSlabs(vtkMultiProcessController* controller, const GridLattice& l
       offsets[r] = r > 0 ? offsets[r - 1] + lengths[r - 1] : 0;
     }
     std::vector<float> received(rank == d ? offsets[n - 1] + lengths[n - 1] : 0);
-    controller->GatherV(send.data(), received.data(), static_cast<vtkIdType>(send.size()), lengths.data(),
-      offsets.data(), d);
+    controller->GatherV(send.data(), received.data(), static_cast<vtkIdType>(send.size()),
+      lengths.data(), offsets.data(), d);
     for (int r = 0; rank == d && r < n; ++r)
     {
       const Extent from = intersection(slabOf(r), target);
@@ -158,7 +164,8 @@ void piecesFromSlabs(vtkMultiProcessController* controller, const GridLattice& l
 // Ghost layers, when asked for (a contour or gradient across piece borders): the nodes beyond the
 // piece proper (as the pipeline's extent translator splits the grid) are marked, so that their
 // cells are not counted twice.
-void markGhosts(const shrinkwrap::GridLattice& lattice, vtkInformation* outInfo, vtkImageData* output)
+void markGhosts(
+  const shrinkwrap::GridLattice& lattice, vtkInformation* outInfo, vtkImageData* output)
 {
   int whole[6] = { 0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1 };
   int proper[6];

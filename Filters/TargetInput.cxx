@@ -15,13 +15,14 @@ namespace convert
 
 namespace
 {
-Status readPolygons(const PolygonMeshes& input, const Wording& words, TargetParts& parts,
-  Notes& notes)
+Status readPolygons(
+  const PolygonMeshes& input, const Wording& words, TargetParts& parts, Notes& notes)
 {
   const SoupCounts& counts = parts.counts;
   if (parts.polygons.triangles.empty() && counts.badCells == 0)
   {
-    return Status::failure("the " + std::string(words.input) + " has no polygons or 3-D cells, and "
+    return Status::failure("the " + std::string(words.input) +
+      " has no polygons or 3-D cells, and "
       "Input Geometry is Polygons; choose Automatic or Points to take its points");
   }
   if (counts.badCells > 0)
@@ -31,13 +32,15 @@ Status readPolygons(const PolygonMeshes& input, const Wording& words, TargetPart
   }
   if (!input.extractedFrom.empty())
   {
-    inform(notes, "the " + std::string(words.input) + " (" + input.extractedFrom + ") is " +
-        words.verb + " by its outer surface, as Extract Surface gives it");
+    inform(notes,
+      "the " + std::string(words.input) + " (" + input.extractedFrom + ") is " + words.verb +
+        " by its outer surface, as Extract Surface gives it");
   }
   if (!parts.use.points && (counts.lines > 0 || counts.vertices > 0))
   {
-    warn(notes, "Ignoring " + std::to_string(counts.lines) + " lines and " +
-        std::to_string(counts.vertices) + " vertices: only polygons and triangle strips have an "
+    warn(notes,
+      "Ignoring " + std::to_string(counts.lines) + " lines and " + std::to_string(counts.vertices) +
+        " vertices: only polygons and triangle strips have an "
         "inside");
   }
   return {};
@@ -58,14 +61,15 @@ void readPoints(vtkDataObject* data, const PolygonMeshes& input, const Wording& 
   }
   if (parts.points.empty())
   {
-    warn(notes, "Input Geometry is Polygons and Points, but every point of the " +
-        std::string(words.input) + " lies on its polygons: the polygons are " + words.verb);
+    warn(notes,
+      "Input Geometry is Polygons and Points, but every point of the " + std::string(words.input) +
+        " lies on its polygons: the polygons are " + words.verb);
   }
 }
 } // namespace
 
-Status readTarget(vtkDataObject* data, int inputGeometry, const Wording& words, TargetParts& parts,
-  Notes& notes)
+Status readTarget(
+  vtkDataObject* data, int inputGeometry, const Wording& words, TargetParts& parts, Notes& notes)
 {
   parts = TargetParts();
   const PolygonMeshes input = polygonMeshes(data);

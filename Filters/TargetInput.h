@@ -36,8 +36,8 @@ struct TargetParts
 };
 
 // The parts of `data` that `inputGeometry` (vtkInputGeometry) takes; why there are none, if none.
-Status readTarget(vtkDataObject* data, int inputGeometry, const Wording& words, TargetParts& parts,
-  Notes& notes);
+Status readTarget(
+  vtkDataObject* data, int inputGeometry, const Wording& words, TargetParts& parts, Notes& notes);
 
 // The target of a wrap from `data` (Wrap.h: makeTarget), with a note of the points wrapped.
 Status wrapTarget(vtkDataObject* data, int inputGeometry, WrapTarget& target, Notes& notes);

@@ -12,13 +12,13 @@
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkInformation.h>
-#include <vtkMatrix3x3.h>
-#include <vtkIntArray.h>
-#include <vtkFlyingEdges3D.h>
 #include <vtkFloatArray.h>
+#include <vtkFlyingEdges3D.h>
 #include <vtkIdList.h>
 #include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkIntArray.h>
+#include <vtkMatrix3x3.h>
 #include <vtkNew.h>
 #include <vtkOutputWindow.h>
 #include <vtkPointData.h>
@@ -113,7 +113,8 @@ void appendToSoup(vtkPolyData* input, TriangleSoup& soup, long long& badCells)
     const bool ok = valid(n, ids);
     for (vtkIdType k = 0; ok && k + 2 < n; ++k) // strips alternate orientation
     {
-      k % 2 == 0 ? addTriangle(ids[k], ids[k + 1], ids[k + 2]) : addTriangle(ids[k + 1], ids[k], ids[k + 2]);
+      k % 2 == 0 ? addTriangle(ids[k], ids[k + 1], ids[k + 2])
+                 : addTriangle(ids[k + 1], ids[k], ids[k + 2]);
     }
   });
 }
@@ -269,9 +270,11 @@ TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts)
 
 Status surfaceOf(vtkPolyData* mesh, TriangleSoup& surface)
 {
-  const Status refused = Status::failure("it must be made of triangles only, with finite points and valid point ids");
+  const Status refused =
+    Status::failure("it must be made of triangles only, with finite points and valid point ids");
   bool triangles = true;
-  forEachCell(mesh->GetPolys(), [&](vtkIdType n, const vtkIdType*) { triangles = triangles && n == 3; });
+  forEachCell(
+    mesh->GetPolys(), [&](vtkIdType n, const vtkIdType*) { triangles = triangles && n == 3; });
   if (!triangles)
   {
     return refused;
@@ -279,7 +282,8 @@ Status surfaceOf(vtkPolyData* mesh, TriangleSoup& surface)
   long long badCells = 0;
   surface = TriangleSoup();
   appendToSoup(mesh, surface, badCells);
-  if (badCells > 0 || surface.triangles.empty() || mesh->GetNumberOfStrips() > 0 || !surface.allFinite())
+  if (badCells > 0 || surface.triangles.empty() || mesh->GetNumberOfStrips() > 0 ||
+    !surface.allFinite())
   {
     return refused;
   }
@@ -337,18 +341,22 @@ Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid)
   {
     if (direction[k] != (k % 4 == 0 ? 1.0 : 0.0))
     {
-      return Status::failure("the distance field's image is rotated (its direction matrix is not the identity); "
-                             "resample it to an axis-aligned image first (Resample To Image)");
+      return Status::failure(
+        "the distance field's image is rotated (its direction matrix is not the identity); "
+        "resample it to an axis-aligned image first (Resample To Image)");
     }
   }
-  if (lattice.dims[0] < 2 || lattice.dims[1] < 2 || lattice.dims[2] < 2 || !(lattice.spacing.minCoeff() > 0))
+  if (lattice.dims[0] < 2 || lattice.dims[1] < 2 || lattice.dims[2] < 2 ||
+    !(lattice.spacing.minCoeff() > 0))
   {
-    return Status::failure("the distance field needs at least 2 nodes and a positive spacing on every axis");
+    return Status::failure(
+      "the distance field needs at least 2 nodes and a positive spacing on every axis");
   }
   if (values->GetNumberOfTuples() != lattice.nodeCount())
   {
     return Status::failure("the distance field's " + std::string(name) + " array has " +
-      std::to_string(values->GetNumberOfTuples()) + " values for " + std::to_string(lattice.nodeCount()) + " nodes");
+      std::to_string(values->GetNumberOfTuples()) + " values for " +
+      std::to_string(lattice.nodeCount()) + " nodes");
   }
   std::vector<float> v(values->GetNumberOfTuples());
   for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
@@ -356,7 +364,8 @@ Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid)
     v[i] = static_cast<float>(values->GetTuple1(i));
     if (!std::isfinite(v[i]))
     {
-      return Status::failure("the distance field has NaN or infinite values (node " + std::to_string(i) + ")");
+      return Status::failure(
+        "the distance field has NaN or infinite values (node " + std::to_string(i) + ")");
     }
   }
   grid = DistanceGrid(lattice, std::move(v));
@@ -393,7 +402,8 @@ TriangleSoup contour(const DistanceGrid& grid, double value)
   return surface;
 }
 
-void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles, vtkPolyData* output)
+void setTriangles(
+  const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

@@ -1,20 +1,19 @@
-// Between VTK's data and the core's, for both filters: polygon meshes to a triangle soup or surface,
-// image data to a distance grid and back, contours of a grid (VTK's Flying Edges), and the wrap's
-// output surface with its arrays.
+// Between VTK's data and the core's, for both filters: polygon meshes to a triangle soup or
+// surface, image data to a distance grid and back, contours of a grid (VTK's Flying Edges), and the
+// wrap's output surface with its arrays.
 #ifndef ShrinkWrap_VTKConversions_h
 #define ShrinkWrap_VTKConversions_h
 
-#include "Distance/DistanceGrid.h"
-#include "Distance/SignedDistance.h"
-#include "Distance/PointTree.h"
-#include "Distance/TargetDistance.h"
-#include "Surface/SelfIntersections.h"
 #include "Common/Notes.h"
 #include "Common/Status.h"
-#include "Wrap/WrapPlan.h"
+#include "Common/TriangleSoup.h"
+#include "Distance/DistanceGrid.h"
+#include "Distance/PointTree.h"
+#include "Distance/SignedDistance.h"
+#include "Distance/TargetDistance.h"
+#include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceGeometry.h"
-#include "Common/TriangleSoup.h"
-#include "Common/TriangleSoup.h"
+#include "Wrap/WrapPlan.h"
 
 #include <vtkCompositeDataSet.h>
 #include <vtkDemandDrivenPipeline.h>
@@ -36,12 +35,14 @@ namespace shrinkwrap
 namespace convert
 {
 
-// The polygon meshes of an input: itself, or the leaves of a composite dataset. A dataset of another
-// kind with cells (an unstructured grid, an image) gives its outer surface, as Extract Surface does.
+// The polygon meshes of an input: itself, or the leaves of a composite dataset. A dataset of
+// another kind with cells (an unstructured grid, an image) gives its outer surface, as Extract
+// Surface does.
 struct PolygonMeshes
 {
   std::vector<vtkPolyData*> meshes;
-  std::vector<vtkSmartPointer<vtkPolyData>> extracted; // the surfaces made here, which `meshes` holds
+  std::vector<vtkSmartPointer<vtkPolyData>>
+    extracted;               // the surfaces made here, which `meshes` holds
   std::string extractedFrom; // the kinds of data they were made of ("vtkUnstructuredGrid", ...)
 };
 PolygonMeshes polygonMeshes(vtkDataObject* input);
@@ -51,13 +52,13 @@ PolygonMeshes polygonMeshes(vtkDataObject* input);
 template <typename Points>
 Points pointsOf(vtkDataObject* input);
 
-// The points of a mesh that none of its polygons or strips uses (its vertices' and lines' points, and
-// points of no cell): the points beside its surface.
+// The points of a mesh that none of its polygons or strips uses (its vertices' and lines' points,
+// and points of no cell): the points beside its surface.
 template <typename Points>
 Points loosePointsOf(vtkPolyData* mesh);
 
-// Which parts of an input a filter takes, by its InputGeometry (0 automatic: the polygons when it has
-// any, else the points; 1 polygons, 2 points, 3 both).
+// Which parts of an input a filter takes, by its InputGeometry (0 automatic: the polygons when it
+// has any, else the points; 1 polygons, 2 points, 3 both).
 struct Geometry
 {
   bool polygons = false;
@@ -78,8 +79,8 @@ struct SoupCounts
 // vtkPolygon when n > 3, a fan where that fails) and strips.
 TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts);
 
-// A mesh of triangles only as a surface; fails for other polygons, strips, no triangles, invalid point
-// ids or points that are not finite.
+// A mesh of triangles only as a surface; fails for other polygons, strips, no triangles, invalid
+// point ids or points that are not finite.
 Status surfaceOf(vtkPolyData* mesh, TriangleSoup& surface);
 
 // Bounds of the points that polygons and strips use: the surface, without stray points or lines.
@@ -91,8 +92,8 @@ Box pointBounds(vtkDataObject* input);
 
 // The nodes of an image (its extent, origin and spacing) as a lattice.
 GridLattice latticeOf(vtkImageData* image);
-// The point array `name` of an image as a grid: one component, at least 2 nodes and a positive spacing
-// on every axis, finite values.
+// The point array `name` of an image as a grid: one component, at least 2 nodes and a positive
+// spacing on every axis, finite values.
 Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid);
 // A grid as an image whose point array `name` holds its values.
 vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name);
@@ -101,7 +102,8 @@ vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name
 TriangleSoup contour(const DistanceGrid& grid, double value);
 
 // Points (as doubles) and triangles as `output`'s geometry.
-void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles, vtkPolyData* output);
+void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles,
+  vtkPolyData* output);
 
 // Field data Signed (1 or 0) and DistanceStatus (the sentence of signStatus) of a field; a warning
 // note when the sign is one a user should hear of (signNeedsWarning).
@@ -115,7 +117,8 @@ void report(vtkObject* self, const char* filter, const std::vector<Note>& notes)
 // composite of the same kind as `composite`, or, without one, a `Leaf`; the output is kept when it
 // is of that kind already.
 template <typename Leaf>
-bool makeOutput(vtkInformation* request, vtkInformationVector* outputs, vtkCompositeDataSet* composite)
+bool makeOutput(
+  vtkInformation* request, vtkInformationVector* outputs, vtkCompositeDataSet* composite)
 {
   if (!request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
   {

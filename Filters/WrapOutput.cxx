@@ -37,8 +37,8 @@ Status writeWrap(const WrapSession& session, int wanted, double timeStep, double
     return Status::failure(
       "step " + std::to_string(surface.step) + " is not a closed surface: " + closed.message());
   }
-  writeSurface(surface.points, mesh, session.fields().target, surface.cached->tangentialVelocity,
-    output);
+  writeSurface(
+    surface.points, mesh, session.fields().target, surface.cached->tangentialVelocity, output);
   // The wrap must not pass through itself; if it does at this step, the cells say where.
   const SelfIntersections crossings = findSelfIntersections(surface.points, mesh.triangles());
   addSelfIntersections(crossings, output);
@@ -50,7 +50,8 @@ Status writeWrap(const WrapSession& session, int wanted, double timeStep, double
   else if (crossings.pairs > 0)
   {
     status = "self-intersecting: " + std::to_string(crossings.pairs) + " triangle pairs cross";
-    warn(notes, "The surface of step " + std::to_string(surface.step) + " passes through itself (" +
+    warn(notes,
+      "The surface of step " + std::to_string(surface.step) + " passes through itself (" +
         std::to_string(crossings.pairs) + " triangle pairs cross; cell array SelfIntersecting)");
   }
   addStepFields(surface.step, surface.step * timeStep, status, output);
@@ -75,8 +76,8 @@ Array* named(Array* array, const char* name, int components, vtkIdType tuples)
 }
 
 // Per vertex: d, -grad d . N, H (h = -H N), |V_i|, N and v_T.
-void addPointArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
-  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
+void addPointArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh,
+  const TargetDistance& field, const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
 {
   SurfaceGeometry g;
   computeGeometry(mesh, x, g);
@@ -99,7 +100,8 @@ void addPointArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const T
     const Vec3& v = tangentialVelocity[i];
     tangential->SetTuple3(i, v.x(), v.y(), v.z());
   }
-  for (vtkDataArray* a : { distance.Get(), alignment.Get(), curvature.Get(), coVolume.Get(), tangential.Get() })
+  for (vtkDataArray* a :
+    { distance.Get(), alignment.Get(), curvature.Get(), coVolume.Get(), tangential.Get() })
   {
     output->GetPointData()->AddArray(a);
   }
@@ -129,7 +131,6 @@ void addCellArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, vtkPolyD
   }
 }
 } // namespace
-
 
 void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
   const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
@@ -178,7 +179,8 @@ WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, do
   summary.steps = steps;
   summary.seconds = seconds;
   summary.vertices = static_cast<int>(output->GetNumberOfPoints());
-  if (vtkDataArray* d = output->GetPointData()->GetArray("Distance"); d && d->GetNumberOfTuples() > 0)
+  if (vtkDataArray* d = output->GetPointData()->GetArray("Distance");
+      d && d->GetNumberOfTuples() > 0)
   {
     std::vector<double> a(d->GetNumberOfTuples());
     for (vtkIdType i = 0; i < d->GetNumberOfTuples(); ++i)
@@ -187,9 +189,11 @@ WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, do
     }
     std::sort(a.begin(), a.end());
     const double last = static_cast<double>(a.size() - 1);
-    summary.distance = { a[static_cast<std::size_t>(0.5 * last)], a[static_cast<std::size_t>(0.95 * last)], a.back() };
+    summary.distance = { a[static_cast<std::size_t>(0.5 * last)],
+      a[static_cast<std::size_t>(0.95 * last)], a.back() };
   }
-  if (vtkDataArray* m = output->GetCellData()->GetArray("MinAngle"); m && m->GetNumberOfTuples() > 0)
+  if (vtkDataArray* m = output->GetCellData()->GetArray("MinAngle");
+      m && m->GetNumberOfTuples() > 0)
   {
     vtkIdType small = 0;
     for (vtkIdType t = 0; t < m->GetNumberOfTuples(); ++t)
@@ -215,12 +219,15 @@ std::string WrapSummary::text() const
     std::snprintf(length, sizeof(length), "Target Edge Length %.3g", *this->sizes.edgeLength);
   }
   std::snprintf(line, sizeof(line),
-    "%d steps in %.2f s, %d vertices: |distance| to the target median %.3g (%.2g cells), 95%% %.3g (%.2g cells), "
-    "largest %.3g (%.2g cells); %.2f%% of triangles under 20 degrees; closed 2-manifold, %lld self-intersecting "
+    "%d steps in %.2f s, %d vertices: |distance| to the target median %.3g (%.2g cells), 95%% %.3g "
+    "(%.2g cells), "
+    "largest %.3g (%.2g cells); %.2f%% of triangles under 20 degrees; closed 2-manifold, %lld "
+    "self-intersecting "
     "triangle pairs; Gap Size %.3g, %s, field cell %.3g",
-    this->steps, this->seconds, this->vertices, this->distance[0], this->distance[0] / c, this->distance[1],
-    this->distance[1] / c, this->distance[2], this->distance[2] / c, 100 * this->smallAngleShare,
-    this->selfIntersections, this->sizes.gap, length, this->sizes.cell);
+    this->steps, this->seconds, this->vertices, this->distance[0], this->distance[0] / c,
+    this->distance[1], this->distance[1] / c, this->distance[2], this->distance[2] / c,
+    100 * this->smallAngleShare, this->selfIntersections, this->sizes.gap, length,
+    this->sizes.cell);
   return line;
 }
 

@@ -44,13 +44,14 @@ void addSelfIntersections(const SelfIntersections& crossings, vtkPolyData* outpu
 // sizes the run used.
 struct WrapSummary
 {
-  std::array<double, 3> distance{}; // median, 95th percentile (value at rank floor(p (n - 1))), largest
+  std::array<double, 3>
+    distance{}; // median, 95th percentile (value at rank floor(p (n - 1))), largest
   WrapSizes sizes;
-  double smallAngleShare = 0;       // of the triangles
+  double smallAngleShare = 0; // of the triangles
   long long selfIntersections = 0;
   int vertices = 0, steps = 0;
-  double seconds = 0;               // computing (fields, start and steps) in this session
-  std::string text() const;         // one line: what the output messages show at the end of a run
+  double seconds = 0;       // computing (fields, start and steps) in this session
+  std::string text() const; // one line: what the output messages show at the end of a run
 };
 WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, double seconds);
 // As field data: DistancePercentiles, DistancePercentilesInCells (3 each), FieldCellSize, GapSize,

@@ -8,10 +8,10 @@
 #include "Wrap/Wrap.h"
 
 #include <vtkCompositeDataSet.h>
+#include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkPointData.h>
-#include <vtkImageData.h>
 #include <vtkPolyData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 
@@ -82,16 +82,18 @@ Status wrapInputs(
       if (info->Get(vtkDataObject::DATA_OBJECT()) == inputs.field)
       {
         fieldLattice = latticeOf(inputs.field);
-        if (const double* h = info->Has(vtkDataObject::SPACING()) ? info->Get(vtkDataObject::SPACING()) : nullptr)
+        if (const double* h =
+              info->Has(vtkDataObject::SPACING()) ? info->Get(vtkDataObject::SPACING()) : nullptr)
         {
           fieldLattice->spacing = Vec3(h[0], h[1], h[2]);
         }
       }
     }
   }
-  return targets <= 1 ? Status()
-                      : Status::failure("Shrink Wrap wraps one target at a time, and its Input holds " +
-                          std::to_string(targets) + " (besides a distance field)");
+  return targets <= 1
+    ? Status()
+    : Status::failure("Shrink Wrap wraps one target at a time, and its Input holds " +
+        std::to_string(targets) + " (besides a distance field)");
 }
 
 void advertiseSteps(vtkInformation* outInfo, int steps, double timeStep)
@@ -213,9 +215,9 @@ bool WrapRuns::start(Run& run, const WrapInputs& inputs, vtkMTimeType key, int i
   }
   WrapTarget target = this->TargetOf(inputs.target, inputGeometry).target;
   status = readGiven(inputs, target);
-  const WrapPlan* plan = status
-    ? this->plan(inputs.target, target.fieldLattice, target.givenStart, key, inputGeometry, settings)
-    : nullptr;
+  const WrapPlan* plan = status ? this->plan(inputs.target, target.fieldLattice, target.givenStart,
+                                    key, inputGeometry, settings)
+                                : nullptr;
   const Notes& read = this->targetNotes();
   notes.insert(notes.end(), read.begin(), read.end());
   if (status && !plan)

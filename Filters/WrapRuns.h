@@ -38,9 +38,9 @@ struct WrapInputs
 };
 
 // The wrap's inputs on the filter's ports. Port 0 may hold the target and its distance field
-// together (ParaView connects both there when both are selected as Shrink Wrap is created): an image
-// with a SignedDistance point array is then the field, unless port 1 has one. `fieldLattice` is the
-// field's as the pipeline information gives it (RequestInformation comes before the field is
+// together (ParaView connects both there when both are selected as Shrink Wrap is created): an
+// image with a SignedDistance point array is then the field, unless port 1 has one. `fieldLattice`
+// is the field's as the pipeline information gives it (RequestInformation comes before the field is
 // computed). Failure when port 0 holds more than one target.
 Status wrapInputs(
   vtkInformationVector** inputVector, WrapInputs& inputs, std::optional<GridLattice>& fieldLattice);
@@ -73,9 +73,9 @@ public:
   void clear();
   int computedSteps() const; // over all runs
 
-  // The plan for `target` as it is, with a field of `field`'s lattice and a given start or not, made
-  // once while `key` stays; null when none can be made (`status()` says why). Its target's notes
-  // (what of it is wrapped) are in `targetNotes()`.
+  // The plan for `target` as it is, with a field of `field`'s lattice and a given start or not,
+  // made once while `key` stays; null when none can be made (`status()` says why). Its target's
+  // notes (what of it is wrapped) are in `targetNotes()`.
   const WrapPlan* plan(vtkDataObject* target, const std::optional<GridLattice>& field,
     bool givenStart, vtkMTimeType key, int inputGeometry, const WrapSettings& settings);
   const Status& status() const { return this->Planned.status; }

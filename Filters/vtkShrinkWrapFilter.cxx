@@ -143,8 +143,7 @@ vtkTypeBool vtkShrinkWrapFilter::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // A composite target gives a composite of the same kind (a wrap per block), else a surface.
-  vtkCompositeDataSet* blocks =
-    this->WrapPerBlock ? convert::compositeOf(inputVector[0]) : nullptr;
+  vtkCompositeDataSet* blocks = this->WrapPerBlock ? convert::compositeOf(inputVector[0]) : nullptr;
   return convert::makeOutput<vtkPolyData>(request, outputVector, blocks) ||
     this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
@@ -177,8 +176,7 @@ int vtkShrinkWrapFilter::RequestInformation(
   convert::WrapInputs inputs;
   std::optional<GridLattice> field;
   const bool one = convert::wrapInputs(inputVector, inputs, field).ok();
-  const bool blockByBlock =
-    vtkCompositeDataSet::SafeDownCast(inputs.target) && this->WrapPerBlock;
+  const bool blockByBlock = vtkCompositeDataSet::SafeDownCast(inputs.target) && this->WrapPerBlock;
   if (one && inputs.target && !blockByBlock)
   {
     onAllCores([&] { // a cloud's spacing is measured on all cores
@@ -216,8 +214,7 @@ int vtkShrinkWrapFilter::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
   output->Initialize();
-  vtkCompositeDataSet* blocks =
-    this->WrapPerBlock ? convert::compositeOf(inputVector[0]) : nullptr;
+  vtkCompositeDataSet* blocks = this->WrapPerBlock ? convert::compositeOf(inputVector[0]) : nullptr;
   this->SetProgressShiftScale(0, 1); // (a run that threw may have left a block's share)
   try // memory can run out below any estimate (a process limit, a job's cap)
   {

@@ -5,10 +5,10 @@
  * Algorithm 3 of "Advection-Driven Shrink-Wrapping of Triangulated Surfaces": a starting surface
  * evolves by eq. (2), dF/dt = eps(d) Laplace-Beltrami(F) + eta(d) N + v_T, towards the target's
  * distance d, remeshed after every step. Every step is a time step of the output: the filter
- * advertises the times {0, tau, ..., N_t tau} and returns the surface at the time asked (the last one
- * when none is asked). Computed steps are cached: going back is instant, going forward resumes from
- * the newest cached step; a change of an input or a property drops the cache. An aborted run leaves
- * an empty output and its steps cached.
+ * advertises the times {0, tau, ..., N_t tau} and returns the surface at the time asked (the last
+ * one when none is asked). Computed steps are cached: going back is instant, going forward resumes
+ * from the newest cached step; a change of an input or a property drops the cache. An aborted run
+ * leaves an empty output and its steps cached.
  *
  * Inputs: port 0, the target: polygons, or any dataset with cells (its outer surface), or points
  * (InputGeometry); it may also hold the target's distance field (an image with SignedDistance, as
@@ -21,11 +21,12 @@
  * Output: the surface in the target's coordinates, with point data Distance, AdvectionAlignment,
  * MeanCurvature, CoVolume, Normals and TangentialVelocity, cell data MinAngle, MaxAngle,
  * JacobianCondition and SelfIntersecting, and field data StepIndex, Time, Status ("ok" or why not)
- * and the run's summary (Summary, DistancePercentiles, FieldCellSize, GapSize, TargetEdgeLength, ...).
+ * and the run's summary (Summary, DistancePercentiles, FieldCellSize, GapSize, TargetEdgeLength,
+ * ...).
  *
  * The properties are those of the panel, whose documentation (Plugin/ShrinkWrap.xml) is the
- * reference: the defaults come from the core's settings (Wrap/WrapSettings.h), where they are stated
- * once; CoreSettings() gives them for a wrap through the core alone (Wrap/Wrap.h).
+ * reference: the defaults come from the core's settings (Wrap/WrapSettings.h), where they are
+ * stated once; CoreSettings() gives them for a wrap through the core alone (Wrap/Wrap.h).
  */
 #ifndef vtkShrinkWrapFilter_h
 #define vtkShrinkWrapFilter_h
@@ -35,9 +36,9 @@
 
 #include "vtkInputGeometry.h" // for InputGeometry's values
 
-#include <memory>     // for the internals
-#include <optional>   // for a field's lattice
-#include <vector>     // for the inputs
+#include <memory>   // for the internals
+#include <optional> // for a field's lattice
+#include <vector>   // for the inputs
 
 class vtkCompositeDataSet;
 class vtkDataSet;
@@ -81,9 +82,15 @@ public:
   };
 
   /// Port 1: an image with "SignedDistance" (optional).
-  void SetDistanceFieldConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetDistanceFieldConnection(vtkAlgorithmOutput* output)
+  {
+    this->SetInputConnection(1, output);
+  }
   /// Port 2: a closed triangle surface to start from (optional).
-  void SetInitialSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
+  void SetInitialSurfaceConnection(vtkAlgorithmOutput* output)
+  {
+    this->SetInputConnection(2, output);
+  }
 
   /// What of the target is wrapped (vtkInputGeometry). Default AUTOMATIC.
   vtkSetClampMacro(
@@ -109,7 +116,8 @@ public:
   /// Adaptive edge lengths between EdgeLengthRange[0] L and EdgeLengthRange[1] L. Default 1 1.
   vtkSetVector2Macro(EdgeLengthRange, double);
   vtkGetVector2Macro(EdgeLengthRange, double);
-  /// Remesh after every step towards L. Default on; off keeps the vertex count (the paper's scheme).
+  /// Remesh after every step towards L. Default on; off keeps the vertex count (the paper's
+  /// scheme).
   vtkSetMacro(Remeshing, bool);
   vtkGetMacro(Remeshing, bool);
   vtkBooleanMacro(Remeshing, bool);
@@ -233,8 +241,8 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  void ExecuteBlocks(vtkCompositeDataSet* blocks, vtkInformationVector** inputVector, vtkInformation* outInfo,
-    vtkCompositeDataSet* output);
+  void ExecuteBlocks(vtkCompositeDataSet* blocks, vtkInformationVector** inputVector,
+    vtkInformation* outInfo, vtkCompositeDataSet* output);
   void SetProperties(const shrinkwrap::WrapSettings& settings); // the defaults are stated there
   template <typename Filter, typename Settings, typename Bind>
   static void BindProperties(Filter& filter, Settings& settings, Bind&& bind);
@@ -291,7 +299,8 @@ private:
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
   // One surface: of the target, or of all a composite target's blocks together.
-  void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
+  void ExecuteWhole(
+    vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
   void Execute(unsigned int slot, const shrinkwrap::convert::WrapInputs& inputs,
     vtkInformation* outInfo, vtkPolyData* output);
   void ShowSizes(const shrinkwrap::WrapSizes& sizes);

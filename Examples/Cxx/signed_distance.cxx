@@ -33,7 +33,9 @@ int main(int argc, char* argv[])
   vtkImageData* image = distance->GetOutput();
   int dims[3];
   image->GetDimensions(dims);
-  std::cout << "wrote " << argv[2] << ": " << dims[0] << " x " << dims[1] << " x " << dims[2] << " nodes, "
-            << (image->GetFieldData()->GetArray("Signed")->GetTuple1(0) ? "signed" : "unsigned") << "\n";
+  std::cout << "wrote " << argv[2] << ": " << dims[0] << " x " << dims[1] << " x " << dims[2]
+            << " nodes, "
+            << (image->GetFieldData()->GetArray("Signed")->GetTuple1(0) ? "signed" : "unsigned")
+            << "\n";
   return image->GetNumberOfPoints() > 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

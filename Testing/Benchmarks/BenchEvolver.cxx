@@ -1,6 +1,6 @@
 // Speed of one evolution step (assembly, redistribution, three solves) on icospheres, and of the
-// finest shrinking-sphere test of Section 4.2 end to end (2562 vertices, 384 steps), for both linear
-// solvers: conjugate gradients on the symmetric form (default) and the paper's BiCGSTAB.
+// finest shrinking-sphere test of Section 4.2 end to end (2562 vertices, 384 steps), for both
+// linear solvers: conjugate gradients on the symmetric form (default) and the paper's BiCGSTAB.
 //   BenchEvolver [--steps N]
 #include "Evolution/Evolver.h"
 #include "Surface/Icosphere.h"
@@ -83,7 +83,8 @@ int main(int argc, char* argv[])
 {
   const int steps = argc > 2 && std::string(argv[1]) == "--steps" ? std::atoi(argv[2]) : 20;
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [&] {
-    std::printf("| vertices | CG, none | CG, volume | BiCGSTAB, none | BiCGSTAB, volume |\n|---|---|---|---|---|\n");
+    std::printf("| vertices | CG, none | CG, volume | BiCGSTAB, none | BiCGSTAB, volume "
+                "|\n|---|---|---|---|---|\n");
     for (int level = 3; level <= 6; ++level)
     {
       std::printf("| %lld | %.2f ms | %.2f ms | %.2f ms | %.2f ms |\n", icosphereVertexCount(level),
@@ -93,14 +94,16 @@ int main(int argc, char* argv[])
         msPerStep(level, Redistribution::Volume, LinearSolver::BiCGSTAB, steps));
       std::fflush(stdout);
     }
-    std::printf("\nFinest shrinking-sphere test (2562 vertices, 384 steps, error norm of Table 2/3), end to end:\n\n");
+    std::printf("\nFinest shrinking-sphere test (2562 vertices, 384 steps, error norm of Table "
+                "2/3), end to end:\n\n");
     std::printf("| solver | redistribution | seconds | err |\n|---|---|---|---|\n");
     for (const auto solver : { LinearSolver::ConjugateGradient, LinearSolver::BiCGSTAB })
     {
       for (const auto r : { Redistribution::None, Redistribution::Volume })
       {
         const auto [seconds, err] = finestSphere(r, solver);
-        std::printf("| %s | %s | %.3f | %.4e |\n", solver == LinearSolver::BiCGSTAB ? "BiCGSTAB" : "CG",
+        std::printf("| %s | %s | %.3f | %.4e |\n",
+          solver == LinearSolver::BiCGSTAB ? "BiCGSTAB" : "CG",
           r == Redistribution::Volume ? "volume" : "none", seconds, err);
       }
     }

@@ -1,26 +1,30 @@
-// Shrink Wrap beside CGAL's alpha_wrap_3 in one run, on CGAL meshes with thin parts, fingers and legs,
-// holes, an open mesh and CAD parts with sharp edges (issue #10).
-//   BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b,...] [--set Name=value ...]
-//     [--points N [--noise percent] [--draw K] [--ramp R]] [--repeat N]  (issue #13: N points sampled on each mesh wrapped instead)
-// Ours: the defaults, and Target Edge Length diagonal / 25 and / 100 (the field's Resolution follows
-// L, so that a cell stays below L); the time includes the distance field. CGAL: alpha = diagonal / 20,
-// / 50, / 100, offset = alpha / 30 (CGAL's examples). Every wrap is judged the same way
+// Shrink Wrap beside CGAL's alpha_wrap_3 in one run, on CGAL meshes with thin parts, fingers and
+// legs, holes, an open mesh and CAD parts with sharp edges (issue #10).
+//   BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b,...] [--set Name=value
+//   ...]
+//     [--points N [--noise percent] [--draw K] [--ramp R]] [--repeat N]  (issue #13: N points
+//     sampled on each mesh wrapped instead)
+// Ours: the defaults, and Target Edge Length diagonal / 25 and / 100 (the field's Resolution
+// follows L, so that a cell stays below L); the time includes the distance field. CGAL: alpha =
+// diagonal / 20, / 50, / 100, offset = alpha / 30 (CGAL's examples). Every wrap is judged the same
+// way
 // (../Cxx/WrapEvaluation.h): 100,000 points sampled on each surface plus its vertices, one-sided
 // distances to the other surface (mean and largest, percent of the target's diagonal), crossing
 // triangle pairs (ours, and CGAL's does_self_intersect), closed and manifold, genus, the share of
 // triangles with a minimum angle below 20 degrees. --set applies a property to our wraps (D, C, C1,
 // C2, TimeStep, NumberOfSteps, Resolution, StartOffset, GapSize, TargetEdgeLength, ShortestEdge and
 // LongestEdge (EdgeLengthRange), Remeshing,
-// StartingShape, SubdivisionLevel, InitialRelaxation, CloseHoles, CoverRims, FitFacets), for tuning. --time-only runs our defaults alone and prints their
-// time and vertex count, without evaluation or peers (for profiling); with --points, our wrap of the
-// points evaluated, without peers. --no-reconstruction leaves out vtkSurfaceReconstructionFilter (the
-// slowest peer of --points) for a quicker run beside alpha wrap alone. --repeat N runs every wrap N
-// times and reports the fastest (this machine's times vary by 20% from run to run; the fastest of a
-// few is the one least disturbed), each of ours by a new filter, so that none reuses another's work.
-// --draw K samples the points (and their noise) with other seeds: a largest distance depends on where
-// the points fall, and one draw cannot tell a trend from luck. --ramp R makes the points' density fall R
-// times along x (a scan's far side): a sample is kept with a probability from 1 at the box's largest x
-// to 1 / R at its smallest.
+// StartingShape, SubdivisionLevel, InitialRelaxation, CloseHoles, CoverRims, FitFacets), for
+// tuning. --time-only runs our defaults alone and prints their time and vertex count, without
+// evaluation or peers (for profiling); with --points, our wrap of the points evaluated, without
+// peers. --no-reconstruction leaves out vtkSurfaceReconstructionFilter (the slowest peer of
+// --points) for a quicker run beside alpha wrap alone. --repeat N runs every wrap N times and
+// reports the fastest (this machine's times vary by 20% from run to run; the fastest of a few is
+// the one least disturbed), each of ours by a new filter, so that none reuses another's work.
+// --draw K samples the points (and their noise) with other seeds: a largest distance depends on
+// where the points fall, and one draw cannot tell a trend from luck. --ramp R makes the points'
+// density fall R times along x (a scan's far side): a sample is kept with a probability from 1 at
+// the box's largest x to 1 / R at its smallest.
 #include "TestUtilities.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
@@ -40,10 +44,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <limits>
-#include <random>
 #include <functional>
+#include <limits>
 #include <map>
+#include <random>
 #include <sstream>
 
 namespace
@@ -81,7 +85,8 @@ void write(const TriangleSoup& soup, const std::string& path)
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(mesh);
   writer->SetFileName(path.c_str());
-  writer->SetDataModeToBinary(); // inline: this ParaView's reader rejects its own appended base64 here
+  writer
+    ->SetDataModeToBinary(); // inline: this ParaView's reader rejects its own appended base64 here
   writer->Write();
 }
 
@@ -125,12 +130,13 @@ TriangleSoup soupOf(const CgalMesh& mesh)
 
 void header()
 {
-  std::printf("| method | vertices | time s | mean w→t | mean t→w | max w→t | max t→w | self-int. pairs (CGAL) | closed manifold | genus | angles < 20° | status |\n"
+  std::printf("| method | vertices | time s | mean w→t | mean t→w | max w→t | max t→w | self-int. "
+              "pairs (CGAL) | closed manifold | genus | angles < 20° | status |\n"
               "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 }
 
-void row(const std::string& method, double time, const TriangleSoup& wrap, const TriangleSoup& target,
-  const std::string& status)
+void row(const std::string& method, double time, const TriangleSoup& wrap,
+  const TriangleSoup& target, const std::string& status)
 {
   const testing::WrapFigures f = testing::evaluateWrap(wrap, target);
   bool cgalSelf = false;
@@ -139,10 +145,11 @@ void row(const std::string& method, double time, const TriangleSoup& wrap, const
     const CgalMesh mesh = cgalMesh(wrap);
     cgalSelf = CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
   }
-  std::printf("| %s | %d | %.2f | %.3f%% | %.3f%% | %.2f%% | %.2f%% | %lld (%s) | %s | %d | %.2f%% | %s |\n",
-    method.c_str(), f.vertices, time, f.wrapToTarget.mean, f.targetToWrap.mean, f.wrapToTarget.largest,
-    f.targetToWrap.largest, f.selfIntersections, cgalSelf ? "yes" : "no", f.closedManifold ? "yes" : "no",
-    f.genus, f.smallAngles, status.c_str());
+  std::printf(
+    "| %s | %d | %.2f | %.3f%% | %.3f%% | %.2f%% | %.2f%% | %lld (%s) | %s | %d | %.2f%% | %s |\n",
+    method.c_str(), f.vertices, time, f.wrapToTarget.mean, f.targetToWrap.mean,
+    f.wrapToTarget.largest, f.targetToWrap.largest, f.selfIntersections, cgalSelf ? "yes" : "no",
+    f.closedManifold ? "yes" : "no", f.genus, f.smallAngles, status.c_str());
   std::fflush(stdout);
 }
 
@@ -181,7 +188,8 @@ std::vector<Vec3> sampledCloud(const TriangleSoup& target, const CloudSampling& 
   // Enough samples that the kept ones reach the count: at least one in `ramp` is kept.
   const int drawn = static_cast<int>(std::ceil(sampling.count * ramp));
   std::vector<Vec3> samples = testing::samplePoints(target, drawn, 7 + sampling.draw);
-  samples.erase(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(target.points.size())); // samples only
+  samples.erase(samples.begin(),
+    samples.begin() + static_cast<std::ptrdiff_t>(target.points.size())); // samples only
   std::mt19937_64 random(11 + sampling.draw);
   std::uniform_real_distribution<double> unit(0, 1);
   std::vector<Vec3> cloud;
@@ -205,10 +213,11 @@ std::vector<Vec3> sampledCloud(const TriangleSoup& target, const CloudSampling& 
 // Points sampled on the target (sampledCloud), wrapped by ours at its defaults, alpha_wrap_3 on the
 // same points (alpha = diagonal / 20, / 50, / 100, offset alpha / 30) and VTK's
 // vtkSurfaceReconstructionFilter + contour at 0; every wrap judged against the original mesh (the
-// truth). With `out`, the cloud and the wraps are written as <out>_target.vtp, <out>_shrinkwrap.vtp,
-// <out>_alphawrap_<divisor>.vtp.
-void cloudRows(const TriangleSoup& target, const CloudSampling& sampling, const std::vector<std::pair<std::string, double>>& sets,
-  const std::string& out, bool peers, bool withReconstruction, int repeats)
+// truth). With `out`, the cloud and the wraps are written as <out>_target.vtp,
+// <out>_shrinkwrap.vtp, <out>_alphawrap_<divisor>.vtp.
+void cloudRows(const TriangleSoup& target, const CloudSampling& sampling,
+  const std::vector<std::pair<std::string, double>>& sets, const std::string& out, bool peers,
+  bool withReconstruction, int repeats)
 {
   const double diagonal = target.bounds().diagonal();
   const std::vector<Vec3> cloud = sampledCloud(target, sampling);
@@ -244,7 +253,8 @@ void cloudRows(const TriangleSoup& target, const CloudSampling& sampling, const 
       wrap = configuredWrap(input, sets);
       wrap->Update();
     });
-    auto* status = vtkStringArray::SafeDownCast(wrap->GetOutput()->GetFieldData()->GetAbstractArray("Status"));
+    auto* status =
+      vtkStringArray::SafeDownCast(wrap->GetOutput()->GetFieldData()->GetAbstractArray("Status"));
     const TriangleSoup soup = testing::triangulated(wrap->GetOutput());
     row("Shrink Wrap, defaults", total, soup, target, status ? status->GetValue(0) : "none");
     if (!out.empty())
@@ -286,9 +296,11 @@ void cloudRows(const TriangleSoup& target, const CloudSampling& sampling, const 
       reconstruction->Modified();
       contour->Update();
     });
-    // The reconstruction's grid is in its own index space scaled to the points' bounds: the contour is
-    // already in the input's coordinates (vtkSurfaceReconstructionFilter sets origin and spacing).
-    row("vtkSurfaceReconstructionFilter + contour", total, testing::triangulated(contour->GetOutput()), target, "ok");
+    // The reconstruction's grid is in its own index space scaled to the points' bounds: the contour
+    // is already in the input's coordinates (vtkSurfaceReconstructionFilter sets origin and
+    // spacing).
+    row("vtkSurfaceReconstructionFilter + contour", total,
+      testing::triangulated(contour->GetOutput()), target, "ok");
   }
 }
 const std::map<std::string, Setter>& setters()
@@ -299,20 +311,31 @@ const std::map<std::string, Setter>& setters()
     { "C1", [](vtkShrinkWrapFilter* w, double v) { w->SetC1(v); } },
     { "C2", [](vtkShrinkWrapFilter* w, double v) { w->SetC2(v); } },
     { "TimeStep", [](vtkShrinkWrapFilter* w, double v) { w->SetTimeStep(v); } },
-    { "NumberOfSteps", [](vtkShrinkWrapFilter* w, double v) { w->SetNumberOfSteps(static_cast<int>(v)); } },
-    { "Resolution", [](vtkShrinkWrapFilter* w, double v) { w->SetResolution(static_cast<int>(v)); } },
+    { "NumberOfSteps",
+      [](vtkShrinkWrapFilter* w, double v) { w->SetNumberOfSteps(static_cast<int>(v)); } },
+    { "Resolution",
+      [](vtkShrinkWrapFilter* w, double v) { w->SetResolution(static_cast<int>(v)); } },
     { "StartOffset", [](vtkShrinkWrapFilter* w, double v) { w->SetStartOffset(v); } },
     { "GapSize", [](vtkShrinkWrapFilter* w, double v) { w->SetGapSize(v); } },
     { "TargetEdgeLength", [](vtkShrinkWrapFilter* w, double v) { w->SetTargetEdgeLength(v); } },
-    { "ShortestEdge", [](vtkShrinkWrapFilter* w, double v) { w->SetEdgeLengthRange(v, w->GetEdgeLengthRange()[1]); } },
-    { "LongestEdge", [](vtkShrinkWrapFilter* w, double v) { w->SetEdgeLengthRange(w->GetEdgeLengthRange()[0], v); } },
+    { "ShortestEdge",
+      [](vtkShrinkWrapFilter* w, double v) {
+        w->SetEdgeLengthRange(v, w->GetEdgeLengthRange()[1]);
+      } },
+    { "LongestEdge",
+      [](vtkShrinkWrapFilter* w, double v) {
+        w->SetEdgeLengthRange(w->GetEdgeLengthRange()[0], v);
+      } },
     { "Remeshing", [](vtkShrinkWrapFilter* w, double v) { w->SetRemeshing(v != 0); } },
-    { "StartingShape", [](vtkShrinkWrapFilter* w, double v) { w->SetStartingShape(static_cast<int>(v)); } },
+    { "StartingShape",
+      [](vtkShrinkWrapFilter* w, double v) { w->SetStartingShape(static_cast<int>(v)); } },
     { "CloseHoles", [](vtkShrinkWrapFilter* w, double v) { w->SetCloseHoles(v != 0); } },
     { "CoverRims", [](vtkShrinkWrapFilter* w, double v) { w->SetCoverRims(v != 0); } },
     { "FitFacets", [](vtkShrinkWrapFilter* w, double v) { w->SetFitFacets(v != 0); } },
-    { "InitialRelaxation", [](vtkShrinkWrapFilter* w, double v) { w->SetInitialRelaxation(static_cast<int>(v)); } },
-    { "SubdivisionLevel", [](vtkShrinkWrapFilter* w, double v) { w->SetSubdivisionLevel(static_cast<int>(v)); } },
+    { "InitialRelaxation",
+      [](vtkShrinkWrapFilter* w, double v) { w->SetInitialRelaxation(static_cast<int>(v)); } },
+    { "SubdivisionLevel",
+      [](vtkShrinkWrapFilter* w, double v) { w->SetSubdivisionLevel(static_cast<int>(v)); } },
   };
   return s;
 }
@@ -322,20 +345,23 @@ int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::cerr << "usage: BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b] [--set Name=value] [--points N [--noise percent] [--draw K] [--ramp R]] [--repeat N] [--defaults-only] [--time-only] [--no-reconstruction]\n";
+    std::cerr << "usage: BenchShrinkWrap <CGAL data/meshes folder> [--out folder] [--meshes a,b] "
+                 "[--set Name=value] [--points N [--noise percent] [--draw K] [--ramp R]] "
+                 "[--repeat N] [--defaults-only] [--time-only] [--no-reconstruction]\n";
     return 2;
   }
   const std::string folder = argv[1];
   std::string out;
-  std::vector<std::string> names = { "camel", "hand", "ChineseDragon-10kv", "mech-holes-shark", "fandisk",
-    "elephant-with-holes", "armadillo" };
+  std::vector<std::string> names = { "camel", "hand", "ChineseDragon-10kv", "mech-holes-shark",
+    "fandisk", "elephant-with-holes", "armadillo" };
   std::vector<std::pair<std::string, double>> sets;
   bool ourVariants = true;
   bool timeOnly = false;
   bool withReconstruction = true; // --no-reconstruction
-  int repeats = 1;    // --repeat: the fastest of this many runs of every wrap
-  CloudSampling sampling; // --points (wrap that many points sampled on each mesh instead of it), --noise,
-                          // --draw, --ramp
+  int repeats = 1;                // --repeat: the fastest of this many runs of every wrap
+  CloudSampling
+    sampling; // --points (wrap that many points sampled on each mesh instead of it), --noise,
+              // --draw, --ramp
   for (int a = 2; a < argc; ++a)
   {
     const std::string arg = argv[a];
@@ -417,7 +443,8 @@ int main(int argc, char* argv[])
     }
     if (!timeOnly)
     {
-      std::printf("\n%s: %zu triangles, distances in %% of the diagonal %.4g\n\n", name.c_str(), target.triangles.size(), diagonal);
+      std::printf("\n%s: %zu triangles, distances in %% of the diagonal %.4g\n\n", name.c_str(),
+        target.triangles.size(), diagonal);
       header();
     }
     if (sampling.count > 0)
@@ -428,7 +455,8 @@ int main(int argc, char* argv[])
     }
 
     // Ours: the defaults, then two other target edge lengths.
-    for (const double divisor : ourVariants ? std::vector<double>{ 0, 25, 100 } : std::vector<double>{ 0 })
+    for (const double divisor :
+      ourVariants ? std::vector<double>{ 0, 25, 100 } : std::vector<double>{ 0 })
     {
       vtkSmartPointer<vtkShrinkWrapFilter> wrap;
       const double total = fastestOf(repeats, [&] {
@@ -436,20 +464,24 @@ int main(int argc, char* argv[])
         if (divisor > 0)
         {
           wrap->SetTargetEdgeLength(diagonal / divisor);
-          // The field's cell follows L: the default Resolution belongs to L = diagonal / 50 (never coarser).
+          // The field's cell follows L: the default Resolution belongs to L = diagonal / 50 (never
+          // coarser).
           const int resolution = wrap->GetResolution();
           wrap->SetResolution(std::max(resolution, static_cast<int>(resolution * divisor / 50)));
         }
         wrap->Update();
       });
       vtkPolyData* result = wrap->GetOutput();
-      auto* status = vtkStringArray::SafeDownCast(result->GetFieldData()->GetAbstractArray("Status"));
+      auto* status =
+        vtkStringArray::SafeDownCast(result->GetFieldData()->GetAbstractArray("Status"));
       const std::string label = divisor > 0
-        ? "Shrink Wrap L = diag/" + std::to_string(static_cast<int>(divisor)) + ", Resolution " + std::to_string(wrap->GetResolution())
+        ? "Shrink Wrap L = diag/" + std::to_string(static_cast<int>(divisor)) + ", Resolution " +
+          std::to_string(wrap->GetResolution())
         : std::string("Shrink Wrap, defaults");
       if (timeOnly)
       {
-        std::printf("%s: %lld vertices, %.3f s\n", name.c_str(), result->GetNumberOfPoints(), total);
+        std::printf(
+          "%s: %lld vertices, %.3f s\n", name.c_str(), result->GetNumberOfPoints(), total);
         continue;
       }
       const TriangleSoup soup = testing::triangulated(result);
@@ -473,7 +505,8 @@ int main(int argc, char* argv[])
     std::vector<std::array<std::size_t, 3>> faces;
     for (const auto& t : target.triangles)
     {
-      faces.push_back({ static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]), static_cast<std::size_t>(t[2]) });
+      faces.push_back({ static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]),
+        static_cast<std::size_t>(t[2]) });
     }
     for (const int divisor : { 20, 50, 100 })
     {

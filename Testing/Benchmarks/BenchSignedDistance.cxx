@@ -1,15 +1,16 @@
 // Table 1 of the paper on this machine, with peers on the same grid in the same run.
 //
-//   BenchSignedDistance <mesh.obj|.off> [--runs N] [--resolutions 90,120,180,240] [--no-vtk] [--no-accuracy]
-//   BenchSignedDistance <mesh> --memory R     (peak memory of one run at resolution R, fresh process)
-//   BenchSignedDistance <mesh> --points N      (issue #13: N points sampled on the mesh, measured as a
+//   BenchSignedDistance <mesh.obj|.off> [--runs N] [--resolutions 90,120,180,240] [--no-vtk]
+//   [--no-accuracy] BenchSignedDistance <mesh> --memory R     (peak memory of one run at resolution
+//   R, fresh process) BenchSignedDistance <mesh> --points N      (issue #13: N points sampled on
+//   the mesh, measured as a
 //                                               cloud, beside the mesh's field on the same grid)
 //
 // For every resolution: Mesh Signed Distance (the filter, median of N runs, with the core's stage
 // times), OpenVDB meshToVolume (narrow band of 3 voxels; and that band plus fast sweeping over the
 // whole grid, by maskSdf), and VTK's vtkImplicitPolyDataDistance at every node where it finishes in
-// about a minute. Accuracy (mean and max |error| in cells against exact distances from the AABB tree)
-// is shown for the fields that cover the whole grid. Prints a Markdown table.
+// about a minute. Accuracy (mean and max |error| in cells against exact distances from the AABB
+// tree) is shown for the fields that cover the whole grid. Prints a Markdown table.
 #include "Common/Parallel.h"
 #include "Distance/SignedDistance.h"
 #include "TestUtilities.h"
@@ -17,8 +18,8 @@
 #include "vtkMeshSignedDistance.h"
 
 #include <vtkImplicitPolyDataDistance.h>
-#include <vtkPoints.h>
 #include <vtkOBJReader.h>
+#include <vtkPoints.h>
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/FastSweeping.h>
@@ -60,7 +61,8 @@ vtkSmartPointer<vtkPolyData> load(const std::string& path)
   return reader->GetOutput();
 }
 
-// Mean and max |error| in cells of a field given as a function of the node, against exact distances.
+// Mean and max |error| in cells of a field given as a function of the node, against exact
+// distances.
 struct Accuracy
 {
   double mean = -1, max = -1;
@@ -95,7 +97,8 @@ Accuracy accuracyOf(const shrinkwrap::GridLattice& lattice, const std::vector<fl
   return { sum / lattice.nodeCount() / h, *std::max_element(maxes.begin(), maxes.end()) / h };
 }
 
-std::vector<float> exactDistances(const shrinkwrap::TriangleSoup& soup, const shrinkwrap::GridLattice& lattice)
+std::vector<float> exactDistances(
+  const shrinkwrap::TriangleSoup& soup, const shrinkwrap::GridLattice& lattice)
 {
   const shrinkwrap::AABBTree tree(soup);
   std::vector<float> exact(lattice.nodeCount());
@@ -105,8 +108,8 @@ std::vector<float> exactDistances(const shrinkwrap::TriangleSoup& soup, const sh
       for (int k = b; k < e; ++k)
         for (int j = 0; j < d[1]; ++j)
           for (int i = 0; i < d[0]; ++i)
-            exact[lattice.index(i, j, k)] =
-              static_cast<float>(std::sqrt(tree.closestPoint(lattice.position(i, j, k)).squaredDistance));
+            exact[lattice.index(i, j, k)] = static_cast<float>(
+              std::sqrt(tree.closestPoint(lattice.position(i, j, k)).squaredDistance));
     });
   });
   return exact;
@@ -140,20 +143,23 @@ long currentRssKiB()
   }
   return 0;
 }
-// Issue #13's speed class: the field of N points sampled on the mesh beside the mesh's own field, on
-// the same grid (the mesh's), same run; its accuracy against the exact distance to the nearest point.
-void pointRows(vtkPolyData* mesh, const shrinkwrap::TriangleSoup& soup, int count, const std::vector<int>& resolutions,
-  int runs)
+// Issue #13's speed class: the field of N points sampled on the mesh beside the mesh's own field,
+// on the same grid (the mesh's), same run; its accuracy against the exact distance to the nearest
+// point.
+void pointRows(vtkPolyData* mesh, const shrinkwrap::TriangleSoup& soup, int count,
+  const std::vector<int>& resolutions, int runs)
 {
   std::vector<shrinkwrap::Vec3> cloud = testing::samplePoints(soup, count, 7);
-  cloud.erase(cloud.begin(), cloud.begin() + static_cast<std::ptrdiff_t>(soup.points.size())); // samples only
+  cloud.erase(
+    cloud.begin(), cloud.begin() + static_cast<std::ptrdiff_t>(soup.points.size())); // samples only
   vtkNew<vtkPoints> points;
   for (const shrinkwrap::Vec3& p : cloud)
     points->InsertNextPoint(p.data());
   vtkNew<vtkPolyData> input;
   input->SetPoints(points);
   std::printf("%d points sampled on the mesh, %d runs per figure (median)\n\n", count, runs);
-  std::printf("| grid | nodes | mesh field | **points field** | ratio points / mesh | points mean err | points max err |\n");
+  std::printf("| grid | nodes | mesh field | **points field** | ratio points / mesh | points mean "
+              "err | points max err |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   for (int resolution : resolutions)
   {
@@ -166,7 +172,8 @@ void pointRows(vtkPolyData* mesh, const shrinkwrap::TriangleSoup& soup, int coun
     pointField->SetInputData(input);
     pointField->UseExplicitGridOn();
     const shrinkwrap::Box box = lattice.bounds();
-    pointField->SetOutputBounds(box.min.x(), box.max.x(), box.min.y(), box.max.y(), box.min.z(), box.max.z());
+    pointField->SetOutputBounds(
+      box.min.x(), box.max.x(), box.min.y(), box.max.y(), box.min.z(), box.max.z());
     pointField->SetOutputDimensions(lattice.dims[0], lattice.dims[1], lattice.dims[2]);
     std::vector<double> meshTimes, pointTimes; // interleaved: the machine's noise hits both
     for (int r = 0; r < runs; ++r)
@@ -181,12 +188,14 @@ void pointRows(vtkPolyData* mesh, const shrinkwrap::TriangleSoup& soup, int coun
     for (int i = 0; i < static_cast<int>(cloud.size()); ++i)
       pointSoup.triangles.push_back({ i, i, i });
     const std::vector<float> exact = exactDistances(pointSoup, lattice);
-    auto* values = vtkFloatArray::SafeDownCast(pointField->GetOutput()->GetPointData()->GetArray("SignedDistance"));
-    const Accuracy accuracy =
-      accuracyOf(lattice, exact, [&](int i, int j, int k) { return values->GetValue(lattice.index(i, j, k)); });
-    std::printf("| %dx%dx%d | %lld | %.3f | **%.3f** | %.2f | %.3f h | %.3f h |\n", lattice.dims[0] - 1,
-      lattice.dims[1] - 1, lattice.dims[2] - 1, static_cast<long long>(lattice.nodeCount()), median(meshTimes),
-      median(pointTimes), median(pointTimes) / median(meshTimes), accuracy.mean, accuracy.max);
+    auto* values = vtkFloatArray::SafeDownCast(
+      pointField->GetOutput()->GetPointData()->GetArray("SignedDistance"));
+    const Accuracy accuracy = accuracyOf(lattice, exact,
+      [&](int i, int j, int k) { return values->GetValue(lattice.index(i, j, k)); });
+    std::printf("| %dx%dx%d | %lld | %.3f | **%.3f** | %.2f | %.3f h | %.3f h |\n",
+      lattice.dims[0] - 1, lattice.dims[1] - 1, lattice.dims[2] - 1,
+      static_cast<long long>(lattice.nodeCount()), median(meshTimes), median(pointTimes),
+      median(pointTimes) / median(meshTimes), accuracy.mean, accuracy.max);
   }
 }
 } // namespace
@@ -195,7 +204,8 @@ int main(int argc, char* argv[])
 {
   if (argc < 2)
   {
-    std::cerr << "usage: BenchSignedDistance mesh [--runs N] [--resolutions a,b] [--no-vtk] [--no-accuracy] [--memory R] "
+    std::cerr << "usage: BenchSignedDistance mesh [--runs N] [--resolutions a,b] [--no-vtk] "
+                 "[--no-accuracy] [--memory R] "
                  "[--points N]\n";
     return 2;
   }
@@ -247,9 +257,11 @@ int main(int argc, char* argv[])
     filter->Update();
     const double output = 4.0 * filter->GetOutput()->GetNumberOfPoints() / 1024;
     const long peak = peakRssKiB();
-    std::printf("memory at resolution %d: output array %.1f MiB, peak RSS growth %.1f MiB = %.2f x the output "
+    std::printf("memory at resolution %d: output array %.1f MiB, peak RSS growth %.1f MiB = %.2f x "
+                "the output "
                 "array (mesh and process before the run: %.1f MiB)\n",
-      memoryResolution, output / 1024, (peak - before) / 1024.0, (peak - before) / output, before / 1024.0);
+      memoryResolution, output / 1024, (peak - before) / 1024.0, (peak - before) / output,
+      before / 1024.0);
     return 0;
   }
 
@@ -263,12 +275,17 @@ int main(int argc, char* argv[])
   vtkNew<vtkImplicitPolyDataDistance> vtkDistance;
   vtkDistance->SetInput(mesh);
 
-  std::printf("mesh %s: %zu triangles, %d runs per figure (median), %d threads\n\n", argv[1], soup.triangles.size(),
-    runs, std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
-  std::printf("| grid | nodes | tree | outline | band | sweep | sign | **ours total** | mean err | max err "
-              "| VDB band 3 | VDB band+sweep | VDB mean err | VDB max err | ratio VDB b+s / ours | vtkImplicitPolyDataDistance | ratio VTK / ours "
-              "| signed by | core | core without winding number | ratio | sampled far nodes against the winding number |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("mesh %s: %zu triangles, %d runs per figure (median), %d threads\n\n", argv[1],
+    soup.triangles.size(), runs,
+    std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
+  std::printf(
+    "| grid | nodes | tree | outline | band | sweep | sign | **ours total** | mean err | max err "
+    "| VDB band 3 | VDB band+sweep | VDB mean err | VDB max err | ratio VDB b+s / ours | "
+    "vtkImplicitPolyDataDistance | ratio VTK / ours "
+    "| signed by | core | core without winding number | ratio | sampled far nodes against the "
+    "winding number |\n");
+  std::printf(
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   double vtkSecondsPerNode = 0;
   for (int resolution : resolutions)
   {
@@ -285,8 +302,9 @@ int main(int argc, char* argv[])
     vtkImageData* image = filter->GetOutput();
     const shrinkwrap::GridLattice lattice = testing::latticeOf(image);
 
-    // Stage times from the core on the same grid, and the core's time without the winding-number sign
-    // (where the votes disagree the field then stays unsigned, as before issue #11), interleaved.
+    // Stage times from the core on the same grid, and the core's time without the winding-number
+    // sign (where the votes disagree the field then stays unsigned, as before issue #11),
+    // interleaved.
     std::vector<shrinkwrap::SignedDistanceResult> stages;
     std::vector<float> scratch(lattice.nodeCount());
     std::vector<double> core, votesOnly;
@@ -295,12 +313,17 @@ int main(int argc, char* argv[])
     for (int r = 0; r < runs; ++r)
     {
       shrinkwrap::onAllCores([&] {
-        core.push_back(seconds([&] { stages.push_back(shrinkwrap::computeSignedDistance(soup, lattice, {}, scratch.data())); }));
-        votesOnly.push_back(seconds([&] { shrinkwrap::computeSignedDistance(soup, lattice, withoutWinding, scratch.data()); }));
+        core.push_back(seconds([&] {
+          stages.push_back(shrinkwrap::computeSignedDistance(soup, lattice, {}, scratch.data()));
+        }));
+        votesOnly.push_back(seconds([&] {
+          shrinkwrap::computeSignedDistance(soup, lattice, withoutWinding, scratch.data());
+        }));
       });
     }
     const shrinkwrap::SignedDistanceResult& last = stages.back();
-    const char* signedBy = !last.isSigned ? "unsigned"
+    const char* signedBy = !last.isSigned
+      ? "unsigned"
       : (last.signMethod == shrinkwrap::SignMethod::WindingNumber ? "winding number" : "votes");
     auto stage = [&](double shrinkwrap::SignedDistanceResult::*field) {
       std::vector<double> v;
@@ -312,7 +335,8 @@ int main(int argc, char* argv[])
     // OpenVDB on the same lattice: voxel size h, index space = our node indices.
     const double h = lattice.spacing[0];
     auto transform = openvdb::math::Transform::createLinearTransform(h);
-    transform->postTranslate(openvdb::Vec3d(lattice.origin.x(), lattice.origin.y(), lattice.origin.z()));
+    transform->postTranslate(
+      openvdb::Vec3d(lattice.origin.x(), lattice.origin.y(), lattice.origin.z()));
     std::vector<openvdb::Vec3s> indexPoints;
     for (const auto& p : vdbMesh.points)
       indexPoints.push_back(transform->worldToIndex(p));
@@ -328,8 +352,9 @@ int main(int argc, char* argv[])
       full.push_back(band.back() + seconds([&] {
         openvdb::BoolGrid mask(false);
         mask.setTransform(transform);
-        mask.denseFill(openvdb::CoordBBox(openvdb::Coord(0),
-                         openvdb::Coord(lattice.dims[0] - 1, lattice.dims[1] - 1, lattice.dims[2] - 1)),
+        mask.denseFill(
+          openvdb::CoordBBox(openvdb::Coord(0),
+            openvdb::Coord(lattice.dims[0] - 1, lattice.dims[1] - 1, lattice.dims[2] - 1)),
           true, true);
         vdbFull = openvdb::tools::maskSdf(*narrow, mask);
       }));
@@ -340,9 +365,11 @@ int main(int argc, char* argv[])
     {
       const std::vector<float> exact = exactDistances(soup, lattice);
       auto* values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("SignedDistance"));
-      ours = accuracyOf(lattice, exact, [&](int i, int j, int k) { return values->GetValue(lattice.index(i, j, k)); });
+      ours = accuracyOf(lattice, exact,
+        [&](int i, int j, int k) { return values->GetValue(lattice.index(i, j, k)); });
       vdb = accuracyOf(lattice, exact, [&](int i, int j, int k) {
-        return vdbFull->tree().getValue(openvdb::Coord(i, j, k)); // thread-safe read without accessor caching
+        return vdbFull->tree().getValue(
+          openvdb::Coord(i, j, k)); // thread-safe read without accessor caching
       });
     }
 
@@ -357,10 +384,12 @@ int main(int argc, char* argv[])
         vtkSecondsPerNode = seconds([&] {
           for (int n = 0; n < sample; ++n)
           {
-            const shrinkwrap::Vec3 x = lattice.position(n % lattice.dims[0], (n / lattice.dims[0]) % lattice.dims[1], lattice.dims[2] / 2);
+            const shrinkwrap::Vec3 x = lattice.position(
+              n % lattice.dims[0], (n / lattice.dims[0]) % lattice.dims[1], lattice.dims[2] / 2);
             vtkDistance->EvaluateFunction(const_cast<double*>(x.data()));
           }
-        }) / sample;
+        }) /
+          sample;
       }
       if (vtkSecondsPerNode * lattice.nodeCount() < 60)
       {
@@ -368,7 +397,8 @@ int main(int argc, char* argv[])
           for (int k = 0; k < lattice.dims[2]; ++k)
             for (int j = 0; j < lattice.dims[1]; ++j)
               for (int i = 0; i < lattice.dims[0]; ++i)
-                vtkDistance->EvaluateFunction(const_cast<double*>(lattice.position(i, j, k).data()));
+                vtkDistance->EvaluateFunction(
+                  const_cast<double*>(lattice.position(i, j, k).data()));
         });
         char buffer[64];
         std::snprintf(buffer, sizeof buffer, "%.2f s", t);
@@ -379,20 +409,27 @@ int main(int argc, char* argv[])
       else
       {
         char buffer[64];
-        std::snprintf(buffer, sizeof buffer, "(~%.0f s, skipped)", vtkSecondsPerNode * lattice.nodeCount());
+        std::snprintf(
+          buffer, sizeof buffer, "(~%.0f s, skipped)", vtkSecondsPerNode * lattice.nodeCount());
         vtkCell = buffer;
       }
     }
 
     // The sign against the brute-force winding number on a sample of nodes farther than a cell.
     const testing::SignSample signs = testing::sampleSigns(image, soup, 4000);
-    std::printf("| %dx%dx%d | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | **%.3f** | %.3f h | %.3f h | %.3f | %.3f | %.3f h | %.3f h | %.1f | %s | %s | %s | %.3f | %.3f | %.2f | %lld of %lld |\n",
-      lattice.dims[0] - 1, lattice.dims[1] - 1, lattice.dims[2] - 1, static_cast<long long>(lattice.nodeCount()),
-      stage(&shrinkwrap::SignedDistanceResult::treeSeconds), stage(&shrinkwrap::SignedDistanceResult::outlineSeconds),
-      stage(&shrinkwrap::SignedDistanceResult::bandSeconds), stage(&shrinkwrap::SignedDistanceResult::sweepSeconds),
-      stage(&shrinkwrap::SignedDistanceResult::signSeconds), median(totals), ours.mean, ours.max, median(band),
-      median(full), vdb.mean, vdb.max, median(full) / median(totals), vtkCell.c_str(), vtkRatio.c_str(), signedBy,
-      median(core), median(votesOnly), median(core) / median(votesOnly), signs.disagreeing, signs.far);
+    std::printf(
+      "| %dx%dx%d | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | **%.3f** | %.3f h | %.3f h | %.3f | "
+      "%.3f | %.3f h | %.3f h | %.1f | %s | %s | %s | %.3f | %.3f | %.2f | %lld of %lld |\n",
+      lattice.dims[0] - 1, lattice.dims[1] - 1, lattice.dims[2] - 1,
+      static_cast<long long>(lattice.nodeCount()),
+      stage(&shrinkwrap::SignedDistanceResult::treeSeconds),
+      stage(&shrinkwrap::SignedDistanceResult::outlineSeconds),
+      stage(&shrinkwrap::SignedDistanceResult::bandSeconds),
+      stage(&shrinkwrap::SignedDistanceResult::sweepSeconds),
+      stage(&shrinkwrap::SignedDistanceResult::signSeconds), median(totals), ours.mean, ours.max,
+      median(band), median(full), vdb.mean, vdb.max, median(full) / median(totals), vtkCell.c_str(),
+      vtkRatio.c_str(), signedBy, median(core), median(votesOnly), median(core) / median(votesOnly),
+      signs.disagreeing, signs.far);
     std::fflush(stdout);
   }
   return 0;

@@ -2,13 +2,13 @@
 #ifndef ShrinkWrap_TestUtilities_h
 #define ShrinkWrap_TestUtilities_h
 
+#include "Common/TriangleSoup.h"
 #include "Distance/AABBTree.h"
-#include "Surface/SurfaceMesh.h"
-#include "VTKConversions.h"
 #include "Distance/GridLattice.h"
 #include "Distance/TriangleDistance.h"
-#include "Common/TriangleSoup.h"
 #include "Distance/WindingNumber.h"
+#include "Surface/SurfaceMesh.h"
+#include "VTKConversions.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -43,14 +43,15 @@ inline int& failures()
   return count;
 }
 
-#define SW_CHECK(condition, message)                                                                         \
-  do                                                                                                         \
-  {                                                                                                          \
-    if (!(condition))                                                                                        \
-    {                                                                                                        \
-      std::cerr << "FAILED: " << message << "  [" #condition "] at " __FILE__ ":" << __LINE__ << std::endl; \
-      ++testing::failures();                                                                                 \
-    }                                                                                                        \
+#define SW_CHECK(condition, message)                                                               \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::cerr << "FAILED: " << message << "  [" #condition "] at " __FILE__ ":" << __LINE__      \
+                << std::endl;                                                                      \
+      ++testing::failures();                                                                       \
+    }                                                                                              \
   } while (false)
 
 // n points on a unit sphere (uniform directions), each then moved by Gaussian noise of sigma.
@@ -69,14 +70,15 @@ inline std::vector<Vec3> spherePoints(int n, double sigma, unsigned seed)
 
 inline int finish(const char* name)
 {
-  std::cout << name << ": " << (failures() ? "FAILED" : "passed") << " (" << failures() << " failed checks)"
-            << std::endl;
+  std::cout << name << ": " << (failures() ? "FAILED" : "passed") << " (" << failures()
+            << " failed checks)" << std::endl;
   return failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }
 
 // SurfaceMesh::build with the reason in `error` (empty when it builds).
-inline bool builds(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-  shrinkwrap::SurfaceMesh& mesh, std::string& error)
+inline bool builds(const std::vector<Vec3>& points,
+  const std::vector<std::array<int, 3>>& triangles, shrinkwrap::SurfaceMesh& mesh,
+  std::string& error)
 {
   const shrinkwrap::Status status = shrinkwrap::SurfaceMesh::build(points, triangles, mesh);
   error = status.message();
@@ -160,7 +162,8 @@ inline double bruteForceDistance(const shrinkwrap::TriangleSoup& soup, const Vec
   double best = std::numeric_limits<double>::infinity();
   for (const auto& t : soup.triangles)
   {
-    const auto hit = shrinkwrap::closestPointOnTriangle(x, soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
+    const auto hit = shrinkwrap::closestPointOnTriangle(
+      x, soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
     best = std::min(best, (hit.point - x).squaredNorm());
   }
   return std::sqrt(best);
@@ -179,7 +182,8 @@ inline shrinkwrap::GridLattice latticeOf(vtkImageData* image)
 // every crossing above the node, by the side the triangle faces. For a closed mesh it is the
 // generalised winding number; nonzero means inside. Columns are shifted by a tiny irrational amount
 // so that rays miss edges and vertices.
-inline std::vector<int> windingNumbers(const shrinkwrap::TriangleSoup& soup, const shrinkwrap::GridLattice& lattice)
+inline std::vector<int> windingNumbers(
+  const shrinkwrap::TriangleSoup& soup, const shrinkwrap::GridLattice& lattice)
 {
   const auto& d = lattice.dims;
   const double dx = 1.234567e-7 * lattice.spacing[0], dy = 2.718281e-7 * lattice.spacing[1];
@@ -192,10 +196,18 @@ inline std::vector<int> windingNumbers(const shrinkwrap::TriangleSoup& soup, con
     {
       continue;
     }
-    const int i0 = std::max(0, static_cast<int>(std::floor((std::min({ a.x(), b.x(), c.x() }) - dx - lattice.origin.x()) / lattice.spacing.x())));
-    const int i1 = std::min(d[0] - 1, static_cast<int>(std::ceil((std::max({ a.x(), b.x(), c.x() }) - dx - lattice.origin.x()) / lattice.spacing.x())));
-    const int j0 = std::max(0, static_cast<int>(std::floor((std::min({ a.y(), b.y(), c.y() }) - dy - lattice.origin.y()) / lattice.spacing.y())));
-    const int j1 = std::min(d[1] - 1, static_cast<int>(std::ceil((std::max({ a.y(), b.y(), c.y() }) - dy - lattice.origin.y()) / lattice.spacing.y())));
+    const int i0 = std::max(0,
+      static_cast<int>(std::floor(
+        (std::min({ a.x(), b.x(), c.x() }) - dx - lattice.origin.x()) / lattice.spacing.x())));
+    const int i1 = std::min(d[0] - 1,
+      static_cast<int>(std::ceil(
+        (std::max({ a.x(), b.x(), c.x() }) - dx - lattice.origin.x()) / lattice.spacing.x())));
+    const int j0 = std::max(0,
+      static_cast<int>(std::floor(
+        (std::min({ a.y(), b.y(), c.y() }) - dy - lattice.origin.y()) / lattice.spacing.y())));
+    const int j1 = std::min(d[1] - 1,
+      static_cast<int>(std::ceil(
+        (std::max({ a.y(), b.y(), c.y() }) - dy - lattice.origin.y()) / lattice.spacing.y())));
     for (int j = j0; j <= j1; ++j)
     {
       for (int i = i0; i <= i1; ++i)
@@ -222,7 +234,8 @@ inline std::vector<int> windingNumbers(const shrinkwrap::TriangleSoup& soup, con
     {
       for (const auto& crossing : columns[i + static_cast<std::size_t>(d[0]) * j])
       {
-        for (int k = 0; k < d[2] && lattice.origin.z() + k * lattice.spacing.z() < crossing.first; ++k)
+        for (int k = 0; k < d[2] && lattice.origin.z() + k * lattice.spacing.z() < crossing.first;
+             ++k)
         {
           winding[lattice.index(i, j, k)] += crossing.second;
         }
@@ -234,13 +247,15 @@ inline std::vector<int> windingNumbers(const shrinkwrap::TriangleSoup& soup, con
 
 struct SignSample
 {
-  long long far = 0;        // sampled nodes farther than a cell from the surface
-  long long disagreeing = 0; // of those, on the other side of the brute-force winding number (|w| > 1/2)
+  long long far = 0; // sampled nodes farther than a cell from the surface
+  long long disagreeing =
+    0; // of those, on the other side of the brute-force winding number (|w| > 1/2)
 };
 
 // The sign of `samples` random nodes (a fixed seed) against the generalized winding number summed
 // over every triangle.
-inline SignSample sampleSigns(vtkImageData* image, const shrinkwrap::TriangleSoup& soup, int samples)
+inline SignSample sampleSigns(
+  vtkImageData* image, const shrinkwrap::TriangleSoup& soup, int samples)
 {
   const shrinkwrap::GridLattice lattice = latticeOf(image);
   auto* values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("SignedDistance"));
@@ -255,7 +270,8 @@ inline SignSample sampleSigns(vtkImageData* image, const shrinkwrap::TriangleSou
   std::vector<std::int64_t> nodes;
   for (int s = 0; s < samples; ++s)
   {
-    const std::int64_t n = static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(lattice.nodeCount()));
+    const std::int64_t n =
+      static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(lattice.nodeCount()));
     if (std::abs(values->GetValue(n)) > lattice.minSpacing())
     {
       nodes.push_back(n);
@@ -278,15 +294,16 @@ inline SignSample sampleSigns(vtkImageData* image, const shrinkwrap::TriangleSou
 
 struct FieldErrors
 {
-  double meanError = 0;     // over every node, in cells
-  double maxError = 0;      // in cells
-  double bandMaxError = 0;  // over nodes within 0.5 h of the surface, as a fraction of the box diagonal
+  double meanError = 0; // over every node, in cells
+  double maxError = 0;  // in cells
+  double bandMaxError =
+    0; // over nodes within 0.5 h of the surface, as a fraction of the box diagonal
   long long signErrors = 0; // nodes farther than 0.5 h whose sign differs from the winding number
   long long nodes = 0;
 };
 
-// Compares a SignedDistance image with exact distances (the AABB tree, or every triangle when brute)
-// and with winding numbers; signed = false compares magnitudes only.
+// Compares a SignedDistance image with exact distances (the AABB tree, or every triangle when
+// brute) and with winding numbers; signed = false compares magnitudes only.
 inline FieldErrors compareWithReference(
   vtkImageData* image, const shrinkwrap::TriangleSoup& soup, bool brute, bool checkSign)
 {
@@ -314,7 +331,8 @@ inline FieldErrors compareWithReference(
         for (int i = 0; i < d[0]; ++i)
         {
           const Vec3 x = lattice.position(i, j, k);
-          const double exact = brute ? bruteForceDistance(soup, x) : std::sqrt(tree.closestPoint(x).squaredDistance);
+          const double exact =
+            brute ? bruteForceDistance(soup, x) : std::sqrt(tree.closestPoint(x).squaredDistance);
           const double value = values->GetValue(lattice.index(i, j, k));
           const double error = std::abs(std::abs(value) - exact);
           sum += error;

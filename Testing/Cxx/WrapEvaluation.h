@@ -1,15 +1,16 @@
 // How a wrap is judged (issue #10), for the tests and the benchmark alike: points sampled uniformly
-// by area on both surfaces (plus their vertices), one-sided distances to the other surface through an
-// AABB tree (mean and largest, in percent of the target's bounding-box diagonal), self-intersections,
-// closed and manifold, genus, the share of triangles with a minimum angle below 20 degrees.
+// by area on both surfaces (plus their vertices), one-sided distances to the other surface through
+// an AABB tree (mean and largest, in percent of the target's bounding-box diagonal),
+// self-intersections, closed and manifold, genus, the share of triangles with a minimum angle below
+// 20 degrees.
 #ifndef ShrinkWrap_WrapEvaluation_h
 #define ShrinkWrap_WrapEvaluation_h
 
+#include "Common/TriangleSoup.h"
 #include "Distance/AABBTree.h"
 #include "Surface/MeshQuality.h"
 #include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceMesh.h"
-#include "Common/TriangleSoup.h"
 
 #include <functional>
 #include <random>
@@ -30,18 +31,20 @@ struct WrapFigures
   long long selfIntersections = 0; // crossing triangle pairs (SelfIntersections.h)
   bool closedManifold = false;
   int components = 0;
-  int genus = -1; // summed over components; -1 when not closed and manifold
+  int genus = -1;         // summed over components; -1 when not closed and manifold
   double smallAngles = 0; // percent of triangles with a minimum angle below 20 degrees
 };
 
 // The soup's vertices, then `count` points uniformly by area on it.
-inline std::vector<shrinkwrap::Vec3> samplePoints(const shrinkwrap::TriangleSoup& soup, int count, unsigned seed = 1)
+inline std::vector<shrinkwrap::Vec3> samplePoints(
+  const shrinkwrap::TriangleSoup& soup, int count, unsigned seed = 1)
 {
   using shrinkwrap::Vec3;
   std::vector<double> areas;
   for (const auto& t : soup.triangles)
   {
-    areas.push_back(0.5 * (soup.points[t[1]] - soup.points[t[0]]).cross(soup.points[t[2]] - soup.points[t[0]]).norm());
+    areas.push_back(0.5 *
+      (soup.points[t[1]] - soup.points[t[0]]).cross(soup.points[t[2]] - soup.points[t[0]]).norm());
   }
   std::vector<Vec3> samples(soup.points);
   if (areas.empty())
@@ -66,7 +69,8 @@ inline std::vector<shrinkwrap::Vec3> samplePoints(const shrinkwrap::TriangleSoup
   return samples;
 }
 
-inline OneSided oneSided(const std::vector<shrinkwrap::Vec3>& from, const shrinkwrap::TriangleSoup& to, double diagonal)
+inline OneSided oneSided(
+  const std::vector<shrinkwrap::Vec3>& from, const shrinkwrap::TriangleSoup& to, double diagonal)
 {
   const shrinkwrap::AABBTree tree(to);
   OneSided d;
@@ -81,7 +85,8 @@ inline OneSided oneSided(const std::vector<shrinkwrap::Vec3>& from, const shrink
   return d;
 }
 
-inline WrapFigures evaluateWrap(const shrinkwrap::TriangleSoup& wrap, const shrinkwrap::TriangleSoup& target, int samples = 100000)
+inline WrapFigures evaluateWrap(const shrinkwrap::TriangleSoup& wrap,
+  const shrinkwrap::TriangleSoup& target, int samples = 100000)
 {
   WrapFigures f;
   f.vertices = static_cast<int>(wrap.points.size());
@@ -103,7 +108,9 @@ inline WrapFigures evaluateWrap(const shrinkwrap::TriangleSoup& wrap, const shri
     {
       parent[i] = static_cast<int>(i);
     }
-    std::function<int(int)> root = [&](int i) { return parent[i] == i ? i : parent[i] = root(parent[i]); };
+    std::function<int(int)> root = [&](int i) {
+      return parent[i] == i ? i : parent[i] = root(parent[i]);
+    };
     std::set<std::pair<int, int>> edges;
     for (const auto& t : wrap.triangles)
     {
@@ -120,14 +127,15 @@ inline WrapFigures evaluateWrap(const shrinkwrap::TriangleSoup& wrap, const shri
       roots.insert(root(t[0]));
     }
     f.components = static_cast<int>(roots.size());
-    const long long chi = static_cast<long long>(wrap.points.size()) - static_cast<long long>(edges.size()) +
-      static_cast<long long>(wrap.triangles.size());
+    const long long chi = static_cast<long long>(wrap.points.size()) -
+      static_cast<long long>(edges.size()) + static_cast<long long>(wrap.triangles.size());
     f.genus = static_cast<int>((2 * f.components - chi) / 2);
   }
   int small = 0;
   for (const auto& t : wrap.triangles)
   {
-    small += shrinkwrap::triangleQuality(wrap.points[t[0]], wrap.points[t[1]], wrap.points[t[2]]).minAngle < 20;
+    small += shrinkwrap::triangleQuality(wrap.points[t[0]], wrap.points[t[1]], wrap.points[t[2]])
+               .minAngle < 20;
   }
   f.smallAngles = 100.0 * small / wrap.triangles.size();
   return f;

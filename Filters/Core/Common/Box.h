@@ -38,7 +38,8 @@ struct Box
     return box;
   }
   template <typename Ids>
-  static Box around(const std::vector<Vec3>& points, const Ids& ids) // the bounds of points[ids] (a triangle's)
+  static Box around(
+    const std::vector<Vec3>& points, const Ids& ids) // the bounds of points[ids] (a triangle's)
   {
     Box box;
     for (const auto id : ids)

@@ -35,8 +35,7 @@ bool mapsLargeBuffers()
 #if defined(SHRINKWRAP_ADDRESS_SANITIZER)
   return false;
 #else
-  static const bool offered = []
-  {
+  static const bool offered = [] {
     std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
     std::string line;
     return std::getline(mode, line) && line.find("[never]") == std::string::npos;
@@ -54,7 +53,8 @@ void* mapHugePages(std::size_t bytes)
     throw std::bad_alloc();
   }
   const std::size_t size = roundedUp(bytes);
-  void* mapped = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  void* mapped =
+    mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (mapped == MAP_FAILED)
   {
     throw std::bad_alloc();

@@ -1,7 +1,8 @@
-// Large buffers in 2 MiB pages. Fresh memory is faulted in a page at a time on its first write, and on
-// a virtual machine a 4 KiB page's fault is slow; Linux's transparent huge pages, asked for by
-// madvise (Debian's default mode), fault in 2 MiB at a time for about the cost of one small page. Buffers under kMinHugeBuffer, systems other than
-// Linux, kernels that give no huge pages and AddressSanitizer builds get ordinary memory.
+// Large buffers in 2 MiB pages. Fresh memory is faulted in a page at a time on its first write, and
+// on a virtual machine a 4 KiB page's fault is slow; Linux's transparent huge pages, asked for by
+// madvise (Debian's default mode), fault in 2 MiB at a time for about the cost of one small page.
+// Buffers under kMinHugeBuffer, systems other than Linux, kernels that give no huge pages and
+// AddressSanitizer builds get ordinary memory.
 #ifndef ShrinkWrap_HugePages_h
 #define ShrinkWrap_HugePages_h
 
@@ -16,15 +17,15 @@ constexpr std::size_t kHugePage = std::size_t(2) << 20;
 // A quarter of a huge page and up: one fault of 2 MiB costs less than 64 of 4 KiB.
 constexpr std::size_t kMinHugeBuffer = kHugePage / 4;
 
-// Pages of at least `bytes` (rounded up to huge pages), aligned to kHugePage and advised to be huge;
-// throws std::bad_alloc when none are left. Only where mapsLargeBuffers().
+// Pages of at least `bytes` (rounded up to huge pages), aligned to kHugePage and advised to be
+// huge; throws std::bad_alloc when none are left. Only where mapsLargeBuffers().
 void* mapHugePages(std::size_t bytes);
 void unmapHugePages(void* p, std::size_t bytes);
-// Whether buffers of kMinHugeBuffer and more are mapped: on Linux where the kernel gives huge pages to
-// a mapping that asks (transparent huge pages not "never"; read once, so a buffer is always freed the
-// way it was allocated), and not under AddressSanitizer, which checks the heap's bounds but not a
-// mapping's. Without huge pages a mapped buffer would be faulted in anew at every wrap where the
-// heap's is reused.
+// Whether buffers of kMinHugeBuffer and more are mapped: on Linux where the kernel gives huge pages
+// to a mapping that asks (transparent huge pages not "never"; read once, so a buffer is always
+// freed the way it was allocated), and not under AddressSanitizer, which checks the heap's bounds
+// but not a mapping's. Without huge pages a mapped buffer would be faulted in anew at every wrap
+// where the heap's is reused.
 bool mapsLargeBuffers();
 
 // A std::allocator that maps buffers of kMinHugeBuffer and more in huge pages (which of the two a

@@ -1,8 +1,8 @@
-// The core's one seam to threads: parallel loops over index ranges, per-thread scratch, and the scope
-// that gives a computation all cores. Behind it is vtkSMPTools (Parallel.cxx, the only file of the
-// core that sees VTK). An exception thrown in a worker (an allocation failing under a process memory
-// limit, say) is kept, the chunks not yet started are skipped, and it is rethrown on the calling
-// thread after the loop.
+// The core's one seam to threads: parallel loops over index ranges, per-thread scratch, and the
+// scope that gives a computation all cores. Behind it is vtkSMPTools (Parallel.cxx, the only file
+// of the core that sees VTK). An exception thrown in a worker (an allocation failing under a
+// process memory limit, say) is kept, the chunks not yet started are skipped, and it is rethrown on
+// the calling thread after the loop.
 #ifndef ShrinkWrap_Parallel_h
 #define ShrinkWrap_Parallel_h
 

@@ -25,7 +25,8 @@ public:
   // fraction in [0, 1] of this stage; false when the user asked to stop.
   bool report(double fraction) const
   {
-    return !this->Report || this->Report(this->Begin + std::clamp(fraction, 0.0, 1.0) * (this->End - this->Begin));
+    return !this->Report ||
+      this->Report(this->Begin + std::clamp(fraction, 0.0, 1.0) * (this->End - this->Begin));
   }
 
   // The part [begin, end] of this stage, as a stage of its own.

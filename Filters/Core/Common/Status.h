@@ -1,7 +1,7 @@
 // The core's one error convention: work that can fail returns a Status, empty when it succeeded and
 // otherwise saying why in words a user can act on (the filters put it in their error messages).
-// Results go to out-parameters or the returned object; exceptions are left to std::bad_alloc and its
-// kind, which the filters catch.
+// Results go to out-parameters or the returned object; exceptions are left to std::bad_alloc and
+// its kind, which the filters catch.
 #ifndef ShrinkWrap_Status_h
 #define ShrinkWrap_Status_h
 

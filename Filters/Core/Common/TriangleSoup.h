@@ -1,5 +1,5 @@
-// The paper's triangle soup (Section 2.1): points and triangles indexing them, the one shape in which
-// meshes enter and leave the core. Nothing is assumed of its topology (non-manifold and
+// The paper's triangle soup (Section 2.1): points and triangles indexing them, the one shape in
+// which meshes enter and leave the core. Nothing is assumed of its topology (non-manifold and
 // duplicate-point meshes are accepted); SurfaceMesh::build checks that a soup is a closed surface.
 #ifndef ShrinkWrap_TriangleSoup_h
 #define ShrinkWrap_TriangleSoup_h
@@ -15,7 +15,8 @@ namespace shrinkwrap
 struct TriangleSoup
 {
   std::vector<Vec3> points;
-  std::vector<std::array<int, 3>> triangles; // counter-clockwise seen from outside, where that means something
+  std::vector<std::array<int, 3>>
+    triangles; // counter-clockwise seen from outside, where that means something
 
   Box bounds() const; // of the points that triangles use
   bool allFinite() const;

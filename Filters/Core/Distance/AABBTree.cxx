@@ -1,7 +1,6 @@
 #include "Distance/AABBTree.h"
 #include "Common/Parallel.h"
 
-
 #include <algorithm>
 #include <numeric>
 
@@ -22,8 +21,8 @@ namespace
 // Split candidates along one axis of the centroid range [lo, hi]: uniform samples, then samples
 // at equal steps of the cumulative centroid count, which Hunt et al. [4] show places them where the
 // SAH cost changes most.
-void splitCandidates(const std::vector<double>& coords, int count, double lo, double hi, int uniform,
-  int adaptive, std::vector<int>& histogram, std::vector<double>& candidates)
+void splitCandidates(const std::vector<double>& coords, int count, double lo, double hi,
+  int uniform, int adaptive, std::vector<int>& histogram, std::vector<double>& candidates)
 {
   histogram.assign(uniform, 0);
   const double width = (hi - lo) / uniform;
@@ -80,12 +79,14 @@ AABBTree::AABBTree(const TriangleSoup& soup, const AABBTreeSettings& settings)
     const auto& c = this->Corners[k];
     const Vec3 n = (c[1] - c[0]).cross(c[2] - c[0]);
     const double length = n.norm();
-    this->Planes[k] = length > 0 && std::isfinite(length) ? Plane{ n / length, n.dot(c[0]) / length } : Plane{};
+    this->Planes[k] =
+      length > 0 && std::isfinite(length) ? Plane{ n / length, n.dot(c[0]) / length } : Plane{};
   }
 }
 
-void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int index, int begin, int end,
-  int depth, const AABBTreeSettings& s, SplitScratch& scratch, std::vector<Subtree>* deferred)
+void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int index, int begin,
+  int end, int depth, const AABBTreeSettings& s, SplitScratch& scratch,
+  std::vector<Subtree>* deferred)
 {
   Box box, centroids;
   for (int k = begin; k < end; ++k)
@@ -99,8 +100,9 @@ void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int ind
     deferred->push_back({ index, begin, end, depth });
     return;
   }
-  const int mid =
-    count > s.leafSize && depth < kMaxHierarchyDepth ? this->splitPosition(prims, begin, end, centroids, s, scratch) : -1;
+  const int mid = count > s.leafSize && depth < kMaxHierarchyDepth
+    ? this->splitPosition(prims, begin, end, centroids, s, scratch)
+    : -1;
   if (mid <= begin || mid >= end)
   {
     nodes[index] = { box, begin, count };
@@ -160,8 +162,8 @@ namespace
 {
 // The cheapest cut between bins by the surface-area heuristic: its cost and the first bin to its
 // right; an infinite cost where no cut leaves primitives on both sides.
-std::pair<double, int> cheapestCut(
-  const std::vector<int>& binCount, const std::vector<Box>& binBox, int count, std::vector<double>& rightCost)
+std::pair<double, int> cheapestCut(const std::vector<int>& binCount, const std::vector<Box>& binBox,
+  int count, std::vector<double>& rightCost)
 {
   const int bins = static_cast<int>(binCount.size());
   rightCost.assign(bins, 0);
@@ -219,14 +221,16 @@ int AABBTree::splitPosition(std::vector<Prim>& prims, int begin, int end, const 
     std::vector<double>& cuts = scratch.cuts;
     splitCandidates(coords, count, lo, hi, s.uniformSamples, adaptive, scratch.histogram, cuts);
     // Fine bins between consecutive cuts; counts and boxes per bin give the exact SAH at each cut.
-    // A centroid's uniform bin is found by division; the few adaptive cuts inside it by a short scan.
+    // A centroid's uniform bin is found by division; the few adaptive cuts inside it by a short
+    // scan.
     const int bins = static_cast<int>(cuts.size()) + 1;
     const double width = (hi - lo) / s.uniformSamples;
     std::vector<int>& firstCut = scratch.firstCut;
     firstCut.resize(s.uniformSamples);
     for (int u = 0; u < s.uniformSamples; ++u)
     {
-      firstCut[u] = static_cast<int>(std::lower_bound(cuts.begin(), cuts.end(), lo + u * width) - cuts.begin());
+      firstCut[u] =
+        static_cast<int>(std::lower_bound(cuts.begin(), cuts.end(), lo + u * width) - cuts.begin());
     }
     std::vector<int>& binCount = scratch.binCount;
     std::vector<Box>& binBox = scratch.binBox;

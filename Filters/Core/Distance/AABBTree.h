@@ -1,14 +1,14 @@
 // AABB tree over a triangle soup (Algorithm 1, line 1): a binary bounding-volume hierarchy whose
-// splits minimise the surface-area heuristic. Split candidates follow Hunt, Mark & Stoll (2006) [4]:
-// a few uniform samples first, then more samples placed where the primitive count changes fastest.
-// Query: the closest point, with the feature it lies on. (The octree outline passes each node's
-// triangles on to its children, so it needs no box query.)
+// splits minimise the surface-area heuristic. Split candidates follow Hunt, Mark & Stoll (2006)
+// [4]: a few uniform samples first, then more samples placed where the primitive count changes
+// fastest. Query: the closest point, with the feature it lies on. (The octree outline passes each
+// node's triangles on to its children, so it needs no box query.)
 #ifndef ShrinkWrap_AABBTree_h
 #define ShrinkWrap_AABBTree_h
 
+#include "Common/TriangleSoup.h"
 #include "Distance/BoxHierarchy.h"
 #include "Distance/TriangleDistance.h"
-#include "Common/TriangleSoup.h"
 
 #include <array>
 #include <limits>
@@ -19,9 +19,9 @@ namespace shrinkwrap
 
 struct AABBTreeSettings
 {
-  int leafSize = 4;        // at most this many triangles in a leaf
-  int uniformSamples = 8;  // first pass of the split search, per axis
-  int adaptiveSamples = 8; // second pass, placed by primitive density
+  int leafSize = 4;               // at most this many triangles in a leaf
+  int uniformSamples = 8;         // first pass of the split search, per axis
+  int adaptiveSamples = 8;        // second pass, placed by primitive density
   int parallelSubtreeSize = 4096; // subtrees this small are built in parallel
 };
 
@@ -44,7 +44,8 @@ public:
 
   const Box& bounds() const { return this->Nodes.front().box; }
 
-  // The hierarchy itself, for other queries over the same nodes (WindingNumber.h). Node 0 is the root.
+  // The hierarchy itself, for other queries over the same nodes (WindingNumber.h). Node 0 is the
+  // root.
   using Node = HierarchyNode; // a leaf's slots index Order
   const std::vector<Node>& nodes() const { return this->Nodes; }
   int triangleAt(int slot) const { return this->Order[slot]; } // the soup's triangle in a leaf slot
@@ -64,20 +65,21 @@ private:
   struct SplitScratch;
   AABBTree() = default;
   void buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings& s);
-  void build(std::vector<Node>& nodes, std::vector<Prim>& prims, int index, int begin, int end, int depth,
-    const AABBTreeSettings& s, SplitScratch& scratch, std::vector<Subtree>* deferred);
+  void build(std::vector<Node>& nodes, std::vector<Prim>& prims, int index, int begin, int end,
+    int depth, const AABBTreeSettings& s, SplitScratch& scratch, std::vector<Subtree>* deferred);
   int splitPosition(std::vector<Prim>& prims, int begin, int end, const Box& centroids,
     const AABBTreeSettings& s, SplitScratch& scratch) const;
 
   std::vector<Node> Nodes;
-  std::vector<int> Order;                    // soup triangle index per leaf slot
-  std::vector<std::array<Vec3, 3>> Corners;  // triangle corners in leaf order, for locality
+  std::vector<int> Order;                   // soup triangle index per leaf slot
+  std::vector<std::array<Vec3, 3>> Corners; // triangle corners in leaf order, for locality
   struct Plane // n . x = offset, |n| = 1 (zero for a degenerate triangle: never skipped)
   {
     Vec3 normal = Vec3::Zero();
     double offset = 0;
   };
-  std::vector<Plane> Planes; // the triangles' planes in leaf order, a cheap bound before the closest point
+  std::vector<Plane>
+    Planes; // the triangles' planes in leaf order, a cheap bound before the closest point
 };
 
 } // namespace shrinkwrap

@@ -22,9 +22,11 @@ struct HierarchyNode
 constexpr int kMaxHierarchyDepth = 64;
 
 // Calls visit(slot) for the slots of the leaves whose boxes lie nearer to p than `best` (a squared
-// distance that visit lowers as it finds nearer elements), nearer boxes first so that they prune more.
+// distance that visit lowers as it finds nearer elements), nearer boxes first so that they prune
+// more.
 template <typename Visit>
-void searchNearest(const std::vector<HierarchyNode>& nodes, const Vec3& p, const double& best, Visit&& visit)
+void searchNearest(
+  const std::vector<HierarchyNode>& nodes, const Vec3& p, const double& best, Visit&& visit)
 {
   if (nodes.empty())
   {

@@ -1,7 +1,6 @@
 #include "Distance/ClosestPointSweep.h"
 #include "Common/Parallel.h"
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -20,7 +19,8 @@ struct Line
   int length;
   double origin; // coordinate of node 0 of the whole grid line along the line's axis
   double step;
-  int first = 0; // index of the line's first node on the whole grid line (a slab's column starts later)
+  int first =
+    0; // index of the line's first node on the whole grid line (a slab's column starts later)
 };
 
 // Scratch space of one thread for the lower envelope of one line.
@@ -40,8 +40,8 @@ struct Envelope
 
   // The sites the line's nodes hold (those of nodes first .. end - 1 only), each run once.
   template <typename OffsetOf>
-  void collect(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, int first = 0,
-    int end = -1)
+  void collect(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf,
+    int first = 0, int end = -1)
   {
     this->candidates.clear();
     for (int t = first; t < (end < 0 ? line.length : end); ++t)
@@ -54,13 +54,14 @@ struct Envelope
     }
   }
   template <typename OffsetOf>
-  void add(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, std::int32_t s)
+  void add(
+    const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, std::int32_t s)
   {
     this->candidates.push_back({ sites[s][axis] - line.origin, offsetOf(sites[s]), s });
   }
 
-  // The lower envelope of the candidates (Felzenszwalb & Huttenlocher 2012, with sites off the line:
-  // parabolas (t - vertex)^2 + offset).
+  // The lower envelope of the candidates (Felzenszwalb & Huttenlocher 2012, with sites off the
+  // line: parabolas (t - vertex)^2 + offset).
   void build()
   {
     // Sites lie within a few cells of their nodes, so the list is nearly sorted: insertion sort.
@@ -129,7 +130,8 @@ struct Envelope
     {
       for (int t = 0; distance && t < line.length; ++t)
       {
-        distance[t * line.stride] = std::numeric_limits<float>::infinity(); // no surface on the grid
+        distance[t * line.stride] =
+          std::numeric_limits<float>::infinity(); // no surface on the grid
       }
       return;
     }
@@ -152,7 +154,8 @@ struct Envelope
   }
 
   template <typename OffsetOf>
-  void apply(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, float* distance)
+  void apply(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf,
+    float* distance)
   {
     this->collect(line, axis, sites, offsetOf);
     if (!this->candidates.empty())
@@ -165,8 +168,8 @@ struct Envelope
 
 // The pass along `axis`: every line parallel to it, in parallel. Lines are taken in index order
 // (x fastest among the others), so neighbouring lines reuse the same cache lines.
-void envelopePass(
-  const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* site, int axis, float* distance)
+void envelopePass(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* site,
+  int axis, float* distance)
 {
   const auto& d = lattice.dims;
   const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2; // the two other axes, u varying fastest
@@ -181,7 +184,8 @@ void envelopePass(
       {
         const double cu = lattice.origin[u] + lu * lattice.spacing[u];
         const std::int64_t first = lu * strides[u] + lw * strides[w];
-        const Line line{ site + first, strides[axis], d[axis], lattice.origin[axis], lattice.spacing[axis] };
+        const Line line{ site + first, strides[axis], d[axis], lattice.origin[axis],
+          lattice.spacing[axis] };
         envelope.apply(
           line, axis, sites,
           [&](const Vec3& s) { return (s[u] - cu) * (s[u] - cu) + (s[w] - cw) * (s[w] - cw); },
@@ -192,8 +196,8 @@ void envelopePass(
 }
 } // namespace
 
-bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* siteOfNode,
-  float* distance, const Progress& progress)
+bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sites,
+  std::int32_t* siteOfNode, float* distance, const Progress& progress)
 {
   for (int axis = 0; axis < 3; ++axis)
   {
@@ -206,8 +210,8 @@ bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sit
   return true;
 }
 
-bool sweepClosestPointsInPlanes(
-  const GridLattice& slab, const std::vector<Vec3>& sites, std::int32_t* siteOfNode, const Progress& progress)
+bool sweepClosestPointsInPlanes(const GridLattice& slab, const std::vector<Vec3>& sites,
+  std::int32_t* siteOfNode, const Progress& progress)
 {
   for (int axis = 0; axis < 2; ++axis)
   {
@@ -237,8 +241,8 @@ void forEachColumn(const SlabPlanes& planes, std::int32_t* siteOfNode, F&& f)
     {
       for (int i = 0; i < nx; ++i)
       {
-        const Line line{ siteOfNode + i + j * nx, plane, planes.last - planes.first + 1, whole.origin[2],
-          whole.spacing[2], planes.first };
+        const Line line{ siteOfNode + i + j * nx, plane, planes.last - planes.first + 1,
+          whole.origin[2], whole.spacing[2], planes.first };
         f(envelope, line, i, static_cast<int>(j));
       }
     }
@@ -247,7 +251,8 @@ void forEachColumn(const SlabPlanes& planes, std::int32_t* siteOfNode, F&& f)
 
 auto columnOffset(const GridLattice& whole, int i, int j)
 {
-  const double cu = whole.origin[0] + i * whole.spacing[0], cw = whole.origin[1] + j * whole.spacing[1];
+  const double cu = whole.origin[0] + i * whole.spacing[0],
+               cw = whole.origin[1] + j * whole.spacing[1];
   return [cu, cw](const Vec3& s) { return (s[0] - cu) * (s[0] - cu) + (s[1] - cw) * (s[1] - cw); };
 }
 } // namespace
@@ -257,7 +262,8 @@ ColumnSites columnWinners(const SlabPlanes& planes, const std::vector<std::array
 {
   const GridLattice& whole = planes.whole;
   const int nx = whole.dims[0], ny = whole.dims[1], nz = whole.dims[2];
-  const int ownedBegin = planes.ownedFirst - planes.first, ownedEnd = planes.ownedLast - planes.first + 1;
+  const int ownedBegin = planes.ownedFirst - planes.first,
+            ownedEnd = planes.ownedLast - planes.first + 1;
   std::vector<std::vector<std::int32_t>> rowCounts(ny), rowSites(ny);
   forEachColumn(planes, siteOfNode, [&](Envelope& envelope, const Line& line, int i, int j) {
     auto& counts = rowCounts[j];
@@ -308,12 +314,13 @@ ColumnSites columnWinners(const SlabPlanes& planes, const std::vector<std::array
   return result;
 }
 
-void sweepColumns(const SlabPlanes& planes, const std::vector<Vec3>& sites, const ColumnSites& others,
-  std::int32_t* siteOfNode, float* distance)
+void sweepColumns(const SlabPlanes& planes, const std::vector<Vec3>& sites,
+  const ColumnSites& others, std::int32_t* siteOfNode, float* distance)
 {
   const GridLattice& whole = planes.whole;
   const int nx = whole.dims[0];
-  const int ownedBegin = planes.ownedFirst - planes.first, ownedEnd = planes.ownedLast - planes.first + 1;
+  const int ownedBegin = planes.ownedFirst - planes.first,
+            ownedEnd = planes.ownedLast - planes.first + 1;
   forEachColumn(planes, siteOfNode, [&](Envelope& envelope, const Line& line, int i, int j) {
     const auto offsetOf = columnOffset(whole, i, j);
     envelope.collect(line, 2, sites, offsetOf, ownedBegin, ownedEnd);

@@ -48,8 +48,8 @@ std::vector<int> patchesOf(const TriangleSoup& soup, const std::vector<char>& cr
 }
 
 // Samples spread over each patch in index order: every triangle of a small patch, eight of a larger
-// one, and one in 32 of a large one (a patch joined to a buried part through a single point has parts
-// of both; one in 32 finds any such part larger than that).
+// one, and one in 32 of a large one (a patch joined to a buried part through a single point has
+// parts of both; one in 32 finds any such part larger than that).
 std::vector<int> samplesOf(const std::vector<int>& patch, std::size_t patchCount)
 {
   const int nt = static_cast<int>(patch.size());
@@ -69,9 +69,10 @@ std::vector<int> samplesOf(const std::vector<int>& patch, std::size_t patchCount
   return samples;
 }
 
-// Per patch (indexed by its representative point), whether every sample sees the rest of the surface
-// with winding number 1/2 +- 0.4; a loose far field is enough for that margin.
-std::vector<char> patchesOk(const TriangleSoup& welded, const WindingNumber& winding, const std::vector<int>& patch)
+// Per patch (indexed by its representative point), whether every sample sees the rest of the
+// surface with winding number 1/2 +- 0.4; a loose far field is enough for that margin.
+std::vector<char> patchesOk(
+  const TriangleSoup& welded, const WindingNumber& winding, const std::vector<int>& patch)
 {
   const std::vector<int> samples = samplesOf(patch, welded.points.size());
   std::vector<char> sampleOk(samples.size());
@@ -116,9 +117,9 @@ std::vector<char> crossingAmong(const TriangleSoup& welded, const std::vector<ch
 } // namespace
 
 // Patches are sampled first as they come (joined through shared points). A part inside another, or
-// beyond a crossing, shows in the samples of its patch; crossing triangles are looked for only in the
-// patches so rejected (the crossing check of every triangle cost a third of the winding sign on a mesh
-// that is only open), left out, and what they joined is sampled again.
+// beyond a crossing, shows in the samples of its patch; crossing triangles are looked for only in
+// the patches so rejected (the crossing check of every triangle cost a third of the winding sign on
+// a mesh that is only open), left out, and what they joined is sampled again.
 std::vector<char> confirmSides(const TriangleSoup& welded, const WindingNumber& winding)
 {
   const int nt = static_cast<int>(welded.triangles.size());

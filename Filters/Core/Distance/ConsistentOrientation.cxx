@@ -16,13 +16,14 @@ double area(const TriangleSoup& soup, int t)
   return 0.5 * (b - a).cross(c - a).norm();
 }
 
-// Per triangle, its neighbours across edges shared by exactly two triangles, and whether the two run
-// that edge the same way (then one of them is flipped against the other).
+// Per triangle, its neighbours across edges shared by exactly two triangles, and whether the two
+// run that edge the same way (then one of them is flipped against the other).
 std::vector<std::vector<std::pair<int, bool>>> manifoldNeighbours(const TriangleSoup& soup)
 {
   // Degenerate triangles have no orientation to pass on: a flip through one would turn everything
   // beyond it.
-  const std::vector<EdgeUse> uses = edgeUses(soup, [&](int t) { return !unitNormal(soup, t).isZero(); });
+  const std::vector<EdgeUse> uses =
+    edgeUses(soup, [&](int t) { return !unitNormal(soup, t).isZero(); });
   std::vector<std::vector<std::pair<int, bool>>> neighbours(soup.triangles.size());
   forEachEdge(uses, [&](std::size_t first, std::size_t last) {
     if (last - first == 2)

@@ -15,8 +15,8 @@ namespace shrinkwrap
 namespace
 {
 // The cell's corners in the order of the case table's index bits (VTK's hexahedron).
-constexpr int kCorner[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 },
-  { 1, 1, 1 }, { 0, 1, 1 } };
+constexpr int kCorner[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+  { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
 
 // The cells of an n^3 block of nodes `at(a, b, c)` (a, b, c in [0, n]): their triangles, and the
 // crossing edges each cell owns (the three from its lowest corner; the others belong to the cells
@@ -47,10 +47,10 @@ long long blockEuler(int n, const At& at, double value, const std::array<int, 25
   return 2 * vertices - faces; // twice V - F / 2
 }
 
-
 // Twice the contributions of the cell with lowest corner (i, j, k) of values `v`: of the grid's
 // contour and of the half spacing's.
-ContourEuler cellEuler(const GridLattice& lattice, const std::vector<float>& v, int i, int j, int k, double value)
+ContourEuler cellEuler(
+  const GridLattice& lattice, const std::vector<float>& v, int i, int j, int k, double value)
 {
   float corner[2][2][2];
   bool below = false, above = false;
@@ -74,11 +74,14 @@ ContourEuler cellEuler(const GridLattice& lattice, const std::vector<float>& v, 
         fine[a][b][c] = DistanceGrid::halfSpacingValue(at, a, b, c);
       }
   return { blockEuler(1, at, value, marchingCubesTriangleCounts()),
-    blockEuler(2, [&](int a, int b, int c) { return fine[a][b][c]; }, value, marchingCubesTriangleCounts()) };
+    blockEuler(
+      2, [&](int a, int b, int c) { return fine[a][b][c]; }, value,
+      marchingCubesTriangleCounts()) };
 }
 
 // Twice the contributions of the cells around node n, the only ones its value enters.
-ContourEuler aroundNode(const GridLattice& lattice, const std::vector<float>& v, std::int64_t n, double value)
+ContourEuler aroundNode(
+  const GridLattice& lattice, const std::vector<float>& v, std::int64_t n, double value)
 {
   const std::array<int, 3> c = lattice.coordinates(n);
   ContourEuler sum;
@@ -128,7 +131,8 @@ std::vector<std::int64_t> wronglyJoinedCorners(const DistanceGrid& grid, double 
             {
               continue; // not two diagonal pairs
             }
-            // The bilinear interpolant's saddle value: at or above the value, the corners below are apart.
+            // The bilinear interpolant's saddle value: at or above the value, the corners below are
+            // apart.
             const double saddle = (f00 * f11 - f10 * f01) / (f00 + f11 - f10 - f01);
             if (saddle >= value)
             {
@@ -147,19 +151,20 @@ std::vector<std::int64_t> wronglyJoinedCorners(const DistanceGrid& grid, double 
 
 const std::array<int, 256>& marchingCubesTriangleCounts()
 {
-  static constexpr std::array<int, 256> kTriangles{
-  0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 2, 1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3,
-  1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3, 2, 3, 3, 2, 3, 4, 4, 3, 3, 4, 4, 3, 4, 5, 5, 2,
-  1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3, 2, 3, 3, 4, 3, 4, 4, 5, 3, 4, 4, 5, 4, 5, 5, 4,
-  2, 3, 3, 4, 3, 4, 2, 3, 3, 4, 4, 5, 4, 5, 3, 2, 3, 4, 4, 3, 4, 5, 3, 2, 4, 5, 5, 4, 5, 2, 4, 1,
-  1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3, 2, 3, 3, 4, 3, 4, 4, 5, 3, 2, 4, 3, 4, 3, 5, 2,
-  2, 3, 3, 4, 3, 4, 4, 5, 3, 4, 4, 5, 4, 5, 5, 4, 3, 4, 4, 3, 4, 5, 5, 4, 4, 3, 5, 2, 5, 4, 2, 1,
-  2, 3, 3, 4, 3, 4, 4, 5, 3, 4, 4, 5, 2, 3, 3, 2, 3, 4, 4, 5, 4, 5, 5, 2, 4, 3, 5, 4, 3, 2, 4, 1,
-  3, 4, 4, 5, 4, 5, 3, 4, 4, 5, 5, 2, 3, 4, 2, 1, 2, 3, 3, 2, 3, 4, 2, 1, 3, 2, 4, 1, 2, 1, 1, 0 };
+  static constexpr std::array<int, 256> kTriangles{ 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 2,
+    1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3, 1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3,
+    2, 3, 3, 2, 3, 4, 4, 3, 3, 4, 4, 3, 4, 5, 5, 2, 1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3,
+    2, 3, 3, 4, 3, 4, 4, 5, 3, 4, 4, 5, 4, 5, 5, 4, 2, 3, 3, 4, 3, 4, 2, 3, 3, 4, 4, 5, 4, 5, 3, 2,
+    3, 4, 4, 3, 4, 5, 3, 2, 4, 5, 5, 4, 5, 2, 4, 1, 1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 3,
+    2, 3, 3, 4, 3, 4, 4, 5, 3, 2, 4, 3, 4, 3, 5, 2, 2, 3, 3, 4, 3, 4, 4, 5, 3, 4, 4, 5, 4, 5, 5, 4,
+    3, 4, 4, 3, 4, 5, 5, 4, 4, 3, 5, 2, 5, 4, 2, 1, 2, 3, 3, 4, 3, 4, 4, 5, 3, 4, 4, 5, 2, 3, 3, 2,
+    3, 4, 4, 5, 4, 5, 5, 2, 4, 3, 5, 4, 3, 2, 4, 1, 3, 4, 4, 5, 4, 5, 3, 4, 4, 5, 5, 2, 3, 4, 2, 1,
+    2, 3, 3, 2, 3, 4, 2, 1, 3, 2, 4, 1, 2, 1, 1, 0 };
   return kTriangles;
 }
 
-std::vector<ContourEuler> contourEulerCharacteristics(const DistanceGrid& grid, const std::vector<double>& values)
+std::vector<ContourEuler> contourEulerCharacteristics(
+  const DistanceGrid& grid, const std::vector<double>& values)
 {
   const GridLattice& lattice = grid.lattice();
   const std::vector<float>& v = grid.values();
@@ -218,9 +223,9 @@ DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)
   }
   for (const std::int64_t n : wronglyJoinedCorners(grid, value))
   {
-    // Raised where that leaves the interpolant's topology as it is (it had no such join) and does not
-    // lower the grid's count: a join undone raises it, or keeps it where the join spans several faces
-    // (each corner but the last leaves it). A corner whose raise would cut a handle of the
+    // Raised where that leaves the interpolant's topology as it is (it had no such join) and does
+    // not lower the grid's count: a join undone raises it, or keeps it where the join spans several
+    // faces (each corner but the last leaves it). A corner whose raise would cut a handle of the
     // interpolant too (a true handle's) stays. Both counts change only in
     // the node's cells.
     const ContourEuler before = aroundNode(lattice, values, n, value);

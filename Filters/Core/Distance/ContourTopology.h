@@ -1,9 +1,9 @@
-// The Euler characteristic of a grid's marching-cubes contour, counted cell by cell without building
-// it, on the grid and on its trilinear interpolant at half the spacing (DistanceGrid::refined). The
-// case table settles a face whose corners alternate in sign by joining the corners below the value,
-// not as the interpolant may; where that adds handles or joins components, the count at half the
-// spacing is higher, and the start is taken of the grid with those faces separated, corner by
-// corner (withFacesSeparated; contour() in VTKConversions.h).
+// The Euler characteristic of a grid's marching-cubes contour, counted cell by cell without
+// building it, on the grid and on its trilinear interpolant at half the spacing
+// (DistanceGrid::refined). The case table settles a face whose corners alternate in sign by joining
+// the corners below the value, not as the interpolant may; where that adds handles or joins
+// components, the count at half the spacing is higher, and the start is taken of the grid with
+// those faces separated, corner by corner (withFacesSeparated; contour() in VTKConversions.h).
 #ifndef ShrinkWrap_ContourTopology_h
 #define ShrinkWrap_ContourTopology_h
 
@@ -34,14 +34,15 @@ struct ContourEuler
 };
 ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value);
 // The same for several values in one pass over the cells.
-std::vector<ContourEuler> contourEulerCharacteristics(const DistanceGrid& grid, const std::vector<double>& values);
+std::vector<ContourEuler> contourEulerCharacteristics(
+  const DistanceGrid& grid, const std::vector<double>& values);
 
-// The grid with the case table's wrong joins undone on the faces: where two diagonal corners of a face
-// lie below `value` and the face's bilinear saddle does not (the interpolant keeps them apart, the
-// table joins them), the shallower of the two is raised above the value, so that it counts as above,
-// unless that would change the Euler characteristic of the interpolant's contour at half the spacing
-// or lower the grid's. The contour moves by under a cell there and keeps the grid's triangle count,
-// where refined() would quadruple it.
+// The grid with the case table's wrong joins undone on the faces: where two diagonal corners of a
+// face lie below `value` and the face's bilinear saddle does not (the interpolant keeps them apart,
+// the table joins them), the shallower of the two is raised above the value, so that it counts as
+// above, unless that would change the Euler characteristic of the interpolant's contour at half the
+// spacing or lower the grid's. The contour moves by under a cell there and keeps the grid's
+// triangle count, where refined() would quadruple it.
 DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value);
 
 // Marching cubes of a grid at one value, with the case table of marchingCubesTriangleCounts (the

@@ -3,11 +3,10 @@
 
 #include "Distance/TriangleBoxOverlap.h"
 
-
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <iterator>
+#include <limits>
 #include <numeric>
 
 namespace shrinkwrap
@@ -28,10 +27,12 @@ std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std:
   return e;
 }
 
-std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vector<std::int64_t>& cells,
-  int extraLayers, const std::array<bool, 6>& gridFaces, std::uint8_t* state)
+std::vector<std::int64_t> bandNodes(const GridLattice& lattice,
+  const std::vector<std::int64_t>& cells, int extraLayers, const std::array<bool, 6>& gridFaces,
+  std::uint8_t* state)
 {
-  const std::int64_t sx = 1, sy = lattice.dims[0], sz = static_cast<std::int64_t>(lattice.dims[0]) * lattice.dims[1];
+  const std::int64_t sx = 1, sy = lattice.dims[0],
+                     sz = static_cast<std::int64_t>(lattice.dims[0]) * lattice.dims[1];
   std::vector<std::int64_t> nodes;
   nodes.reserve(cells.size() * 3);
   auto add = [&](std::int64_t n) {
@@ -55,12 +56,18 @@ std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vecto
     {
       const std::int64_t n = nodes[k];
       const auto c = lattice.coordinates(n);
-      if (c[0] > 0) add(n - sx);
-      if (c[0] + 1 < lattice.dims[0]) add(n + sx);
-      if (c[1] > 0) add(n - sy);
-      if (c[1] + 1 < lattice.dims[1]) add(n + sy);
-      if (c[2] > 0) add(n - sz);
-      if (c[2] + 1 < lattice.dims[2]) add(n + sz);
+      if (c[0] > 0)
+        add(n - sx);
+      if (c[0] + 1 < lattice.dims[0])
+        add(n + sx);
+      if (c[1] > 0)
+        add(n - sy);
+      if (c[1] + 1 < lattice.dims[1])
+        add(n + sy);
+      if (c[2] > 0)
+        add(n - sz);
+      if (c[2] + 1 < lattice.dims[2])
+        add(n + sz);
     }
   }
   const auto& d = lattice.dims;
@@ -105,10 +112,12 @@ bool computeBand(const DistanceSource& source, const GridLattice& lattice,
       const double side = hit.side;
       band.sign[k] = side < 0 ? -1 : 1;
       const Vec3 unit = hit.normal.normalized();
-      band.normal[k] = { static_cast<float>(unit.x()), static_cast<float>(unit.y()), static_cast<float>(unit.z()) };
+      band.normal[k] = { static_cast<float>(unit.x()), static_cast<float>(unit.y()),
+        static_cast<float>(unit.z()) };
       band.element[k] = hit.element;
       band.sure[k] = hit.sure;
-      state[node] = band.distance[k] <= onSurface ? BandOnSurface : (side < 0 ? BandInside : BandOutside);
+      state[node] =
+        band.distance[k] <= onSurface ? BandOnSurface : (side < 0 ? BandInside : BandOutside);
     }
   });
 }

@@ -1,12 +1,12 @@
 // The band of exact distances (Algorithm 1, line 5): every node of the cells the outline found
-// (Outline.h), plus optional extra layers, gets its exact distance, closest point and sign; the node
-// states it leaves are those the sign votes (SignVotes.h) go on from.
+// (Outline.h), plus optional extra layers, gets its exact distance, closest point and sign; the
+// node states it leaves are those the sign votes (SignVotes.h) go on from.
 #ifndef ShrinkWrap_DistanceBand_h
 #define ShrinkWrap_DistanceBand_h
 
+#include "Common/Progress.h"
 #include "Distance/DistanceSource.h"
 #include "Distance/GridLattice.h"
-#include "Common/Progress.h"
 
 #include <array>
 #include <cstdint>
@@ -37,18 +37,19 @@ struct DistanceBand
   std::vector<float> distance;     // exact unsigned distance
   std::vector<signed char> sign;   // +1 outside, -1 inside, from the closest feature's pseudonormal
   std::vector<std::array<float, 3>> normal; // the pseudonormal there (unit length)
-  std::vector<std::int32_t> element; // the triangle the closest point lies on
-  std::vector<char> sure;          // SourcePoint::sure: whether `sign` can be trusted
+  std::vector<std::int32_t> element;        // the triangle the closest point lies on
+  std::vector<char> sure;                   // SourcePoint::sure: whether `sign` can be trusted
 };
 
 // Marks the nodes of the given cells (and `extraLayers` rings of 6-neighbours) as band nodes in
-// state, and lists them. The nodes on the grid's faces that gridFaces names (-x, +x, -y, +y, -z, +z)
-// join too: a grid that does not contain the whole mesh needs exact distances and signs there (a
-// slab's own cut faces are not the grid's).
-// Whether the surface's box lies strictly inside the grid's (then the grid's corner is outside).
+// state, and lists them. The nodes on the grid's faces that gridFaces names (-x, +x, -y, +y, -z,
+// +z) join too: a grid that does not contain the whole mesh needs exact distances and signs there
+// (a slab's own cut faces are not the grid's). Whether the surface's box lies strictly inside the
+// grid's (then the grid's corner is outside).
 inline bool strictlyInside(const Box& surface, const Box& grid)
 {
-  return (surface.min.array() > grid.min.array()).all() && (surface.max.array() < grid.max.array()).all();
+  return (surface.min.array() > grid.min.array()).all() &&
+    (surface.max.array() < grid.max.array()).all();
 }
 // The distance within which the band's nodes find their closest point: a node of a touched cell is
 // within a cell diagonal of the surface; each extra layer adds a cell.
@@ -68,8 +69,9 @@ inline std::array<bool, 6> allFaces(bool on)
 {
   return { on, on, on, on, on, on };
 }
-std::vector<std::int64_t> bandNodes(const GridLattice& lattice, const std::vector<std::int64_t>& cells,
-  int extraLayers, const std::array<bool, 6>& gridFaces, std::uint8_t* state);
+std::vector<std::int64_t> bandNodes(const GridLattice& lattice,
+  const std::vector<std::int64_t>& cells, int extraLayers, const std::array<bool, 6>& gridFaces,
+  std::uint8_t* state);
 
 // Exact distances, closest points and signs at the band nodes; the signs go into state too (band
 // nodes within `onSurface` of the surface stay BandOnSurface). Returns false if aborted.

@@ -16,7 +16,8 @@ DistanceSample DistanceGrid::sample(const Vec3& x) const
   for (int a = 0; a < 3; ++a)
   {
     const double t = (x[a] - this->Lattice.origin[a]) / this->Lattice.spacing[a];
-    const double u = std::isnan(t) ? 0.0 : std::clamp(t, 0.0, d[a] - 1.0); // a NaN point: the evolver reports it
+    const double u =
+      std::isnan(t) ? 0.0 : std::clamp(t, 0.0, d[a] - 1.0); // a NaN point: the evolver reports it
     c[a] = std::min(static_cast<int>(u), d[a] - 2);
     f[a] = u - c[a];
   }
@@ -53,7 +54,8 @@ DistanceGrid DistanceGrid::refined() const
     fine.spacing[a] = coarse.spacing[a] / 2;
   }
   std::vector<float> values(fine.nodeCount());
-  const auto at = [this](int i, int j, int k) { return this->Values[this->Lattice.index(i, j, k)]; };
+  const auto at = [this](
+                    int i, int j, int k) { return this->Values[this->Lattice.index(i, j, k)]; };
   parallelFor(0, fine.dims[2], 1, [&](Index kb, Index ke) {
     for (int k = static_cast<int>(kb); k < ke; ++k)
     {

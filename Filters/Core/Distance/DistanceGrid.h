@@ -34,22 +34,23 @@ public:
 
   // The same trilinear interpolant sampled at half the spacing (the nodes kept): a contour of it
   // follows the interpolant's topology more closely where marching cubes on this grid resolves an
-  // ambiguous face the other way. ContourTopology counts that contour's Euler characteristic cell by
-  // cell without building the grid; the grid itself is for checking the count.
+  // ambiguous face the other way. ContourTopology counts that contour's Euler characteristic cell
+  // by cell without building the grid; the grid itself is for checking the count.
   DistanceGrid refined() const;
 
   // The interpolant at half-spacing node (i, j, k) of the values `at(i, j, k)` on this spacing: the
   // mean of the 8 corners (i / 2 or (i + 1) / 2, ...), repeated where the node lies on an old edge,
   // face or node. Summed in double and rounded once, so it lies between the corners' floats (a node
-  // on an old node keeps its value exactly): a cell whose corners are all on one side of a level has
-  // no finer crossing, which ContourTopology relies on. One formula for refined() and ContourTopology,
-  // so a value near the level falls on the same side in both.
+  // on an old node keeps its value exactly): a cell whose corners are all on one side of a level
+  // has no finer crossing, which ContourTopology relies on. One formula for refined() and
+  // ContourTopology, so a value near the level falls on the same side in both.
   template <typename At>
   static float halfSpacingValue(const At& at, int i, int j, int k)
   {
-    const int i0 = i / 2, i1 = (i + 1) / 2, j0 = j / 2, j1 = (j + 1) / 2, k0 = k / 2, k1 = (k + 1) / 2;
-    const double sum = double(at(i0, j0, k0)) + at(i1, j0, k0) + at(i0, j1, k0) + at(i1, j1, k0) + at(i0, j0, k1) +
-      at(i1, j0, k1) + at(i0, j1, k1) + at(i1, j1, k1);
+    const int i0 = i / 2, i1 = (i + 1) / 2, j0 = j / 2, j1 = (j + 1) / 2, k0 = k / 2,
+              k1 = (k + 1) / 2;
+    const double sum = double(at(i0, j0, k0)) + at(i1, j0, k0) + at(i0, j1, k0) + at(i1, j1, k0) +
+      at(i0, j0, k1) + at(i1, j0, k1) + at(i0, j1, k1) + at(i1, j1, k1);
     return static_cast<float>(0.125 * sum);
   }
 

@@ -27,7 +27,8 @@ TriangleSource::TriangleSource(const TriangleSoup& soup)
 {
 }
 
-bool TriangleSource::outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const
+bool TriangleSource::outline(
+  const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const
 {
   return outlineCells(this->Soup, lattice, progress, cells);
 }
@@ -60,7 +61,8 @@ SourcePoint TriangleSource::closestPoint(const Vec3& x, double maxSquaredDistanc
 
 const WindingNumber& TriangleSource::winding() const
 {
-  std::call_once(this->WindingBuilt, [this] { this->Winding = std::make_unique<WindingNumber>(this->Soup, this->Tree); });
+  std::call_once(this->WindingBuilt,
+    [this] { this->Winding = std::make_unique<WindingNumber>(this->Soup, this->Tree); });
   return *this->Winding;
 }
 
@@ -74,7 +76,8 @@ double TriangleSource::windingNumber(const Vec3& x) const
 
 const std::vector<char>& TriangleSource::sidesConfirmed() const
 {
-  std::call_once(this->SidesBuilt, [this] { this->Sides = confirmSides(this->Soup, this->winding()); });
+  std::call_once(
+    this->SidesBuilt, [this] { this->Sides = confirmSides(this->Soup, this->winding()); });
   return this->Sides;
 }
 
@@ -86,15 +89,17 @@ std::vector<std::array<Vec3, 2>> TriangleSource::rims(double creaseAngle) const
   const double cosCrease = std::cos(creaseAngle * M_PI / 180);
   auto crease = [&](const EdgeUse& u, const EdgeUse& v) {
     const Vec3 nu = unitNormal(this->Soup, u.triangle), nv = unitNormal(this->Soup, v.triangle);
-    // Two triangles that run along the edge the same way face opposite ways (a Moebius band's seam);
-    // a sliver's normal (zero) tells nothing.
-    return nu != Vec3::Zero() && nv != Vec3::Zero() && (u.forward != v.forward ? 1 : -1) * nu.dot(nv) < cosCrease;
+    // Two triangles that run along the edge the same way face opposite ways (a Moebius band's
+    // seam); a sliver's normal (zero) tells nothing.
+    return nu != Vec3::Zero() && nv != Vec3::Zero() &&
+      (u.forward != v.forward ? 1 : -1) * nu.dot(nv) < cosCrease;
   };
   forEachEdge(uses, [&](std::size_t first, std::size_t last) {
     const auto& t = this->Soup.triangles[uses[first].triangle];
     const int a = t[uses[first].slot], b = t[(uses[first].slot + 1) % 3];
     const bool rim = last == first + 1;
-    if (a != b && (rim || (last == first + 2 && creaseAngle < 180 && crease(uses[first], uses[first + 1]))))
+    if (a != b &&
+      (rim || (last == first + 2 && creaseAngle < 180 && crease(uses[first], uses[first + 1]))))
     {
       rims.push_back({ x[a], x[b] });
     }

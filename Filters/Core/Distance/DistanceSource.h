@@ -1,18 +1,18 @@
 // What Algorithm 1 needs of a surface, as an interface: its bounds, the grid cells it touches (the
-// box-overlap query behind the outline), and for a point the nearest surface point with the side the
-// point is on (the closest-point query behind the band). Triangles implement it (TriangleSource: the
-// welded soup, its AABB tree, its pseudonormals, its octree outline); a point set implements it
-// without sides (PointSource: the nearest point; PointSurface: the surface fitted to the points). Where the sides
-// of a surface are in doubt (holes, crossings, overlaps), its generalized winding number decides
-// (WindingSign.h).
+// box-overlap query behind the outline), and for a point the nearest surface point with the side
+// the point is on (the closest-point query behind the band). Triangles implement it
+// (TriangleSource: the welded soup, its AABB tree, its pseudonormals, its octree outline); a point
+// set implements it without sides (PointSource: the nearest point; PointSurface: the surface fitted
+// to the points). Where the sides of a surface are in doubt (holes, crossings, overlaps), its
+// generalized winding number decides (WindingSign.h).
 #ifndef ShrinkWrap_DistanceSource_h
 #define ShrinkWrap_DistanceSource_h
 
+#include "Common/Progress.h"
+#include "Common/TriangleSoup.h"
 #include "Distance/AABBTree.h"
 #include "Distance/GridLattice.h"
-#include "Common/Progress.h"
 #include "Distance/PseudoNormals.h"
-#include "Common/TriangleSoup.h"
 #include "Distance/WindingNumber.h"
 
 #include <cstdint>
@@ -30,16 +30,18 @@ struct SourcePoint
   double squaredDistance = std::numeric_limits<double>::infinity();
   Vec3 point = Vec3::Zero();
   double side = 0; // > 0 outside, < 0 inside (the query point against the surface's normal there)
-  Vec3 normal = Vec3::Zero(); // that normal: the pseudonormal of the feature the nearest point lies on
+  Vec3 normal =
+    Vec3::Zero();   // that normal: the pseudonormal of the feature the nearest point lies on
   int element = -1; // the triangle (or point) the nearest point lies on
-  // false where `side` may be wrong: the nearest point lies on an edge or corner of a hole's rim or of
-  // an edge with more than two triangles, or on a triangle without a normal
+  // false where `side` may be wrong: the nearest point lies on an edge or corner of a hole's rim or
+  // of an edge with more than two triangles, or on a triangle without a normal
   bool sure = true;
   // How far a caller may trust this point over its own estimate, 0 to 1 (below 1 where a fitted
   // surface fades out, PointSurface.h), so that switching between them leaves no step.
   double trust = 1;
-  // Taken only where it lies beyond the caller's own estimate (farther from the query, signed), never
-  // short of it: a noisy cloud's first layer (PointSurface::firstLayer) deepens a closed field only.
+  // Taken only where it lies beyond the caller's own estimate (farther from the query, signed),
+  // never short of it: a noisy cloud's first layer (PointSurface::firstLayer) deepens a closed
+  // field only.
   bool beyondEstimate = false;
 };
 
@@ -53,12 +55,16 @@ public:
   virtual ~DistanceSource() = default;
   virtual Box bounds() const = 0;
   // The grid cells the surface touches; false if progress asked to stop.
-  virtual bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const = 0;
+  virtual bool outline(const GridLattice& lattice, const Progress& progress,
+    std::vector<std::int64_t>& cells) const = 0;
   // The nearest surface point to x within sqrt(maxSquaredDistance).
   virtual SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const = 0;
 
   // The generalized winding number at x (about 1 inside, 0 outside; NaN: this source has none).
-  virtual double windingNumber(const Vec3&) const { return std::numeric_limits<double>::quiet_NaN(); }
+  virtual double windingNumber(const Vec3&) const
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   // Per element, whether the winding number confirms its sides: outside in front, inside behind
   // (false for a triangle inside another part of the surface, or crossing one). Built once, on the
   // first call; empty: no winding number.
@@ -67,9 +73,9 @@ public:
     static const std::vector<char> none;
     return none;
   }
-  // The edges a wrap must cover (RimCoverage.h), each as its two ends: where the surface ends (a hole's
-  // rim, an open sheet's edge) and its sharp creases, where the faces on the two sides turn by more than
-  // creaseAngle degrees (180: none). None for points.
+  // The edges a wrap must cover (RimCoverage.h), each as its two ends: where the surface ends (a
+  // hole's rim, an open sheet's edge) and its sharp creases, where the faces on the two sides turn
+  // by more than creaseAngle degrees (180: none). None for points.
   virtual std::vector<std::array<Vec3, 2>> rims(double /*creaseAngle*/) const { return {}; }
 };
 
@@ -81,7 +87,8 @@ public:
   // (ConsistentOrientation.h).
   explicit TriangleSource(const TriangleSoup& soup);
   Box bounds() const override { return this->Soup.bounds(); }
-  bool outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const override;
+  bool outline(const GridLattice& lattice, const Progress& progress,
+    std::vector<std::int64_t>& cells) const override;
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   long long boundaryEdges() const { return this->Normals.boundaryEdges(); }
   long long nonManifoldEdges() const { return this->Normals.nonManifoldEdges(); }

@@ -1,7 +1,6 @@
 #include "Distance/EikonalSweep.h"
 #include "Common/Parallel.h"
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -47,8 +46,8 @@ float eikonalUpdate(std::array<double, 3> a, std::array<double, 3> h)
 }
 } // namespace
 
-bool sweepEikonal(const GridLattice& lattice, const std::uint8_t* frozen, float* distance, int iterations,
-  const Progress& progress)
+bool sweepEikonal(const GridLattice& lattice, const std::uint8_t* frozen, float* distance,
+  int iterations, const Progress& progress)
 {
   const auto& d = lattice.dims;
   const std::int64_t sy = d[0], sz = sy * d[1];
@@ -82,8 +81,8 @@ bool sweepEikonal(const GridLattice& lattice, const std::uint8_t* frozen, float*
           {
             continue;
           }
-          const std::array<double, 3> a = { neighbourMin(n, i, d[0], 1), neighbourMin(n, j, d[1], sy),
-            neighbourMin(n, k, d[2], sz) };
+          const std::array<double, 3> a = { neighbourMin(n, i, d[0], 1),
+            neighbourMin(n, j, d[1], sy), neighbourMin(n, k, d[2], sz) };
           if (std::isfinite(std::min({ a[0], a[1], a[2] })))
           {
             distance[n] = std::min(distance[n], eikonalUpdate(a, h));

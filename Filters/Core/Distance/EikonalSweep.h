@@ -3,8 +3,8 @@
 #ifndef ShrinkWrap_EikonalSweep_h
 #define ShrinkWrap_EikonalSweep_h
 
-#include "Distance/GridLattice.h"
 #include "Common/Progress.h"
+#include "Distance/GridLattice.h"
 
 #include <cstdint>
 
@@ -13,8 +13,8 @@ namespace shrinkwrap
 
 // distance: the band values where frozen[n] is nonzero (band nodes), anything elsewhere; unsigned
 // distances out.
-bool sweepEikonal(const GridLattice& lattice, const std::uint8_t* frozen, float* distance, int iterations,
-  const Progress& progress);
+bool sweepEikonal(const GridLattice& lattice, const std::uint8_t* frozen, float* distance,
+  int iterations, const Progress& progress);
 
 } // namespace shrinkwrap
 

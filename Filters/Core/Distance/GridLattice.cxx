@@ -14,7 +14,8 @@ constexpr double kMaxNodesPerAxis = 1 << 30;
 
 bool withinCoordinateRange(const Box& box)
 {
-  return box.min.cwiseAbs().maxCoeff() <= kLargestCoordinate && box.max.cwiseAbs().maxCoeff() <= kLargestCoordinate;
+  return box.min.cwiseAbs().maxCoeff() <= kLargestCoordinate &&
+    box.max.cwiseAbs().maxCoeff() <= kLargestCoordinate;
 }
 
 Status placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLattice& lattice)
@@ -46,7 +47,8 @@ Status placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLatt
   {
     return Status::failure("the input has no extent (all its points coincide)");
   }
-  const double h = placement.cellSize > 0 ? placement.cellSize : extent.maxCoeff() / placement.resolution;
+  const double h =
+    placement.cellSize > 0 ? placement.cellSize : extent.maxCoeff() / placement.resolution;
   lattice.spacing = Vec3::Constant(h);
   Vec3 span;
   for (int a = 0; a < 3; ++a)
@@ -63,7 +65,8 @@ Status placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLatt
   lattice.origin = meshBounds.center() - 0.5 * span;
   if (!withinCoordinateRange(lattice.bounds()))
   {
-    return Status::failure("the grid would reach beyond coordinates of +-1e30; lower OffsetFactor or BoxScale");
+    return Status::failure(
+      "the grid would reach beyond coordinates of +-1e30; lower OffsetFactor or BoxScale");
   }
   return {};
 }

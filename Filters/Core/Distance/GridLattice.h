@@ -1,5 +1,5 @@
-// The node lattice of a distance grid: index <-> position. Values live at the nodes (VTK point data),
-// so the shrink-wrap evolver samples exactly the lattice the signed distance filter writes.
+// The node lattice of a distance grid: index <-> position. Values live at the nodes (VTK point
+// data), so the shrink-wrap evolver samples exactly the lattice the signed distance filter writes.
 #ifndef ShrinkWrap_GridLattice_h
 #define ShrinkWrap_GridLattice_h
 
@@ -26,7 +26,8 @@ struct GridLattice
   }
   std::int64_t index(int i, int j, int k) const
   {
-    return i + static_cast<std::int64_t>(this->dims[0]) * (j + static_cast<std::int64_t>(this->dims[1]) * k);
+    return i +
+      static_cast<std::int64_t>(this->dims[0]) * (j + static_cast<std::int64_t>(this->dims[1]) * k);
   }
   // (i, j, k) of node index n.
   std::array<int, 3> coordinates(std::int64_t n) const
@@ -50,7 +51,8 @@ struct GridLattice
   double minSpacing() const { return this->spacing.minCoeff(); }
   bool operator==(const GridLattice& other) const
   {
-    return this->origin == other.origin && this->spacing == other.spacing && this->dims == other.dims;
+    return this->origin == other.origin && this->spacing == other.spacing &&
+      this->dims == other.dims;
   }
   bool operator!=(const GridLattice& other) const { return !(*this == other); }
 };
@@ -90,13 +92,15 @@ constexpr double kPaperOffsetFactor = 1.0;
 // How the grid is placed around a mesh (paper Section 4.1 and Algorithm 1, lines 3-4). The default
 // offset is 0.15, not the paper's 1.0: the cells go to the object (84 across it at Resolution 120
 // rather than 36), and the margin still holds an offset start of a few cells with its gap closing,
-// which a wrap reusing the field needs (measured on the trefoil: largest distance 0.009 against 0.2).
+// which a wrap reusing the field needs (measured on the trefoil: largest distance 0.009 against
+// 0.2).
 struct GridPlacement
 {
-  double boxScale = 1.1;      // phi: the mesh bounds are scaled by it about their centre
-  double offsetFactor = 0.15; // o = offsetFactor * the largest side of the scaled box, added on every side
-  int resolution = 120;       // cells along the longest axis of the whole grid ("120^3" in Table 1)
-  double cellSize = 0;        // > 0 overrides resolution
+  double boxScale = 1.1; // phi: the mesh bounds are scaled by it about their centre
+  double offsetFactor =
+    0.15; // o = offsetFactor * the largest side of the scaled box, added on every side
+  int resolution = 120; // cells along the longest axis of the whole grid ("120^3" in Table 1)
+  double cellSize = 0;  // > 0 overrides resolution
 };
 
 // Coordinates beyond +-1e30 are refused: distances are stored as float (largest 3.4e38) and their

@@ -61,7 +61,8 @@ public:
             regionReached[this->root(r)] = 1;
         }
       }
-    std::vector<char> nodes(static_cast<std::size_t>(this->Dims[0]) * this->Dims[1] * this->Dims[2], 0);
+    std::vector<char> nodes(
+      static_cast<std::size_t>(this->Dims[0]) * this->Dims[1] * this->Dims[2], 0);
     for (int row = 0; row + 1 < static_cast<int>(this->RowStart.size()); ++row)
     {
       const auto first = nodes.begin() + static_cast<std::int64_t>(row) * this->Dims[0];

@@ -1,7 +1,7 @@
-// Which free nodes of a grid the border reaches through free face neighbours (6-connectivity): what a
-// flood fill from the border finds, and what it leaves are cavities. The closing of a point set fills
-// those (GapClosing.h). Found by joining runs of free nodes along x, row by row, in memory order (a
-// flood fill's queue would jump across the grid).
+// Which free nodes of a grid the border reaches through free face neighbours (6-connectivity): what
+// a flood fill from the border finds, and what it leaves are cavities. The closing of a point set
+// fills those (GapClosing.h). Found by joining runs of free nodes along x, row by row, in memory
+// order (a flood fill's queue would jump across the grid).
 #ifndef ShrinkWrap_GridRegions_h
 #define ShrinkWrap_GridRegions_h
 
@@ -12,8 +12,8 @@
 namespace shrinkwrap
 {
 
-// Per node of `lattice`: 1 where it is free (blocked[n] == 0) and a path of free face neighbours joins
-// it to a node on the grid's border.
+// Per node of `lattice`: 1 where it is free (blocked[n] == 0) and a path of free face neighbours
+// joins it to a node on the grid's border.
 std::vector<char> reachedFromBorder(const GridLattice& lattice, const std::vector<char>& blocked);
 
 } // namespace shrinkwrap

@@ -3,7 +3,6 @@
 
 #include "Distance/TriangleBoxOverlap.h"
 
-
 #include <cmath>
 #include <iterator>
 #include <numeric>
@@ -30,7 +29,8 @@ Box cellBox(const GridLattice& lattice, const std::array<int, 3>& lo, int size)
   return b;
 }
 
-// Algorithm 2, lines 3-11 for one node: the children that the surface touches, with their triangles.
+// Algorithm 2, lines 3-11 for one node: the children that the surface touches, with their
+// triangles.
 void subdivide(const TriangleSoup& soup, const GridLattice& lattice, const std::array<int, 3>& last,
   const OctreeNode& node, std::vector<OctreeNode>& children)
 {
@@ -107,8 +107,9 @@ bool outlineCells(const TriangleSoup& soup, const GridLattice& lattice, const Pr
       }
     });
     level.clear();
-    next.forEach(
-      [&](std::vector<OctreeNode>& part) { std::move(part.begin(), part.end(), std::back_inserter(level)); });
+    next.forEach([&](std::vector<OctreeNode>& part) {
+      std::move(part.begin(), part.end(), std::back_inserter(level));
+    });
     if (!progress.report(static_cast<double>(depth + 1) / levels))
     {
       return false;

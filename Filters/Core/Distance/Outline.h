@@ -3,9 +3,9 @@
 #ifndef ShrinkWrap_Outline_h
 #define ShrinkWrap_Outline_h
 
-#include "Distance/GridLattice.h"
 #include "Common/Progress.h"
 #include "Common/TriangleSoup.h"
+#include "Distance/GridLattice.h"
 
 #include <cstdint>
 #include <vector>

@@ -16,8 +16,8 @@ PointGrid::PointGrid(const Vec3* points, std::size_t count, const Vec3& origin, 
     keyed[i] = { key(this->binOf(points[i])), static_cast<int>(i) };
   }
   std::sort(keyed.begin(), keyed.end());
-  // Sized for the occupied bins, not the points: a fit's bins hold dozens (at 200,000 points a table
-  // per point was 8 MB to zero).
+  // Sized for the occupied bins, not the points: a fit's bins hold dozens (at 200,000 points a
+  // table per point was 8 MB to zero).
   std::size_t bins = 0;
   for (std::size_t s = 0; s < keyed.size(); ++s)
   {
@@ -44,7 +44,8 @@ PointGrid::PointGrid(const Vec3* points, std::size_t count, const Vec3& origin, 
       {
         slot = (slot + 1) & this->Mask;
       }
-      this->Bins[slot] = { keyed[s].first, static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(s) };
+      this->Bins[slot] = { keyed[s].first, static_cast<std::uint32_t>(s),
+        static_cast<std::uint32_t>(s) };
       last = slot;
     }
     this->Bins[last].end = static_cast<std::uint32_t>(s + 1);

@@ -29,22 +29,26 @@ public:
   template <typename F>
   void forEachWithin(const Vec3& x, double radius, F&& f) const
   {
-    this->forEachWithinBins(x, radius, [](const Bin&) { return true; }, std::forward<F>(f));
+    this->forEachWithinBins(
+      x, radius, [](const Bin&) { return true; }, std::forward<F>(f));
   }
 
   // The same points, but only from the bins that can hold points within `lineRadius` of the line
   // through `onLine` along unit `direction`, in the same order (the bins left out hold none).
   template <typename F>
-  void forEachWithinNearLine(
-    const Vec3& x, double radius, const Vec3& onLine, const Vec3& direction, double lineRadius, F&& f) const
+  void forEachWithinNearLine(const Vec3& x, double radius, const Vec3& onLine,
+    const Vec3& direction, double lineRadius, F&& f) const
   {
     // A bin's points lie within half its diagonal of its centre.
     const double reach = lineRadius + (0.5 * std::sqrt(3.0) + kSlack) * this->Cell;
-    this->forEachWithinBins(x, radius, [&](const Bin& b) {
-      const Vec3 off = this->centreOf(b) - onLine;
-      const double along = off.dot(direction);
-      return off.squaredNorm() - along * along <= reach * reach;
-    }, std::forward<F>(f));
+    this->forEachWithinBins(
+      x, radius,
+      [&](const Bin& b) {
+        const Vec3 off = this->centreOf(b) - onLine;
+        const double along = off.dot(direction);
+        return off.squaredNorm() - along * along <= reach * reach;
+      },
+      std::forward<F>(f));
   }
 
   // The point nearest x within `radius` (inclusive): false where none is. The bin of x first, then
@@ -75,8 +79,8 @@ public:
       for (std::int64_t j = low[1]; j <= high[1]; ++j)
         for (std::int64_t i = low[0]; i <= high[0]; ++i)
         {
-          // A bin no nearer than the best holds no point that would replace it (a tie keeps the first
-          // found; with none found yet, a point at exactly the radius still counts).
+          // A bin no nearer than the best holds no point that would replace it (a tie keeps the
+          // first found; with none found yet, a point at exactly the radius still counts).
           const Bin b{ i, j, k };
           const double d2 = this->squaredDistanceToBin(x, b);
           if (b == home || d2 > best || (found >= 0 && d2 == best))
@@ -130,7 +134,8 @@ private:
     double d2 = 0;
     for (int a = 0; a < 3; ++a)
     {
-      const double lo = this->Origin[a] + this->Cell * (b[a] - kSlack), hi = this->Origin[a] + this->Cell * (b[a] + 1 + kSlack);
+      const double lo = this->Origin[a] + this->Cell * (b[a] - kSlack),
+                   hi = this->Origin[a] + this->Cell * (b[a] + 1 + kSlack);
       const double d = x[a] < lo ? lo - x[a] : (x[a] > hi ? x[a] - hi : 0.0);
       d2 += d * d;
     }
@@ -143,15 +148,17 @@ private:
     return static_cast<std::int64_t>((bits(b[0]) << 42) | (bits(b[1]) << 21) | bits(b[2]));
   }
 
-  // The occupied bins in an open-addressing table (a lookup per bin of every query: no node chasing).
+  // The occupied bins in an open-addressing table (a lookup per bin of every query: no node
+  // chasing).
   struct Slot
   {
-    std::int64_t key = -1; // -1: empty (keys are non-negative)
+    std::int64_t key = -1;            // -1: empty (keys are non-negative)
     std::uint32_t begin = 0, end = 0; // the bin's range in Order
   };
   std::size_t slotOf(std::int64_t k) const
   {
-    return static_cast<std::size_t>((static_cast<std::uint64_t>(k) * 0x9E3779B97F4A7C15ull) >> 32) & this->Mask;
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(k) * 0x9E3779B97F4A7C15ull) >> 32) &
+      this->Mask;
   }
   const Slot* find(std::int64_t k) const
   {
@@ -168,7 +175,7 @@ private:
   double Cell;
   LargeVector<int> Order;   // point indices sorted by bin
   LargeVector<Vec3> Sorted; // the points in that order: a bin's lie side by side in memory
-  std::vector<Slot> Bins; // at most half full
+  std::vector<Slot> Bins;   // at most half full
   std::size_t Mask = 0;
 };
 

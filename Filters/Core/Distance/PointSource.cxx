@@ -5,8 +5,8 @@
 #include "Distance/PointTree.h"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
@@ -27,7 +27,8 @@ PointSource::PointSource(PointList points)
 {
 }
 
-bool PointSource::outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const
+bool PointSource::outline(
+  const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const
 {
   cells.clear();
   cells.reserve(this->Points.size());
@@ -38,8 +39,10 @@ bool PointSource::outline(const GridLattice& lattice, const Progress& progress, 
     for (int a = 0; a < 3; ++a)
     {
       const double u = std::floor((p[a] - lattice.origin[a]) / lattice.spacing[a]);
-      inside = inside && u >= 0 && u <= lattice.dims[a] - 1; // a point on the far face: its last cell
-      c[a] = static_cast<int>(std::clamp(u, 0.0, static_cast<double>(std::max(lattice.dims[a] - 2, 0))));
+      inside =
+        inside && u >= 0 && u <= lattice.dims[a] - 1; // a point on the far face: its last cell
+      c[a] =
+        static_cast<int>(std::clamp(u, 0.0, static_cast<double>(std::max(lattice.dims[a] - 2, 0))));
     }
     if (inside)
     {
@@ -61,7 +64,8 @@ bool PointSource::outline(const GridLattice& lattice, const Progress& progress, 
     {
       for (std::uint64_t word = bits[w]; word != 0; word &= word - 1)
       {
-        cells.push_back(static_cast<std::int64_t>(64 * w + static_cast<std::size_t>(__builtin_ctzll(word))));
+        cells.push_back(
+          static_cast<std::int64_t>(64 * w + static_cast<std::size_t>(__builtin_ctzll(word))));
       }
     }
   }
@@ -86,7 +90,8 @@ constexpr double kLocalRadius = 8;
 constexpr double kSparseQuantile = 0.99;
 constexpr double kUniformTail = 1.35;
 constexpr double kSparseGain = 1.5;
-constexpr std::size_t kLocalMeans = 5000; // at most, from evenly spread sampled points (5 ms, not 20)
+constexpr std::size_t kLocalMeans =
+  5000; // at most, from evenly spread sampled points (5 ms, not 20)
 constexpr int kLeastNeighbours = 5;
 
 double quantile(std::vector<double> values, double q)
@@ -97,7 +102,8 @@ double quantile(std::vector<double> values, double q)
   return values[static_cast<std::size_t>(k)];
 }
 
-double sparseFactor(const std::vector<Vec3>& sample, const std::vector<double>& nearest, double sampleSpacing)
+double sparseFactor(
+  const std::vector<Vec3>& sample, const std::vector<double>& nearest, double sampleSpacing)
 {
   const double radius = kLocalRadius * sampleSpacing;
   const PointGrid grid(sample, radius);
@@ -147,7 +153,8 @@ PointSpacing PointSource::spacing() const
     for (Index k = b; k < e; ++k)
     {
       const Vec3& p = points[k * stride];
-      nearest[k] = std::sqrt(tree.nearest(p, std::numeric_limits<double>::infinity(), true).squaredDistance);
+      nearest[k] =
+        std::sqrt(tree.nearest(p, std::numeric_limits<double>::infinity(), true).squaredDistance);
     }
   });
   // Points with no neighbour apart (all at one position) count as infinitely far.
@@ -156,8 +163,8 @@ PointSpacing PointSource::spacing() const
   {
     return {};
   }
-  // The sampled points that have a neighbour apart, and the sample's own spacing (a surface's sample
-  // of one point in `stride` lies sqrt(stride) times farther apart).
+  // The sampled points that have a neighbour apart, and the sample's own spacing (a surface's
+  // sample of one point in `stride` lies sqrt(stride) times farther apart).
   std::vector<Vec3> sample;
   std::vector<double> apart;
   for (std::size_t k = 0; k < nearest.size(); ++k)
@@ -168,7 +175,8 @@ PointSpacing PointSource::spacing() const
       apart.push_back(nearest[k]);
     }
   }
-  return { median, median * sparseFactor(sample, apart, median * std::sqrt(static_cast<double>(stride))) };
+  return { median,
+    median * sparseFactor(sample, apart, median * std::sqrt(static_cast<double>(stride))) };
 }
 
 SourcePoint PointSource::closestPoint(const Vec3& x, double maxSquaredDistance) const

@@ -19,14 +19,16 @@ namespace shrinkwrap
 
 namespace
 {
-constexpr double kCutoff = 2.5;        // neighbours within this many widths (weights below 0.002 beyond)
-constexpr double kMinWeight = 1;       // a fit needs the weight of at least one point at the centre
-// In widths, the points' centroid beside the foot (along the plane, closestPoint): up to half of this
-// the fit is trusted fully, beyond this not at all (a one-sided fit). Sampling holes of a random sample (up to
-// about 3.5 neighbour distances, more than h) need the full trust; a fit beyond a gap's rim does not.
+constexpr double kCutoff = 2.5;  // neighbours within this many widths (weights below 0.002 beyond)
+constexpr double kMinWeight = 1; // a fit needs the weight of at least one point at the centre
+// In widths, the points' centroid beside the foot (along the plane, closestPoint): up to half of
+// this the fit is trusted fully, beyond this not at all (a one-sided fit). Sampling holes of a
+// random sample (up to about 3.5 neighbour distances, more than h) need the full trust; a fit
+// beyond a gap's rim does not.
 constexpr double kMaxOffCentre = 1.0;
 // In widths, a point's lean (its neighbours' centroid off it, along the plane): up to kEvenLean the
-// noise of an even random sample, from kRimLean on the lean of a point on a straight rim (1 / sqrt(pi)).
+// noise of an even random sample, from kRimLean on the lean of a point on a straight rim (1 /
+// sqrt(pi)).
 constexpr double kEvenLean = 0.3;
 constexpr double kRimLean = 0.5;
 // In widths: a patch speaks for feet within this of its centre; further, one centred on the foot
@@ -37,8 +39,8 @@ constexpr double kNearAnchor = 0.75;
 // A rim leaves half the directions around a centre empty; a random sample's sampling hole leaves
 // far less (its points lie all around, only nearer on one side).
 constexpr double kMaxAngularGap = 2 * M_PI / 3;
-// In widths: how far along a rim the search for its points reaches from each one found (a jagged rim's
-// points lie up to a few widths apart).
+// In widths: how far along a rim the search for its points reaches from each one found (a jagged
+// rim's points lie up to a few widths apart).
 constexpr double kRimReach = 3;
 // In widths (of the finest scale at which the points around a rim point look flat): the largest RMS
 // height of the points over its plane: clean points lie within a few hundredths of it, noisy ones
@@ -46,9 +48,9 @@ constexpr double kRimReach = 3;
 constexpr double kMaxRimSpread = 0.2;
 // One point in 4^kTypicalSample tells the width at which most of a cloud's points look flat.
 constexpr int kTypicalSample = 4;
-constexpr double kMaxFlatness = 0.25;  // smallest over middle eigenvalue: above it, no plane
-constexpr double kMinPivot = 1e-6;     // of the quadric's normal equations, relative to the largest
-constexpr double kMaxLift = 0.2;       // in widths: the most a quadric may move the plane's surface point
+constexpr double kMaxFlatness = 0.25; // smallest over middle eigenvalue: above it, no plane
+constexpr double kMinPivot = 1e-6;    // of the quadric's normal equations, relative to the largest
+constexpr double kMaxLift = 0.2; // in widths: the most a quadric may move the plane's surface point
 // Where no plane fits on a cloud whose noise hides the plane at h (firstLayer): the points within
 // kLayerRadius widths of the line of sight, and of those the ones within kLayerDepth noises of the
 // shallowest (a Gaussian's outermost of some dozens lies about 2 sigma out, so the window takes the
@@ -65,8 +67,8 @@ std::array<Vec3, 2> tangents(const Vec3& normal)
   return { t1, normal.cross(t1) };
 }
 
-// Whether point i is in the sample of scale s: one point in 4^s, picked by a hash of its index (not by
-// stride: a scanner's order has rows).
+// Whether point i is in the sample of scale s: one point in 4^s, picked by a hash of its index (not
+// by stride: a scanner's order has rows).
 bool inSample(std::size_t i, int s)
 {
   const std::uint64_t mask = (std::uint64_t(1) << (2 * s)) - 1;
@@ -171,8 +173,8 @@ bool PointSurface::fit(const Neighbourhood& around, Plane& plane)
 
 void PointSurface::fitQuadric(const Neighbourhood& around, Patch& patch)
 {
-  // Heights over the plane, in widths, fitted by w = a0 + a1 u + a2 v + a3 u^2 + a4 u v + a5 v^2 about
-  // the centroid (u = v = 0).
+  // Heights over the plane, in widths, fitted by w = a0 + a1 u + a2 v + a3 u^2 + a4 u v + a5 v^2
+  // about the centroid (u = v = 0).
   Eigen::Matrix<double, 6, 6> normalMatrix = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
   const double scale = 1 / patch.width;
@@ -230,7 +232,8 @@ bool PointSurface::surrounds(const Neighbourhood& around, const Patch& patch)
   return gap < kMaxAngularGap;
 }
 
-bool PointSurface::fitPlaneAround(const Vec3& centre, const Scale& scale, Neighbourhood& around, Patch& patch) const
+bool PointSurface::fitPlaneAround(
+  const Vec3& centre, const Scale& scale, Neighbourhood& around, Patch& patch) const
 {
   this->gather(centre, scale, around);
   if (!fit(around, patch.plane))
@@ -244,10 +247,12 @@ bool PointSurface::fitPlaneAround(const Vec3& centre, const Scale& scale, Neighb
 
 bool PointSurface::leans(const Patch& patch)
 {
-  return leanInPlane(patch.plane.centroid, patch.centre, patch.plane.normal).norm() > kEvenLean * patch.width;
+  return leanInPlane(patch.plane.centroid, patch.centre, patch.plane.normal).norm() >
+    kEvenLean * patch.width;
 }
 
-int PointSurface::flatScale(const Vec3& centre, Neighbourhood& around, Patch& patch, int from, int to) const
+int PointSurface::flatScale(
+  const Vec3& centre, Neighbourhood& around, Patch& patch, int from, int to) const
 {
   for (int s = from; s < std::min(to, static_cast<int>(this->Scales.size())); ++s)
   {
@@ -288,7 +293,8 @@ void PointSurface::measureTypical()
     }
   });
   std::vector<double> noise;
-  std::copy_if(roughnesses.begin(), roughnesses.end(), std::back_inserter(noise), [](double r) { return r >= 0; });
+  std::copy_if(roughnesses.begin(), roughnesses.end(), std::back_inserter(noise),
+    [](double r) { return r >= 0; });
   const auto lowerMedian = [](auto& values) {
     std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
     return values[values.size() / 2];
@@ -318,8 +324,8 @@ double PointSurface::roughness(const Neighbourhood& around, const Patch& patch)
 void PointSurface::finishPatch(const Neighbourhood& around, Patch& patch)
 {
   fitQuadric(around, patch);
-  // Only a lean beyond an even sample's fades the trust (trustAt); only then is it asked whether the
-  // points lie all around.
+  // Only a lean beyond an even sample's fades the trust (trustAt); only then is it asked whether
+  // the points lie all around.
   patch.surrounded = leans(patch) && surrounds(around, patch);
 }
 
@@ -345,8 +351,8 @@ PointSurface::Patch PointSurface::fitPatch(int id) const
   if (this->flatScale(centre, around, patch, this->TypicalScale) < 0 &&
     this->flatScale(centre, around, patch, 0, this->TypicalScale) < 0)
   {
-    // No plane: the weighted centroid of the last neighbourhood tried (fit keeps it), inside the thin
-    // part's curve, gives firstLayer its line of sight.
+    // No plane: the weighted centroid of the last neighbourhood tried (fit keeps it), inside the
+    // thin part's curve, gives firstLayer its line of sight.
     Patch none;
     none.centre = centre;
     none.plane.centroid = patch.plane.centroid;
@@ -358,12 +364,19 @@ PointSurface::Patch PointSurface::fitPatch(int id) const
 
 PointSurface::Patch PointSurface::patchAt(int id) const
 {
-  enum : std::uint32_t { Empty, Busy, First }; // a slot from First on holds the patch's place + First
+  enum : std::uint32_t
+  {
+    Empty,
+    Busy,
+    First
+  }; // a slot from First on holds the patch's place + First
   std::atomic<std::uint32_t>& slot = this->Slots[id];
   if (const std::uint32_t held = slot.load(std::memory_order_acquire); held >= First)
   {
     const std::uint32_t place = held - First;
-    return this->Chunks[place / Chunk::kSize].load(std::memory_order_acquire)->patches[place % Chunk::kSize];
+    return this->Chunks[place / Chunk::kSize]
+      .load(std::memory_order_acquire)
+      ->patches[place % Chunk::kSize];
   }
   const Patch patch = this->fitPatch(id);
   // The first thread to finish stores it; one that meets another storing keeps its own equal copy.
@@ -395,11 +408,14 @@ double PointSurface::trustAt(const Vec3& x, const Patch& patch)
   // further out adds its distance, while beside a centre among evenly spread points it does not.
   const double width = patch.width;
   const Plane& plane = patch.plane;
-  const Vec3 fromCentroid = (x - plane.centroid) - (x - plane.centroid).dot(plane.normal) * plane.normal;
+  const Vec3 fromCentroid =
+    (x - plane.centroid) - (x - plane.centroid).dot(plane.normal) * plane.normal;
   const Vec3 lean = leanInPlane(plane.centroid, patch.centre, plane.normal);
   const double leanLength = lean.norm();
-  const double oneSided = std::clamp((leanLength - kEvenLean * width) / ((kRimLean - kEvenLean) * width), 0.0, 1.0);
-  const double outwards = oneSided > 0 ? std::max(0.0, -fromCentroid.dot(lean) / leanLength - leanLength) : 0.0;
+  const double oneSided =
+    std::clamp((leanLength - kEvenLean * width) / ((kRimLean - kEvenLean) * width), 0.0, 1.0);
+  const double outwards =
+    oneSided > 0 ? std::max(0.0, -fromCentroid.dot(lean) / leanLength - leanLength) : 0.0;
   const double offCentre = patch.surrounded ? 0.0 : leanLength + oneSided * outwards;
   const Vec3 fromCentre = fromCentroid + lean;
   return fromCentre.squaredNorm() > kNearAnchor * kNearAnchor * width * width
@@ -409,9 +425,10 @@ double PointSurface::trustAt(const Vec3& x, const Patch& patch)
 
 SourcePoint PointSurface::nearestPoint(const Vec3& x, double maxSquaredDistance) const
 {
-  // A wrap's vertices mostly lie within a width of a point: the finest scale's bins (all points, side
-  // by side) hold every point that near, read in a few runs of memory, where the k-d tree's descent
-  // waits on memory at every level. Nearer than the radius, the nearest found is the nearest.
+  // A wrap's vertices mostly lie within a width of a point: the finest scale's bins (all points,
+  // side by side) hold every point that near, read in a few runs of memory, where the k-d tree's
+  // descent waits on memory at every level. Nearer than the radius, the nearest found is the
+  // nearest.
   const Scale& finest = *this->Scales.front();
   const double radius = std::min(finest.width, std::sqrt(maxSquaredDistance));
   SourcePoint p;
@@ -433,8 +450,8 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
     return this->firstLayer(x, nearest, patch.plane.centroid);
   }
   // The patch's point stands for the points around x while x's foot lies near it and its neighbours
-  // spread evenly around (full trust). A foot further out (over a sampling hole) or a point that leans
-  // (near a rim) gets a patch of its own, centred on the foot, at the same scale.
+  // spread evenly around (full trust). A foot further out (over a sampling hole) or a point that
+  // leans (near a rim) gets a patch of its own, centred on the foot, at the same scale.
   double trust = this->trustAt(x, patch);
   if (trust < 1)
   {
@@ -467,7 +484,8 @@ SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance)
   return p;
 }
 
-SourcePoint PointSurface::firstLayer(const Vec3& x, const SourcePoint& nearest, const Vec3& inside) const
+SourcePoint PointSurface::firstLayer(
+  const Vec3& x, const SourcePoint& nearest, const Vec3& inside) const
 {
   const Scale& finest = *this->Scales.front();
   const double d = (x - inside).norm();
@@ -528,14 +546,15 @@ bool PointSurface::onRim(const Vec3& centre, int from, Vec3& onPlane) const
   {
     return false;
   }
-  // Points spread off their plane even at the width where it shows (a crease, a thin part's end) are
-  // no rim: their RMS height over it (the patch's quadric is zero).
-  // A noisy rim point lies off the sheet by its noise; its plane's point does not.
+  // Points spread off their plane even at the width where it shows (a crease, a thin part's end)
+  // are no rim: their RMS height over it (the patch's quadric is zero). A noisy rim point lies off
+  // the sheet by its noise; its plane's point does not.
   onPlane = centre - (centre - patch.plane.centroid).dot(patch.plane.normal) * patch.plane.normal;
   return roughness(around, patch) <= kMaxRimSpread * patch.width && !surrounds(around, patch);
 }
 
-std::vector<std::array<Vec3, 2>> PointSurface::rims(double /*creaseAngle: points have no creases*/) const
+std::vector<std::array<Vec3, 2>> PointSurface::rims(
+  double /*creaseAngle: points have no creases*/) const
 {
   const Scale& finest = *this->Scales.front();
   const PointList& all = this->Points->points();

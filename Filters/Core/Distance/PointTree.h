@@ -1,12 +1,13 @@
 // A k-d tree over points: the nearest point to a query, for a point set's distance
-// (PointSource.h) and for its spacing, a point's nearest neighbour at another position. Splits at the
-// median along the box's longest side, so that it is balanced and built in O(n log n); the points are
-// kept in leaf order for locality. Points with a NaN or infinite coordinate are left out.
+// (PointSource.h) and for its spacing, a point's nearest neighbour at another position. Splits at
+// the median along the box's longest side, so that it is balanced and built in O(n log n); the
+// points are kept in leaf order for locality. Points with a NaN or infinite coordinate are left
+// out.
 #ifndef ShrinkWrap_PointTree_h
 #define ShrinkWrap_PointTree_h
 
-#include "Distance/BoxHierarchy.h"
 #include "Common/HugePages.h"
+#include "Distance/BoxHierarchy.h"
 
 #include <limits>
 #include <vector>
@@ -20,15 +21,17 @@ using PointList = LargeVector<Vec3>;
 class PointTree
 {
 public:
-  // Leaves of up to 32 points: against 8, a third less to build and a sixth less per query on 200,000
-  // noisy points (fewer nodes to test and to fault in; a leaf's points are read in one run of memory).
+  // Leaves of up to 32 points: against 8, a third less to build and a sixth less per query on
+  // 200,000 noisy points (fewer nodes to test and to fault in; a leaf's points are read in one run
+  // of memory).
   template <typename Points> // a std::vector<Vec3> or a PointList
   explicit PointTree(const Points& points, int leafSize = 32)
     : PointTree(points.data(), points.size(), leafSize)
   {
   }
 
-  struct Entry // a point with its input index: split together while building, then kept in leaf order
+  struct Entry // a point with its input index: split together while building, then kept in leaf
+               // order
   {
     Vec3 point;
     int id;

@@ -48,8 +48,8 @@ PseudoNormals::PseudoNormals(const TriangleSoup& soup)
     }
   }
 
-  // Group the uses of each undirected edge; its pseudonormal is the sum of its faces' normals. An edge
-  // of one triangle (a rim) or of more than two has no inside and outside, nor have its ends.
+  // Group the uses of each undirected edge; its pseudonormal is the sum of its faces' normals. An
+  // edge of one triangle (a rim) or of more than two has no inside and outside, nor have its ends.
   this->Open.assign(nt, 0);
   std::vector<char> openVertex(soup.points.size(), 0);
   const std::vector<EdgeUse> uses = edgeUses(soup);

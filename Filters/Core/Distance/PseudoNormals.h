@@ -1,11 +1,11 @@
-// Angle-weighted pseudonormals (Baerentzen & Aanaes, IEEE TVCG 2005): for a closed manifold mesh the
-// sign of (x - p) . n(feature of p), with p the closest surface point to x, is the sign of x.
+// Angle-weighted pseudonormals (Baerentzen & Aanaes, IEEE TVCG 2005): for a closed manifold mesh
+// the sign of (x - p) . n(feature of p), with p the closest surface point to x, is the sign of x.
 // That decides the band nodes, which the flood fill of Algorithm 1 (line 8) cannot reach.
 #ifndef ShrinkWrap_PseudoNormals_h
 #define ShrinkWrap_PseudoNormals_h
 
-#include "Distance/TriangleDistance.h"
 #include "Common/TriangleSoup.h"
+#include "Distance/TriangleDistance.h"
 
 #include <array>
 #include <cstdint>

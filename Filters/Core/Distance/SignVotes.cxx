@@ -1,7 +1,6 @@
 #include "Distance/SignVotes.h"
 #include "Common/Parallel.h"
 
-
 namespace shrinkwrap
 {
 
@@ -13,8 +12,9 @@ namespace
 // planes kFirst .. kLast are flooded (a slab's own; the planes around them are visited only), and
 // claimed(row, k, x0, x1) hears of every run.
 template <typename Visit, typename Claimed>
-long long flood(const GridLattice& lattice, std::uint8_t* state, const std::vector<std::int64_t>& seeds,
-  std::uint8_t from, std::uint8_t to, int kFirst, int kLast, Visit&& visit, Claimed&& claimed)
+long long flood(const GridLattice& lattice, std::uint8_t* state,
+  const std::vector<std::int64_t>& seeds, std::uint8_t from, std::uint8_t to, int kFirst, int kLast,
+  Visit&& visit, Claimed&& claimed)
 {
   const auto& d = lattice.dims;
   const std::int64_t sy = d[0], sz = sy * d[1];
@@ -88,21 +88,22 @@ long long flood(const GridLattice& lattice, std::uint8_t* state, const std::vect
 }
 
 template <typename Visit>
-long long flood(const GridLattice& lattice, std::uint8_t* state, const std::vector<std::int64_t>& seeds,
-  std::uint8_t from, std::uint8_t to, Visit&& visit)
+long long flood(const GridLattice& lattice, std::uint8_t* state,
+  const std::vector<std::int64_t>& seeds, std::uint8_t from, std::uint8_t to, Visit&& visit)
 {
-  return flood(lattice, state, seeds, from, to, 0, lattice.dims[2] - 1, visit, [](std::int64_t, int, int, int) {});
+  return flood(lattice, state, seeds, from, to, 0, lattice.dims[2] - 1, visit,
+    [](std::int64_t, int, int, int) {});
 }
 } // namespace
 
 namespace
 {
-// The grid nodes outside `inner`, a box of node indices with at least one node to spare on every side:
-// one connected shell of off-band nodes. They are labelled Outside row by row (in planes kFirst ..
-// kLast, a slab's), and the nodes on the faces of `inner` (in those planes) returned as seeds of the
-// same region.
-std::vector<std::int64_t> labelShell(
-  const GridLattice& lattice, const std::array<int, 6>& inner, std::uint8_t* state, int kFirst, int kLast)
+// The grid nodes outside `inner`, a box of node indices with at least one node to spare on every
+// side: one connected shell of off-band nodes. They are labelled Outside row by row (in planes
+// kFirst .. kLast, a slab's), and the nodes on the faces of `inner` (in those planes) returned as
+// seeds of the same region.
+std::vector<std::int64_t> labelShell(const GridLattice& lattice, const std::array<int, 6>& inner,
+  std::uint8_t* state, int kFirst, int kLast)
 {
   const auto& d = lattice.dims;
   parallelFor(kFirst, kLast + 1, [&](int b, int e) {
@@ -128,8 +129,8 @@ std::vector<std::int64_t> labelShell(
   box[5] = std::min(inner[5], kLast);
   forEachFaceNode(lattice, box, [&](std::int64_t n) {
     const auto c = lattice.coordinates(n);
-    if (c[0] == inner[0] || c[0] == inner[1] || c[1] == inner[2] || c[1] == inner[3] || c[2] == inner[4] ||
-      c[2] == inner[5]) // a face of the inner box, not where the slab cuts it
+    if (c[0] == inner[0] || c[0] == inner[1] || c[1] == inner[2] || c[1] == inner[3] ||
+      c[2] == inner[4] || c[2] == inner[5]) // a face of the inner box, not where the slab cuts it
     {
       seeds.push_back(n);
     }
@@ -138,8 +139,9 @@ std::vector<std::int64_t> labelShell(
 }
 } // namespace
 
-SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const std::array<int, 6>& bandExtent,
-  std::uint8_t* state, const Progress& progress, bool& aborted)
+SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside,
+  const std::array<int, 6>& bandExtent, std::uint8_t* state, const Progress& progress,
+  bool& aborted)
 {
   SignVotes votes;
   aborted = false;
@@ -155,7 +157,8 @@ SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const st
   if (shell)
   {
     seeds = labelShell(lattice, inner, state, 0, d[2] - 1);
-    labelled = total - static_cast<long long>(inner[1] - inner[0] + 1) * (inner[3] - inner[2] + 1) *
+    labelled = total -
+      static_cast<long long>(inner[1] - inner[0] + 1) * (inner[3] - inner[2] + 1) *
         (inner[5] - inner[4] + 1);
   }
   else
@@ -213,13 +216,13 @@ SignVotes signRegions(const GridLattice& lattice, bool cornerIsOutside, const st
   return votes;
 }
 
-bool outsideShell(const std::array<int, 3>& dims, bool cornerIsOutside, const std::array<int, 6>& bandExtent,
-  std::array<int, 6>& inner)
+bool outsideShell(const std::array<int, 3>& dims, bool cornerIsOutside,
+  const std::array<int, 6>& bandExtent, std::array<int, 6>& inner)
 {
-  inner = { bandExtent[0] - 1, bandExtent[1] + 1, bandExtent[2] - 1, bandExtent[3] + 1, bandExtent[4] - 1,
-    bandExtent[5] + 1 };
-  return cornerIsOutside && inner[0] > 0 && inner[2] > 0 && inner[4] > 0 && inner[1] < dims[0] - 1 &&
-    inner[3] < dims[1] - 1 && inner[5] < dims[2] - 1;
+  inner = { bandExtent[0] - 1, bandExtent[1] + 1, bandExtent[2] - 1, bandExtent[3] + 1,
+    bandExtent[4] - 1, bandExtent[5] + 1 };
+  return cornerIsOutside && inner[0] > 0 && inner[2] > 0 && inner[4] > 0 &&
+    inner[1] < dims[0] - 1 && inner[3] < dims[1] - 1 && inner[5] < dims[2] - 1;
 }
 
 SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast,
@@ -263,8 +266,10 @@ SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int own
   };
   if (shell)
   {
-    // Region 0: the outside shell, labelled without a flood (as signRegions), and what its faces reach.
-    const std::vector<std::int64_t> seeds = labelShell(lattice, *shell, state, ownedFirst, ownedLast);
+    // Region 0: the outside shell, labelled without a flood (as signRegions), and what its faces
+    // reach.
+    const std::vector<std::int64_t> seeds =
+      labelShell(lattice, *shell, state, ownedFirst, ownedLast);
     const auto& in = *shell;
     for (std::size_t p = 0; p < labelledPlanes.size(); ++p)
     {
@@ -280,7 +285,8 @@ SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int own
         }
       }
     }
-    labelled += total - static_cast<long long>(in[1] - in[0] + 1) * (in[3] - in[2] + 1) *
+    labelled += total -
+      static_cast<long long>(in[1] - in[0] + 1) * (in[3] - in[2] + 1) *
         std::max(0, std::min(in[5], ownedLast) - std::max(in[4], ownedFirst) + 1);
     if (!addRegion(seeds))
     {
@@ -303,15 +309,16 @@ SlabRegions floodSlabRegions(const GridLattice& lattice, int ownedFirst, int own
   return regions;
 }
 
-void labelSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast, const SlabRegions& regions,
-  const std::vector<char>& isInside, std::uint8_t* state)
+void labelSlabRegions(const GridLattice& lattice, int ownedFirst, int ownedLast,
+  const SlabRegions& regions, const std::vector<char>& isInside, std::uint8_t* state)
 {
   for (std::size_t r = 0; r < regions.seed.size(); ++r)
   {
     if (isInside[r] && regions.seed[r] >= 0)
     {
-      flood(lattice, state, std::vector<std::int64_t>(1, regions.seed[r]), Outside, Inside, ownedFirst, ownedLast,
-        [](std::int64_t) {}, [](std::int64_t, int, int, int) {});
+      flood(
+        lattice, state, std::vector<std::int64_t>(1, regions.seed[r]), Outside, Inside, ownedFirst,
+        ownedLast, [](std::int64_t) {}, [](std::int64_t, int, int, int) {});
     }
   }
 }
@@ -338,7 +345,8 @@ void invertBandSigns(std::uint8_t* state, std::int64_t count)
   parallelFor(0, count, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t n = b; n < e; ++n)
     {
-      state[n] = state[n] == BandInside ? BandOutside : (state[n] == BandOutside ? BandInside : state[n]);
+      state[n] =
+        state[n] == BandInside ? BandOutside : (state[n] == BandOutside ? BandInside : state[n]);
     }
   });
 }

@@ -3,15 +3,14 @@
 #include "Common/Memory.h"
 #include "Common/Parallel.h"
 
-#include "Distance/DistanceSource.h"
-#include "Distance/DistanceBand.h"
 #include "Distance/ClosestPointSweep.h"
+#include "Distance/DistanceBand.h"
+#include "Distance/DistanceSource.h"
 #include "Distance/EikonalSweep.h"
 #include "Distance/PointSource.h"
-#include "Distance/UnionSource.h"
 #include "Distance/SignVotes.h"
+#include "Distance/UnionSource.h"
 #include "Distance/WindingSign.h"
-
 
 #include <chrono>
 #include <cmath>
@@ -41,8 +40,8 @@ bool closestPointFarField(const GridLattice& lattice, const DistanceBand& band, 
 }
 
 // Far field by the paper's Eikonal sweeps from the band, whose nodes are the nonzero states so far.
-bool eikonalFarField(const GridLattice& lattice, const DistanceBand& band, const std::uint8_t* state, int rounds,
-  float* distance, const Progress& progress)
+bool eikonalFarField(const GridLattice& lattice, const DistanceBand& band,
+  const std::uint8_t* state, int rounds, float* distance, const Progress& progress)
 {
   for (std::size_t k = 0; k < band.nodes.size(); ++k)
   {
@@ -51,12 +50,12 @@ bool eikonalFarField(const GridLattice& lattice, const DistanceBand& band, const
   return sweepEikonal(lattice, state, distance, rounds, progress);
 }
 
-
 // The votes disagreed: the winding number decides where the closest point's side is in doubt. The
 // Eikonal far field keeps no sites: closest-point passes find them (their distances are not kept).
 // False if aborted.
-bool signByWinding(const DistanceSource& source, const GridLattice& lattice, const DistanceBand& band,
-  std::vector<std::int32_t>& site, std::uint8_t* state, const Progress& progress, SignedDistanceResult& result)
+bool signByWinding(const DistanceSource& source, const GridLattice& lattice,
+  const DistanceBand& band, std::vector<std::int32_t>& site, std::uint8_t* state,
+  const Progress& progress, SignedDistanceResult& result)
 {
   if (site.empty())
   {
@@ -66,8 +65,8 @@ bool signByWinding(const DistanceSource& source, const GridLattice& lattice, con
       return false;
     }
   }
-  const WindingSignResult w = signByWindingNumber(
-    source, lattice, band.closest, trustedNormals(source, band), site.data(), state, progress.stage(0.3, 1));
+  const WindingSignResult w = signByWindingNumber(source, lattice, band.closest,
+    trustedNormals(source, band), site.data(), state, progress.stage(0.3, 1));
   if (!w.completed)
   {
     return false;
@@ -88,7 +87,8 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
   const auto turned = [&] {
     if (r.reorientedTriangles > 0)
     {
-      s << "; " << r.reorientedTriangles << " triangles faced against their neighbours and were turned";
+      s << "; " << r.reorientedTriangles
+        << " triangles faced against their neighbours and were turned";
     }
   };
   if (r.points > 0 && r.triangles > 0)
@@ -98,7 +98,8 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
   }
   else if (r.points > 0)
   {
-    s << "unsigned: distances to the nearest of " << r.points << " input points (points have no inside)";
+    s << "unsigned: distances to the nearest of " << r.points
+      << " input points (points have no inside)";
   }
   else if (!asked)
   {
@@ -117,14 +118,16 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
   {
     s << "signed by the generalized winding number (inside where it exceeds 1/2): the surface has "
       << r.boundaryEdges << " rim edges, " << r.nonManifoldEdges << " non-manifold edges and "
-      << r.unconfirmedTriangles << " triangles inside another part or crossing one or near those, so the sign votes "
+      << r.unconfirmedTriangles
+      << " triangles inside another part or crossing one or near those, so the sign votes "
       << "disagreed at " << r.signDisagreements << " grid edges; " << r.windingEvaluations
       << " nodes took their side from the winding number, the others from their closest point";
     turned();
   }
   else
   {
-    s << "unsigned: the surface encloses nothing (its generalized winding number stays below 1/2: a sheet, a "
+    s << "unsigned: the surface encloses nothing (its generalized winding number stays below 1/2: "
+         "a sheet, a "
          "disc or a fin; "
       << r.boundaryEdges << " rim edges)";
   }
@@ -133,20 +136,21 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
 
 bool signNeedsWarning(const SignedDistanceResult& r, bool asked)
 {
-  return asked && r.points == 0 && (!r.isSigned || r.signMethod == SignMethod::WindingNumber || r.invertedOrientation);
+  return asked && r.points == 0 &&
+    (!r.isSigned || r.signMethod == SignMethod::WindingNumber || r.invertedOrientation);
 }
 
 int workingBytesPerNode(const SignedDistanceSettings& settings)
 {
-  // Node state always; the site index of the closest-point passes (the Eikonal sweep needs them, and
-  // scratch distances, only for a winding-number sign).
+  // Node state always; the site index of the closest-point passes (the Eikonal sweep needs them,
+  // and scratch distances, only for a winding-number sign).
   return 1 + (settings.sweep == SweepMethod::ClosestPoint ? 4 : (settings.windingNumber ? 8 : 0));
 }
 
 namespace
 {
-// Algorithm 1, line 1 (the tree, and the pseudonormals that sign the band), then the rest; the source
-// is handed to `keep` when asked for.
+// Algorithm 1, line 1 (the tree, and the pseudonormals that sign the band), then the rest; the
+// source is handed to `keep` when asked for.
 SignedDistanceResult fromSoup(const TriangleSoup& input, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress,
   std::shared_ptr<const TriangleSource>* keep)
@@ -177,8 +181,8 @@ SignedDistanceResult computeSignedDistance(const TriangleSoup& input, const Grid
 SignedDistanceResult computeSignedDistance(const TriangleSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress)
 {
-  SignedDistanceResult result =
-    computeSignedDistance(static_cast<const DistanceSource&>(source), lattice, settings, distance, progress);
+  SignedDistanceResult result = computeSignedDistance(
+    static_cast<const DistanceSource&>(source), lattice, settings, distance, progress);
   result.boundaryEdges = source.boundaryEdges();
   result.nonManifoldEdges = source.nonManifoldEdges();
   result.reorientedTriangles = source.reorientedTriangles();
@@ -206,7 +210,8 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   const bool meshInsideGrid = strictlyInside(surface, grid);
   std::vector<std::int64_t> nodes =
     bandNodes(lattice, cells, settings.bandLayers, allFaces(!meshInsideGrid), state.data());
-  if (!computeBand(source, lattice, std::move(nodes), bandSearchRadius(lattice, settings.bandLayers), onSurfaceDistance(lattice),
+  if (!computeBand(source, lattice, std::move(nodes),
+        bandSearchRadius(lattice, settings.bandLayers), onSurfaceDistance(lattice),
         progress.stage(0.2, 0.45), band, state.data()))
   {
     return result;
@@ -220,7 +225,8 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   std::vector<std::int32_t> site;
   const bool swept = settings.sweep == SweepMethod::ClosestPoint
     ? closestPointFarField(lattice, band, distance, site, sweepProgress)
-    : eikonalFarField(lattice, band, state.data(), settings.eikonalIterations, distance, sweepProgress);
+    : eikonalFarField(
+        lattice, band, state.data(), settings.eikonalIterations, distance, sweepProgress);
   if (!swept)
   {
     return result;
@@ -232,8 +238,8 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   if (settings.computeSign)
   {
     bool aborted;
-    const SignVotes votes =
-      signRegions(lattice, meshInsideGrid, nodeExtent(lattice, band.nodes), state.data(), progress.stage(0.8, 0.85), aborted);
+    const SignVotes votes = signRegions(lattice, meshInsideGrid, nodeExtent(lattice, band.nodes),
+      state.data(), progress.stage(0.8, 0.85), aborted);
     if (aborted)
     {
       return result;
@@ -254,8 +260,9 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   return result;
 }
 
-SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const GridLattice& lattice,
-  const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+SignedDistanceResult computePointDistance(const std::vector<Vec3>& points,
+  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance,
+  const Progress& progress)
 {
   const auto clock = std::chrono::steady_clock::now();
   const PointSource source(points);
@@ -267,14 +274,16 @@ SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const
 
 namespace
 {
-// A field from points: unsigned, whatever `settings` ask (progress from 0.05 on: the source is built).
+// A field from points: unsigned, whatever `settings` ask (progress from 0.05 on: the source is
+// built).
 SignedDistanceResult unsignedDistance(const DistanceSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress)
 {
   SignedDistanceSettings unsignedSettings = settings;
   unsignedSettings.computeSign = false;
-  return progress.report(0.05) ? computeSignedDistance(source, lattice, unsignedSettings, distance, progress)
-                               : SignedDistanceResult();
+  return progress.report(0.05)
+    ? computeSignedDistance(source, lattice, unsignedSettings, distance, progress)
+    : SignedDistanceResult();
 }
 } // namespace
 
@@ -287,10 +296,12 @@ SignedDistanceResult computePointDistance(const PointSource& source, const GridL
 }
 
 SignedDistanceResult computeUnionDistance(const TriangleSoup& soup, const std::vector<Vec3>& points,
-  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance, const Progress& progress)
+  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance,
+  const Progress& progress)
 {
   const auto clock = std::chrono::steady_clock::now();
-  const UnionSource source({ std::make_shared<const TriangleSource>(soup), std::make_shared<const PointSource>(points) });
+  const UnionSource source(
+    { std::make_shared<const TriangleSource>(soup), std::make_shared<const PointSource>(points) });
   const double treeSeconds = secondsSince(clock);
   SignedDistanceResult result = unsignedDistance(source, lattice, settings, distance, progress);
   result.treeSeconds = treeSeconds;
@@ -326,14 +337,18 @@ std::string gibibytes(double bytes)
 Status checkSoup(const TriangleSoup& soup)
 {
   if (soup.triangles.empty())
-    return Status::failure("the mesh has no polygons or triangle strips, so no surface to measure from");
+    return Status::failure(
+      "the mesh has no polygons or triangle strips, so no surface to measure from");
   if (!soup.allFinite())
-    return Status::failure("the mesh has NaN or infinite point coordinates; fix or remove those points first");
+    return Status::failure(
+      "the mesh has NaN or infinite point coordinates; fix or remove those points first");
   if (!withinCoordinateRange(soup.bounds()))
-    return Status::failure("the mesh has coordinates beyond +-1e30, which distances in float cannot hold; "
-                           "scale or translate it first");
+    return Status::failure(
+      "the mesh has coordinates beyond +-1e30, which distances in float cannot hold; "
+      "scale or translate it first");
   if (!(soup.maxTriangleArea() > 0))
-    return Status::failure("every triangle of the mesh is degenerate (zero area): there is no surface");
+    return Status::failure(
+      "every triangle of the mesh is degenerate (zero area): there is no surface");
   return {};
 }
 
@@ -343,17 +358,20 @@ template <typename Points>
 Status checkPointsIn(const Points& points)
 {
   if (points.empty())
-    return Status::failure("the input has no polygons, no 3-D cells and no points, so nothing to measure from");
+    return Status::failure(
+      "the input has no polygons, no 3-D cells and no points, so nothing to measure from");
   Box box;
   for (const Vec3& p : points)
   {
     if (!p.allFinite())
-      return Status::failure("the points have NaN or infinite coordinates; fix or remove those points first");
+      return Status::failure(
+        "the points have NaN or infinite coordinates; fix or remove those points first");
     box.extend(p);
   }
   if (!withinCoordinateRange(box))
-    return Status::failure("the points have coordinates beyond +-1e30, which distances in float cannot hold; "
-                           "scale or translate them first");
+    return Status::failure(
+      "the points have coordinates beyond +-1e30, which distances in float cannot hold; "
+      "scale or translate them first");
   return {};
 }
 } // namespace
@@ -377,8 +395,9 @@ Status checkMemory(const GridLattice& lattice, const SignedDistanceSettings& set
   if (needed > 0.8 * available)
   {
     std::ostringstream why;
-    why << "a " << lattice.dims[0] << " x " << lattice.dims[1] << " x " << lattice.dims[2] << " grid would need "
-        << gibibytes(needed) << " but only " << gibibytes(available) << " of memory is available";
+    why << "a " << lattice.dims[0] << " x " << lattice.dims[1] << " x " << lattice.dims[2]
+        << " grid would need " << gibibytes(needed) << " but only " << gibibytes(available)
+        << " of memory is available";
     return Status::failure(why.str());
   }
   return {};

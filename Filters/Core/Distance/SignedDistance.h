@@ -2,13 +2,13 @@
 #ifndef ShrinkWrap_SignedDistance_h
 #define ShrinkWrap_SignedDistance_h
 
+#include "Common/Progress.h"
+#include "Common/Status.h"
+#include "Common/TriangleSoup.h"
 #include "Distance/DistanceGrid.h"
 #include "Distance/DistanceSource.h"
 #include "Distance/GridLattice.h"
 #include "Distance/PointSource.h"
-#include "Common/Progress.h"
-#include "Common/Status.h"
-#include "Common/TriangleSoup.h"
 
 #include <cstdint>
 #include <memory>
@@ -26,11 +26,13 @@ enum class SweepMethod
 struct SignedDistanceSettings
 {
   SweepMethod sweep = SweepMethod::ClosestPoint;
-  int bandLayers = 1;   // node layers of exact distances beyond the nodes of the cells the surface touches
+  int bandLayers =
+    1; // node layers of exact distances beyond the nodes of the cells the surface touches
   int eikonalIterations = 1; // repetitions of the eight Eikonal sweeps
   bool computeSign = true;
-  // Where the sign votes disagree (holes, crossings, overlaps): the generalized winding number decides
-  // (WindingSign.h); false: such a field stays unsigned, as the paper's Algorithm 1 leaves it.
+  // Where the sign votes disagree (holes, crossings, overlaps): the generalized winding number
+  // decides (WindingSign.h); false: such a field stays unsigned, as the paper's Algorithm 1 leaves
+  // it.
   bool windingNumber = true;
 };
 
@@ -38,13 +40,15 @@ enum class SignMethod
 {
   None,         // unsigned: not asked for, or the surface encloses nothing
   Votes,        // every region's votes agreed (a closed surface that does not cross itself)
-  WindingNumber // the votes disagreed: sides in doubt by the generalized winding number (WindingSign.h)
+  WindingNumber // the votes disagreed: sides in doubt by the generalized winding number
+                // (WindingSign.h)
 };
 
 struct SignedDistanceResult
 {
   bool completed = false; // false: aborted, the values are incomplete
-  bool isSigned = false;  // false: unsigned, because sign was not asked for or the surface encloses nothing
+  bool isSigned =
+    false; // false: unsigned, because sign was not asked for or the surface encloses nothing
   SignMethod signMethod = SignMethod::None;
   bool invertedOrientation = false; // the triangles face inwards; signs follow the geometry
   long long bandNodes = 0;
@@ -55,7 +59,7 @@ struct SignedDistanceResult
   long long unconfirmedTriangles = 0; // inside another part or crossing one (by the winding number)
   long long windingEvaluations = 0;   // nodes whose side the winding number gave
   long long points = 0;               // > 0: measured from this many input points (unsigned)
-  long long triangles = 0;            // with points: and from this many triangles (a union, unsigned)
+  long long triangles = 0; // with points: and from this many triangles (a union, unsigned)
   // Seconds per stage.
   double treeSeconds = 0, outlineSeconds = 0, bandSeconds = 0, sweepSeconds = 0, signSeconds = 0;
 };
@@ -82,14 +86,16 @@ SignedDistanceResult computeSignedDistance(const TriangleSource& source, const G
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 // The unsigned distance to the nearest of `points` (a scan, sampled points): a PointSource
 // through the same band and sweeps; `settings.computeSign` does not apply (points have no inside).
-SignedDistanceResult computePointDistance(const std::vector<Vec3>& points, const GridLattice& lattice,
-  const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
+SignedDistanceResult computePointDistance(const std::vector<Vec3>& points,
+  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance,
+  const Progress& progress = {});
 SignedDistanceResult computePointDistance(const PointSource& source, const GridLattice& lattice,
   const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
 // The unsigned distance to the nearest of the soup's triangles and the points (a mesh with loose
 // points, a scan beside a model; UnionSource.h).
 SignedDistanceResult computeUnionDistance(const TriangleSoup& soup, const std::vector<Vec3>& points,
-  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance, const Progress& progress = {});
+  const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance,
+  const Progress& progress = {});
 
 // The field of `soup` and `points` together, by which of them there are: the soup's signed field,
 // the points' unsigned one, or the unsigned distance to the nearer of both.
@@ -97,8 +103,8 @@ SignedDistanceResult computeDistance(const TriangleSoup& soup, const std::vector
   const GridLattice& lattice, const SignedDistanceSettings& settings, float* distance,
   const Progress& progress = {});
 
-// Why points have no distance field, if they have none: none at all, or NaN, infinite or out-of-range
-// coordinates.
+// Why points have no distance field, if they have none: none at all, or NaN, infinite or
+// out-of-range coordinates.
 Status checkPoints(const std::vector<Vec3>& points);
 Status checkPoints(const PointList& points);
 
@@ -110,8 +116,8 @@ Status checkSoup(const TriangleSoup& soup);
 // `settings`), before anything is allocated for it.
 Status checkMemory(const GridLattice& lattice, const SignedDistanceSettings& settings);
 
-// The whole of Mesh Signed Distance for a caller that wants the field itself (Shrink Wrap, without a
-// DistanceField input): checks (the soup, the memory), and the distances on `lattice`. An aborted
+// The whole of Mesh Signed Distance for a caller that wants the field itself (Shrink Wrap, without
+// a DistanceField input): checks (the soup, the memory), and the distances on `lattice`. An aborted
 // run leaves `grid` empty and the result's `completed` false. `target`, if given, receives the
 // soup's TriangleSource (its AABB tree answers exact closest-point queries later).
 Status signedDistanceGrid(const TriangleSoup& soup, const GridLattice& lattice,

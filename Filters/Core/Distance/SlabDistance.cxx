@@ -3,8 +3,8 @@
 #include "Distance/ClosestPointSweep.h"
 #include "Distance/DistanceBand.h"
 #include "Distance/PointSource.h"
-#include "Distance/UnionSource.h"
 #include "Distance/SignVotes.h"
+#include "Distance/UnionSource.h"
 #include "Distance/WindingSign.h"
 
 #include <algorithm>
@@ -85,13 +85,14 @@ struct PlaneRange
   bool holds(int k) const { return k >= this->first && k <= this->last; }
 };
 
-// Who owns which planes: in order of first plane, each process takes its planes not yet taken. Fails
-// if a plane is left to nobody.
+// Who owns which planes: in order of first plane, each process takes its planes not yet taken.
+// Fails if a plane is left to nobody.
 bool ownPlanes(const std::vector<PlaneRange>& computed, int planes, std::vector<PlaneRange>& owned)
 {
   std::vector<int> order(computed.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return computed[a].first < computed[b].first; });
+  std::stable_sort(order.begin(), order.end(),
+    [&](int a, int b) { return computed[a].first < computed[b].first; });
   owned.assign(computed.size(), PlaneRange());
   int next = 0;
   for (int r : order)
@@ -164,14 +165,15 @@ struct Regions
 // every process.
 struct RegionSides
 {
-  std::vector<std::int64_t> firstRegion;            // per process: the global id of its region 0
-  std::vector<std::vector<int>> planes;             // per process: its labelled planes
-  std::vector<std::vector<std::int32_t>> labels;    // per process: their nodes' regions
+  std::vector<std::int64_t> firstRegion;         // per process: the global id of its region 0
+  std::vector<std::vector<int>> planes;          // per process: its labelled planes
+  std::vector<std::vector<std::int32_t>> labels; // per process: their nodes' regions
   Regions regions;
   std::vector<char> inside; // per root
   SignVotes votes;
 
-  // The region (root) of node n of whole-grid plane k, owned by process `owner`; -1 for a band node.
+  // The region (root) of node n of whole-grid plane k, owned by process `owner`; -1 for a band
+  // node.
   std::int64_t regionAt(int owner, int k, std::int64_t n)
   {
     const auto& p = this->planes[owner];
@@ -256,7 +258,8 @@ RegionSides decideSides(const Messages& all, const std::vector<PlaneRange>& owne
     {
       continue;
     }
-    sides.inside[g] = static_cast<std::int64_t>(g) != corner && ((in[g] > out[g]) != sides.votes.inverted);
+    sides.inside[g] =
+      static_cast<std::int64_t>(g) != corner && ((in[g] > out[g]) != sides.votes.inverted);
     ++sides.votes.regions;
     sides.votes.agreeing += std::max(in[g], out[g]);
     sides.votes.disagreeing += std::min(in[g], out[g]);
@@ -286,10 +289,10 @@ public:
   {
   }
 
-  Status sharePlanes();                          // round 1
-  void bandOfSlab();                             // this slab's outline and band
-  bool decideSigns(SignedDistanceResult& result); // round 2; false: a rank stopped
-  bool sweep(float* distance);                   // round 3
+  Status sharePlanes();                                       // round 1
+  void bandOfSlab();                                          // this slab's outline and band
+  bool decideSigns(SignedDistanceResult& result);             // round 2; false: a rank stopped
+  bool sweep(float* distance);                                // round 3
   bool finish(SignedDistanceResult& result, float* distance); // round 4
 
 private:
@@ -343,7 +346,8 @@ Status SlabRun::sharePlanes()
   // planes next to it (and bandLayers more), and the votes of the slab's regions on the plane
   // beyond each side.
   const int halo = this->Settings.bandLayers + 2;
-  this->Outer = { std::max(0, this->Mine.first - halo), std::min(this->Planes - 1, this->Mine.last + halo) };
+  this->Outer = { std::max(0, this->Mine.first - halo),
+    std::min(this->Planes - 1, this->Mine.last + halo) };
   this->OuterLattice = planesOf(this->Whole, this->Outer.first, this->Outer.last);
   this->Slab = planesOf(this->Whole, this->Mine.first, this->Mine.last);
   this->SlabStart = (this->Mine.first - this->Outer.first) * this->PlaneSize;
@@ -369,8 +373,8 @@ void SlabRun::bandOfSlab()
   const std::int64_t from = std::max(0, this->Mine.first - 1 - this->Outer.first) * this->PlaneSize;
   const std::int64_t to =
     (std::min(this->Outer.last, this->Mine.last + 1) - this->Outer.first + 1) * this->PlaneSize;
-  nodes.erase(std::remove_if(nodes.begin(), nodes.end(),
-                [&](std::int64_t n) { return n < from || n >= to; }),
+  nodes.erase(
+    std::remove_if(nodes.begin(), nodes.end(), [&](std::int64_t n) { return n < from || n >= to; }),
     nodes.end());
   this->Stopped = this->Stopped ||
     !computeBand(this->Source, this->OuterLattice, std::move(nodes),
@@ -460,8 +464,8 @@ bool SlabRun::decideSigns(SignedDistanceResult& result)
   result.invertedOrientation = sides.votes.inverted;
   result.isSigned = sides.votes.consistent();
   result.signMethod = result.isSigned ? SignMethod::Votes : SignMethod::None;
-  this->NeedWinding = !result.isSigned && this->Settings.windingNumber &&
-    !this->Source.sidesConfirmed().empty();
+  this->NeedWinding =
+    !result.isSigned && this->Settings.windingNumber && !this->Source.sidesConfirmed().empty();
   return true;
 }
 
@@ -624,7 +628,8 @@ bool SlabRun::finish(SignedDistanceResult& result, float* distance)
   }
   if (!this->Mine.empty())
   {
-    applySigns(this->State.data() + this->SlabStart, this->Slab.nodeCount(), result.isSigned, distance);
+    applySigns(
+      this->State.data() + this->SlabStart, this->Slab.nodeCount(), result.isSigned, distance);
   }
   return true;
 }
@@ -655,25 +660,28 @@ Status computeSlabSignedDistance(const DistanceSource& source, const GridLattice
   return {};
 }
 
-Status computeSlabDistance(const TriangleSoup& soup, const std::vector<Vec3>& points, const GridLattice& whole,
-  int first, int last, const SignedDistanceSettings& settings, const SlabExchange& exchange, float* distance,
-  SignedDistanceResult& result, const Progress& progress)
+Status computeSlabDistance(const TriangleSoup& soup, const std::vector<Vec3>& points,
+  const GridLattice& whole, int first, int last, const SignedDistanceSettings& settings,
+  const SlabExchange& exchange, float* distance, SignedDistanceResult& result,
+  const Progress& progress)
 {
   SignedDistanceSettings unsignedSettings = settings;
   unsignedSettings.computeSign = false; // points have no inside
   if (points.empty())
   {
     const TriangleSource source(soup);
-    const Status status =
-      computeSlabSignedDistance(source, whole, first, last, settings, exchange, distance, result, progress);
+    const Status status = computeSlabSignedDistance(
+      source, whole, first, last, settings, exchange, distance, result, progress);
     result.boundaryEdges = source.boundaryEdges();
     result.nonManifoldEdges = source.nonManifoldEdges();
     result.reorientedTriangles = source.reorientedTriangles();
     return status;
   }
   const Status status = soup.triangles.empty()
-    ? computeSlabSignedDistance(PointSource(points), whole, first, last, unsignedSettings, exchange, distance, result, progress)
-    : computeSlabSignedDistance(UnionSource({ std::make_shared<const TriangleSource>(soup), std::make_shared<const PointSource>(points) }),
+    ? computeSlabSignedDistance(PointSource(points), whole, first, last, unsignedSettings, exchange,
+        distance, result, progress)
+    : computeSlabSignedDistance(UnionSource({ std::make_shared<const TriangleSource>(soup),
+                                  std::make_shared<const PointSource>(points) }),
         whole, first, last, unsignedSettings, exchange, distance, result, progress);
   result.points = static_cast<long long>(points.size());
   result.triangles = static_cast<long long>(soup.triangles.size());

@@ -44,7 +44,8 @@ Vec3 unitNormal(const TriangleSoup& soup, int triangle)
   const auto& tri = soup.triangles[triangle];
   const Vec3 &a = soup.points[tri[0]], &b = soup.points[tri[1]], &c = soup.points[tri[2]];
   const Vec3 n = (b - a).cross(c - a);
-  const double longest = std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
+  const double longest =
+    std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
   const double len = n.norm();
   return len > 1e-9 * longest ? Vec3(n / len) : Vec3::Zero();
 }
@@ -62,11 +63,13 @@ std::vector<EdgeUse> edgeUses(const TriangleSoup& soup, const std::function<bool
     const auto& tri = soup.triangles[t];
     for (int e = 0; e < 3; ++e)
     {
-      const auto i = static_cast<std::uint64_t>(tri[e]), j = static_cast<std::uint64_t>(tri[(e + 1) % 3]);
+      const auto i = static_cast<std::uint64_t>(tri[e]),
+                 j = static_cast<std::uint64_t>(tri[(e + 1) % 3]);
       uses.push_back({ (std::min(i, j) << 32) | std::max(i, j), static_cast<int>(t), e, i < j });
     }
   }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) { return a.key < b.key; });
+  std::sort(
+    uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) { return a.key < b.key; });
   return uses;
 }
 

@@ -16,13 +16,13 @@ namespace shrinkwrap
 // change (a triangle that then repeats an index is kept: as a segment it still has distances).
 TriangleSoup weldDuplicatePoints(const TriangleSoup& soup);
 
-// A triangle's unit normal, or zero where it is too thin for its normal to mean anything (a needle or
-// a cap, as the slivers at a parametric surface's seams: their cross product is rounding noise).
+// A triangle's unit normal, or zero where it is too thin for its normal to mean anything (a needle
+// or a cap, as the slivers at a parametric surface's seams: their cross product is rounding noise).
 Vec3 unitNormal(const TriangleSoup& soup, int triangle);
 
-// One triangle's use of an undirected edge: the edge's two point ids in `key` (lower << 32 | higher),
-// `slot` the edge in the triangle (0: corners 0-1, 1: 1-2, 2: 2-0), `forward` whether the triangle runs
-// it from the lower id to the higher.
+// One triangle's use of an undirected edge: the edge's two point ids in `key` (lower << 32 |
+// higher), `slot` the edge in the triangle (0: corners 0-1, 1: 1-2, 2: 2-0), `forward` whether the
+// triangle runs it from the lower id to the higher.
 struct EdgeUse
 {
   std::uint64_t key;

@@ -41,16 +41,20 @@ DistanceSample TargetDistance::sample(const Vec3& x) const
   }
   else if (this->Signed)
   {
-    sign = std::abs(far.value) > 0.5 * this->Cell ? (far.value < 0 ? -1.0 : 1.0) : (p.side < 0 ? -1.0 : 1.0);
+    sign = std::abs(far.value) > 0.5 * this->Cell ? (far.value < 0 ? -1.0 : 1.0)
+                                                  : (p.side < 0 ? -1.0 : 1.0);
   }
   DistanceSample near;
   near.value = sign * distance;
-  near.gradient = distance > 1e-9 * this->Cell ? Vec3(sign * (x - p.point) / distance) : far.gradient;
-  if (p.beyondEstimate && near.value < far.value) // a noisy cloud's first layer only deepens the closing
+  near.gradient =
+    distance > 1e-9 * this->Cell ? Vec3(sign * (x - p.point) / distance) : far.gradient;
+  if (p.beyondEstimate &&
+    near.value < far.value) // a noisy cloud's first layer only deepens the closing
   {
     return far;
   }
-  const double w = std::clamp((reach - std::abs(far.value)) / this->Cell, 0.0, 1.0) * std::clamp(p.trust, 0.0, 1.0);
+  const double w = std::clamp((reach - std::abs(far.value)) / this->Cell, 0.0, 1.0) *
+    std::clamp(p.trust, 0.0, 1.0);
   if (w >= 1)
   {
     return near;

@@ -1,8 +1,9 @@
-// The distance to the target that the evolution samples (d and grad d of eqs. (3)-(4)): the grid far
-// from the target, and exact near it, from the closest point on the target itself. Trilinear
-// interpolation of a grid is off by a fraction of a cell near the surface, so a surface driven by it
-// settles no closer than that; the closest point (the AABB tree of Algorithm 1) lets it land on the
-// target. Between `exactBand` and `exactBand` + one cell the two are blended, so d stays continuous.
+// The distance to the target that the evolution samples (d and grad d of eqs. (3)-(4)): the grid
+// far from the target, and exact near it, from the closest point on the target itself. Trilinear
+// interpolation of a grid is off by a fraction of a cell near the surface, so a surface driven by
+// it settles no closer than that; the closest point (the AABB tree of Algorithm 1) lets it land on
+// the target. Between `exactBand` and `exactBand` + one cell the two are blended, so d stays
+// continuous.
 #ifndef ShrinkWrap_TargetDistance_h
 #define ShrinkWrap_TargetDistance_h
 

@@ -1,6 +1,7 @@
 // Closest point on a triangle, with the feature (vertex, edge or face) it lies on.
 // Ericson, Real-Time Collision Detection, 5.1.5: Voronoi regions tested in order, no square roots.
-// The feature picks the angle-weighted pseudonormal that signs band nodes (Baerentzen & Aanaes 2005).
+// The feature picks the angle-weighted pseudonormal that signs band nodes (Baerentzen & Aanaes
+// 2005).
 #ifndef ShrinkWrap_TriangleDistance_h
 #define ShrinkWrap_TriangleDistance_h
 
@@ -58,7 +59,8 @@ inline Vec3 alongEdge(const Vec3& from, const Vec3& edge, double t, double lengt
 }
 } // namespace detail
 
-inline TrianglePoint closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+inline TrianglePoint closestPointOnTriangle(
+  const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);

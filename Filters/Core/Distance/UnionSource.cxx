@@ -21,7 +21,8 @@ Box UnionSource::bounds() const
   return box;
 }
 
-bool UnionSource::outline(const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const
+bool UnionSource::outline(
+  const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const
 {
   cells.clear();
   std::vector<std::int64_t> own;

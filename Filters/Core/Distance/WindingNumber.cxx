@@ -7,7 +7,8 @@
 namespace shrinkwrap
 {
 
-WindingNumber::WindingNumber(const TriangleSoup& soup, const AABBTree& tree, const WindingNumberSettings& settings)
+WindingNumber::WindingNumber(
+  const TriangleSoup& soup, const AABBTree& tree, const WindingNumberSettings& settings)
   : Settings(settings)
 {
   const int nt = static_cast<int>(soup.triangles.size());
@@ -67,16 +68,19 @@ void WindingNumber::moments(int index, const std::vector<AABBTree::Node>& tree)
     const Node &l = this->Nodes[t.first], &r = this->Nodes[t.first + 1];
     node.dipole = l.dipole + r.dipole;
     node.area = l.area + r.area;
-    node.center = node.area > 0 ? Vec3((l.area * l.center + r.area * r.center) / node.area) : t.box.center();
-    childBound = std::max((l.center - node.center).norm() + l.radius, (r.center - node.center).norm() + r.radius);
+    node.center =
+      node.area > 0 ? Vec3((l.area * l.center + r.area * r.center) / node.area) : t.box.center();
+    childBound = std::max(
+      (l.center - node.center).norm() + l.radius, (r.center - node.center).norm() + r.radius);
   }
-  const Vec3 far = (t.box.max - node.center).cwiseAbs().cwiseMax((t.box.min - node.center).cwiseAbs());
+  const Vec3 far =
+    (t.box.max - node.center).cwiseAbs().cwiseMax((t.box.min - node.center).cwiseAbs());
   node.radius = std::min(far.norm(), childBound);
   this->Nodes[index] = node;
 }
 
-// Van Oosterom & Strackee: tan(Omega / 2) = a . (b x c) / (|a||b||c| + (a.b)|c| + (b.c)|a| + (c.a)|b|),
-// positive where the triangle turns its front (counter-clockwise corners) away from x.
+// Van Oosterom & Strackee: tan(Omega / 2) = a . (b x c) / (|a||b||c| + (a.b)|c| + (b.c)|a| +
+// (c.a)|b|), positive where the triangle turns its front (counter-clockwise corners) away from x.
 double WindingNumber::solidAngle(int triangle, const Vec3& x) const
 {
   const auto& p = this->Corners[triangle];

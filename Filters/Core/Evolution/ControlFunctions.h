@@ -1,7 +1,7 @@
 // The control functions of eq. (2), of the signed distance d at a vertex:
-//   eps(d) = C1 (1 - exp(-d^2 / C2))                              diffusion, eq. (3) (C2 = 0: eps = C1)
-//   eta(d) = C d ((-grad d . N) - D sqrt(1 - (grad d . N)^2))      advection, eq. (4)
-//   rho(d) = A (1 - exp(-d^2))                                     redistribution weight, eq. (10)
+//   eps(d) = C1 (1 - exp(-d^2 / C2))                              diffusion, eq. (3) (C2 = 0: eps =
+//   C1) eta(d) = C d ((-grad d . N) - D sqrt(1 - (grad d . N)^2))      advection, eq. (4) rho(d) =
+//   A (1 - exp(-d^2))                                     redistribution weight, eq. (10)
 #ifndef ShrinkWrap_ControlFunctions_h
 #define ShrinkWrap_ControlFunctions_h
 

@@ -1,12 +1,12 @@
 #include "Evolution/Evolver.h"
 
-#include "Remeshing/CheckedEdits.h"
-#include "Evolution/ControlFunctions.h"
-#include "Surface/CotanLaplacian.h"
-#include "Remeshing/EdgeFlips.h"
 #include "Common/Parallel.h"
-#include "Surface/SelfIntersections.h"
+#include "Evolution/ControlFunctions.h"
 #include "Evolution/TangentialRedistribution.h"
+#include "Remeshing/CheckedEdits.h"
+#include "Remeshing/EdgeFlips.h"
+#include "Surface/CotanLaplacian.h"
+#include "Surface/SelfIntersections.h"
 
 #include <Eigen/IterativeLinearSolvers>
 
@@ -20,8 +20,8 @@ namespace shrinkwrap
 namespace
 {
 template <typename Iterative, typename Matrix, typename Column, typename Result>
-bool solveColumn(Iterative& solver, const Matrix& matrix, double tolerance, const Column& rhs, const Column& guess,
-  Result&& solution)
+bool solveColumn(Iterative& solver, const Matrix& matrix, double tolerance, const Column& rhs,
+  const Column& guess, Result&& solution)
 {
   solver.setTolerance(tolerance);
   // A step's system converges in one or two iterations from the last positions (the seven benchmark
@@ -74,8 +74,8 @@ struct Evolver::Controls
   std::vector<Vec3> grad;
 };
 
-Evolver::Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings, const TargetDistance* field,
-  const Box& domain, double scale, const Vec3& center)
+Evolver::Evolver(const SurfaceMesh& mesh, const EvolverSettings& settings,
+  const TargetDistance* field, const Box& domain, double scale, const Vec3& center)
   : Mesh(mesh)
   , Settings(settings)
   , Field(field && !field->empty() ? field : nullptr)
@@ -130,8 +130,8 @@ Evolver::Controls Evolver::controls() const
   c.eps.resize(nv);
   c.eta.resize(nv);
   // The landing needs the remeshing's near-equilateral rings (h measures curvature only there), and
-  // none at the vertices that hold the target's rims (a fold around a sheet's edge is no curvature of
-  // the target's: landed out, the folds would leave the rims out).
+  // none at the vertices that hold the target's rims (a fold around a sheet's edge is no curvature
+  // of the target's: landed out, the folds would leave the rims out).
   const bool fit = this->Field && s.facetFit != 0 && s.remeshing;
   const std::vector<double> rimVertices = fit && !this->RimSamples.empty()
     ? rimHolds(this->Mesh, this->scaledRimSamples(), s.remeshing->targetLength * this->Scale)
@@ -139,7 +139,8 @@ Evolver::Controls Evolver::controls() const
   for (int i = 0; i < nv; ++i)
   {
     const bool holds = !rimVertices.empty() && rimVertices[i] > 0;
-    const double landing = fit && !holds ? 0.25 * s.facetFit * this->heightOverRing(i, c.g.normal[i]) : 0.0;
+    const double landing =
+      fit && !holds ? 0.25 * s.facetFit * this->heightOverRing(i, c.g.normal[i]) : 0.0;
     c.eps[i] = diffusion(c.d[i], s.C1, s.C2);
     c.eta[i] = advection(c.d[i] - landing, c.grad[i].dot(c.g.normal[i]), s.C, s.D);
   }
@@ -161,9 +162,9 @@ double Evolver::heightOverRing(int i, const Vec3& normal) const
     centroid += y[this->Mesh.ring(p)];
     l2 += (y[this->Mesh.ring(p)] - y[i]).squaredNorm();
   }
-  // At most half the ring's mean edge l, so a landing of h / 4 stays within l / 8, the sagitta where the
-  // surface's radius is one edge: where the wrap folds around a tip or a fin's edge, its height over
-  // the ring is no curvature of the target's.
+  // At most half the ring's mean edge l, so a landing of h / 4 stays within l / 8, the sagitta
+  // where the surface's radius is one edge: where the wrap folds around a tip or a fin's edge, its
+  // height over the ring is no curvature of the target's.
   const double cap = 0.5 * std::sqrt(l2 / (end - begin));
   return std::clamp(normal.dot(y[i] - centroid / (end - begin)), -cap, cap);
 }
@@ -194,13 +195,15 @@ bool Evolver::tangentialVelocities(const Controls& c, std::vector<Vec3>& vt)
       normalVelocity[i] = c.eps[i] * c.g.curvature[i] + c.eta[i] * c.g.normal[i];
     }
     const VolumeRedistribution settings{ s.omegaVolume, s.volumePerArea, s.solverTolerance };
-    return volumeVelocities(this->Mesh, this->Mesh.points(), c.g, normalVelocity, settings, this->Potential, vt);
+    return volumeVelocities(
+      this->Mesh, this->Mesh.points(), c.g, normalVelocity, settings, this->Potential, vt);
   }
   return true;
 }
 
 // Eq. (5), per vertex i and coordinate:
-//   (1 + tau eps_i/|V_i| sum_j w_ij) F_i - tau eps_i/|V_i| sum_j w_ij F_j = F_i^old + tau eta_i N_i + tau v_T,i;
+//   (1 + tau eps_i/|V_i| sum_j w_ij) F_i - tau eps_i/|V_i| sum_j w_ij F_j = F_i^old + tau eta_i N_i
+//   + tau v_T,i;
 // the symmetric form (conjugate gradients) multiplies row i by |V_i| / eps_i. False if a solve did
 // not converge.
 bool Evolver::solve(const Controls& c, const std::vector<Vec3>& vt, std::vector<Vec3>& next)
@@ -234,7 +237,8 @@ bool Evolver::solve(const Controls& c, const std::vector<Vec3>& vt, std::vector<
     {
       solved[k] = symmetric
         ? solveColumn(L.cg[k], matrix, s.solverTolerance, rhs.col(k), guess.col(k), solution.col(k))
-        : solveColumn(L.bicgstab[k], matrix, s.solverTolerance, rhs.col(k), guess.col(k), solution.col(k));
+        : solveColumn(
+            L.bicgstab[k], matrix, s.solverTolerance, rhs.col(k), guess.col(k), solution.col(k));
     }
   });
   next.resize(nv);
@@ -255,7 +259,8 @@ StepReport Evolver::check(const std::vector<Vec3>& y) const
     const bool nan = !y[i].allFinite();
     if (nan || (!this->Domain.empty() && (this->Domain.squaredDistance(y[i]) > 0)))
     {
-      message << "vertex " << i << (nan ? " became NaN" : " left the domain") << " at step " << report.step;
+      message << "vertex " << i << (nan ? " became NaN" : " left the domain") << " at step "
+              << report.step;
       report.failure = nan ? Failure::NotANumber : Failure::LeftDomain;
       report.where = i;
       report.message = message.str();
@@ -284,7 +289,8 @@ StepReport Evolver::step()
     StepReport report;
     report.step = this->Steps + 1;
     report.failure = Failure::SolverFailed;
-    report.message = "the redistribution potential did not converge at step " + std::to_string(report.step);
+    report.message =
+      "the redistribution potential did not converge at step " + std::to_string(report.step);
     return report;
   }
   std::vector<Vec3> next;
@@ -292,8 +298,8 @@ StepReport Evolver::step()
   return this->accept(next, vt, converged);
 }
 
-// The new positions pass the checks, or a triangle that degenerated within the step is mended by flips
-// and collapses; otherwise the step fails and the last good surface stays.
+// The new positions pass the checks, or a triangle that degenerated within the step is mended by
+// flips and collapses; otherwise the step fails and the last good surface stays.
 StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool converged)
 {
   const EvolverSettings& s = this->Settings;
@@ -361,9 +367,10 @@ int Evolver::coverRims()
   const RimSettings& r = this->Settings.rims;
   const double length = this->Settings.remeshing->targetLength * this->Scale; // rims need it
   const std::vector<Vec3> samples = this->scaledRimSamples();
-  const std::vector<Vec3> moves = rimMoves(this->Mesh, samples, r.tolerance * length, r.reach * length);
-  // A move the hold-back refuses (it would cross the surface: near a rim both layers lie on the sheet)
-  // is tried again at half its length, twice.
+  const std::vector<Vec3> moves =
+    rimMoves(this->Mesh, samples, r.tolerance * length, r.reach * length);
+  // A move the hold-back refuses (it would cross the surface: near a rim both layers lie on the
+  // sheet) is tried again at half its length, twice.
   std::vector<char> pending(moves.size());
   int left = 0;
   for (std::size_t v = 0; v < moves.size(); ++v)
@@ -401,8 +408,8 @@ int Evolver::coverRims()
 }
 
 // Vertices stop where their step would break the surface: where it would cross itself
-// (holdNewCrossings) or a triangle would degenerate below minAngle that did not before; held vertices
-// keep their positions, and holding one can break another triangle, so the rounds repeat.
+// (holdNewCrossings) or a triangle would degenerate below minAngle that did not before; held
+// vertices keep their positions, and holding one can break another triangle, so the rounds repeat.
 int Evolver::holdBack(std::vector<Vec3>& next)
 {
   const std::vector<Vec3>& y = this->Mesh.points();
@@ -411,7 +418,8 @@ int Evolver::holdBack(std::vector<Vec3>& next)
   std::vector<int> crossed; // the triangles of the crossings vertices were held for
   for (int round = 0; round < 16; ++round)
   {
-    // holdNewCrossings settles its own rounds; only the vertices held for angles may make new crossings.
+    // holdNewCrossings settles its own rounds; only the vertices held for angles may make new
+    // crossings.
     held += holdNewCrossings(y, next, triangles, &crossed);
     int moved = 0;
     for (const auto& t : triangles)
@@ -456,7 +464,8 @@ StepReport Evolver::run(int n, const Progress& progress)
 namespace
 {
 // Remeshing, flips, then the mending collapses, as the settings ask; counts into `report`.
-Status editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scale, StepReport& report)
+Status editConnectivity(
+  SurfaceMesh& mesh, const EvolverSettings& s, double scale, StepReport& report)
 {
   if (s.remeshing)
   {
@@ -550,8 +559,8 @@ void Evolver::adjustConnectivity(StepReport& report)
   if (!edited)
   {
     report.failure = Failure::EditFailed;
-    report.message = "the remeshing failed at step " + std::to_string(report.step) + ": " +
-      edited.message();
+    report.message =
+      "the remeshing failed at step " + std::to_string(report.step) + ": " + edited.message();
   }
   if (report.connectivityChanged())
   {
@@ -584,8 +593,8 @@ std::vector<Vec3> Evolver::positionsOf(const std::vector<Vec3>& state) const
   return unscaled(state, this->Scale, this->Center);
 }
 
-bool Evolver::restart(
-  const std::vector<Vec3>& state, const std::vector<std::array<int, 3>>* triangles, int steps, double scale)
+bool Evolver::restart(const std::vector<Vec3>& state,
+  const std::vector<std::array<int, 3>>* triangles, int steps, double scale)
 {
   if (triangles)
   {

@@ -1,9 +1,9 @@
 #include "Evolution/GapClosing.h"
 
+#include "Common/Parallel.h"
 #include "Distance/ClosestPointSweep.h"
 #include "Distance/DistanceSource.h"
 #include "Distance/GridRegions.h"
-#include "Common/Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +42,8 @@ std::vector<char> dilationNodes(const DistanceGrid& field, double radius, bool f
 
 // The nodes within a cell of D's boundary by their distance to the target (every node with a
 // neighbour across it), but for those of filled cavities.
-std::vector<std::int64_t> nodesNearBoundary(const DistanceGrid& field, double r, const std::vector<char>& inside)
+std::vector<std::int64_t> nodesNearBoundary(
+  const DistanceGrid& field, double r, const std::vector<char>& inside)
 {
   const double width = field.lattice().spacing.maxCoeff();
   const std::vector<float>& d = field.values();
@@ -65,7 +66,8 @@ struct Front
 
 // From node n, r beyond the target's closest point p on the line from p through the node (on the
 // node's side of the target); without the target, down the grid's gradient.
-bool projectOnFront(const DistanceGrid& field, const DistanceSource* target, double r, std::int64_t n, Front& front)
+bool projectOnFront(
+  const DistanceGrid& field, const DistanceSource* target, double r, std::int64_t n, Front& front)
 {
   const GridLattice& lattice = field.lattice();
   const std::array<int, 3> c = lattice.coordinates(n);
@@ -90,7 +92,8 @@ bool projectOnFront(const DistanceGrid& field, const DistanceSource* target, dou
     std::array<int, 3> lo = c, hi = c;
     lo[a] = std::max(0, c[a] - 1);
     hi[a] = std::min(lattice.dims[a] - 1, c[a] + 1);
-    gradient[a] = (field.values()[lattice.index(hi[0], hi[1], hi[2])] - field.values()[lattice.index(lo[0], lo[1], lo[2])]) /
+    gradient[a] = (field.values()[lattice.index(hi[0], hi[1], hi[2])] -
+                    field.values()[lattice.index(lo[0], lo[1], lo[2])]) /
       ((hi[a] - lo[a]) * lattice.spacing[a]);
   }
   const double norm = gradient.norm();
@@ -130,7 +133,8 @@ bool onBoundary(const DistanceGrid& field, const DistanceSource* target, double 
 
 // Whether the front faces a filled cavity: the first node off D out along its normal, within two
 // cells, is in one (or there is none).
-bool facesCavity(const DistanceGrid& field, double r, const std::vector<char>& inside, const Front& front)
+bool facesCavity(
+  const DistanceGrid& field, double r, const std::vector<char>& inside, const Front& front)
 {
   const GridLattice& lattice = field.lattice();
   const double cell = lattice.spacing.maxCoeff();
@@ -140,7 +144,8 @@ bool facesCavity(const DistanceGrid& field, double r, const std::vector<char>& i
     std::array<int, 3> c;
     for (int a = 0; a < 3; ++a)
     {
-      c[a] = static_cast<int>(std::clamp(std::round((z[a] - lattice.origin[a]) / lattice.spacing[a]), 0.0, lattice.dims[a] - 1.0));
+      c[a] = static_cast<int>(std::clamp(
+        std::round((z[a] - lattice.origin[a]) / lattice.spacing[a]), 0.0, lattice.dims[a] - 1.0));
     }
     const std::int64_t n = lattice.index(c[0], c[1], c[2]);
     if (field.values()[n] >= r)
@@ -151,17 +156,18 @@ bool facesCavity(const DistanceGrid& field, double r, const std::vector<char>& i
   return true;
 }
 
-// A point of D's boundary near node n, if there is one. From a node outside D it is the node's nearest
-// boundary point (every point of the target is at least d - (d - r) from it); from a node inside,
-// where no other part of the target comes nearer, its nearest too (e = r - d: the closing's distance
-// is d); else on a crease.
-bool boundaryPoint(const DistanceGrid& field, const DistanceSource* target, double r, const std::vector<char>& inside,
-  bool fillCavities, std::int64_t n, Vec3& site)
+// A point of D's boundary near node n, if there is one. From a node outside D it is the node's
+// nearest boundary point (every point of the target is at least d - (d - r) from it); from a node
+// inside, where no other part of the target comes nearer, its nearest too (e = r - d: the closing's
+// distance is d); else on a crease.
+bool boundaryPoint(const DistanceGrid& field, const DistanceSource* target, double r,
+  const std::vector<char>& inside, bool fillCavities, std::int64_t n, Vec3& site)
 {
   const double d = field.values()[n];
   const bool outside = d >= r;
   Front front;
-  if ((outside && inside[n]) || !projectOnFront(field, target, r, n, front)) // a filled cavity's node
+  if ((outside && inside[n]) ||
+    !projectOnFront(field, target, r, n, front)) // a filled cavity's node
   {
     return false;
   }
@@ -170,14 +176,15 @@ bool boundaryPoint(const DistanceGrid& field, const DistanceSource* target, doub
   {
     return true;
   }
-  const bool found = onBoundary(field, target, r, front) && !(fillCavities && facesCavity(field, r, inside, front));
+  const bool found =
+    onBoundary(field, target, r, front) && !(fillCavities && facesCavity(field, r, inside, front));
   site = front.point;
   return found;
 }
 } // namespace
 
-Status closingField(const DistanceGrid& field, double radius, const DistanceSource* target, bool fillCavities,
-  DistanceGrid& closed)
+Status closingField(const DistanceGrid& field, double radius, const DistanceSource* target,
+  bool fillCavities, DistanceGrid& closed)
 {
   const GridLattice& lattice = field.lattice();
   if (!(radius >= 0.25 * lattice.spacing.minCoeff()))
@@ -187,13 +194,16 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
   }
   const std::vector<char> inside = dilationNodes(field, radius, fillCavities);
   bool border = false;
-  forEachFaceNode(lattice, wholeGrid(lattice), [&](std::int64_t n) { border = border || inside[n]; });
+  forEachFaceNode(
+    lattice, wholeGrid(lattice), [&](std::int64_t n) { border = border || inside[n]; });
   if (border || std::find(inside.begin(), inside.end(), 1) == inside.end())
   {
-    return Status::failure("the target dilated by half the Gap Size is empty or reaches the border of the "
-                           "distance field; lower the Gap Size, or enlarge the field");
+    return Status::failure(
+      "the target dilated by half the Gap Size is empty or reaches the border of the "
+      "distance field; lower the Gap Size, or enlarge the field");
   }
-  // The sites: boundary points from the nodes near it, one each; the closest-point passes spread them.
+  // The sites: boundary points from the nodes near it, one each; the closest-point passes spread
+  // them.
   const std::vector<std::int64_t> near = nodesNearBoundary(field, radius, inside);
   std::vector<Vec3> sites(near.size());
   std::vector<char> found(near.size());
@@ -208,7 +218,8 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
   {
     siteOfNode[near[s]] = found[s] ? static_cast<std::int32_t>(s) : -1;
   }
-  std::vector<std::int32_t> nearSlot(lattice.nodeCount(), -1); // the passes below overwrite siteOfNode
+  std::vector<std::int32_t> nearSlot(
+    lattice.nodeCount(), -1); // the passes below overwrite siteOfNode
   for (std::size_t s = 0; s < near.size(); ++s)
   {
     nearSlot[near[s]] = static_cast<std::int32_t>(s);
@@ -234,8 +245,9 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
         // A node near the boundary has its boundary point from above.
         const std::int32_t s = nearSlot[n];
         Vec3 site;
-        const bool has = s >= 0 ? (site = sites[s], found[s] != 0)
-                                : boundaryPoint(field, target, radius, inside, fillCavities, n, site);
+        const bool has = s >= 0
+          ? (site = sites[s], found[s] != 0)
+          : boundaryPoint(field, target, radius, inside, fillCavities, n, site);
         if (has)
         {
           nearest = std::min(nearest, (site - lattice.position(lattice.coordinates(n))).norm());

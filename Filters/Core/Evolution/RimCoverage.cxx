@@ -26,7 +26,9 @@ std::vector<Vec3> rimSamples(const std::vector<std::array<Vec3, 2>>& rims, doubl
     }
   }
   // Every rim vertex ends two edges: once is enough.
-  auto less = [](const Vec3& p, const Vec3& q) { return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3); };
+  auto less = [](const Vec3& p, const Vec3& q) {
+    return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
+  };
   std::sort(samples.begin(), samples.end(), less);
   samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
   return samples;
@@ -48,10 +50,11 @@ Vec3 faceNormal(const std::vector<Vec3>& y, const std::array<int, 3>& t)
 }
 
 // The pseudonormal that tells the sides of a point whose nearest surface point lies on this feature
-// (Baerentzen & Aanaes, as PseudoNormals.h, which serves a fixed soup; this surface changes every step
-// and only a few features are asked): the face's, the sum of the two at an edge, or the angle-weighted
-// sum at a vertex.
-Vec3 featureNormal(const SurfaceMesh& mesh, const std::vector<Vec3>& y, int triangle, Feature feature)
+// (Baerentzen & Aanaes, as PseudoNormals.h, which serves a fixed soup; this surface changes every
+// step and only a few features are asked): the face's, the sum of the two at an edge, or the
+// angle-weighted sum at a vertex.
+Vec3 featureNormal(
+  const SurfaceMesh& mesh, const std::vector<Vec3>& y, int triangle, Feature feature)
 {
   const auto& t = mesh.triangles()[triangle];
   switch (feature)
@@ -61,11 +64,13 @@ Vec3 featureNormal(const SurfaceMesh& mesh, const std::vector<Vec3>& y, int tria
     case Feature::Vertex2:
     {
       const int v = t[static_cast<int>(feature) - static_cast<int>(Feature::Vertex0)];
-      Vec3 n = Vec3::Zero(); // angle-weighted, as PseudoNormals.h: then the side of a point is right
+      Vec3 n =
+        Vec3::Zero(); // angle-weighted, as PseudoNormals.h: then the side of a point is right
       for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
       {
         const Vec3 u = y[mesh.ring(p)] - y[v], w = y[mesh.ring(mesh.next(v, p))] - y[v];
-        n += angleBetween(u, w) * faceNormal(y, mesh.triangles()[mesh.ringTriangle(p)]).normalized();
+        n +=
+          angleBetween(u, w) * faceNormal(y, mesh.triangles()[mesh.ringTriangle(p)]).normalized();
       }
       return n;
     }
@@ -92,7 +97,8 @@ Vec3 featureNormal(const SurfaceMesh& mesh, const std::vector<Vec3>& y, int tria
 std::array<double, 3> barycentric(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const Vec3 e0 = b - a, e1 = c - a, r = x - a;
-  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = r.dot(e0), d21 = r.dot(e1);
+  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = r.dot(e0),
+               d21 = r.dot(e1);
   const double det = d00 * d11 - d01 * d01;
   if (!(det > 0))
   {
@@ -104,7 +110,8 @@ std::array<double, 3> barycentric(const Vec3& x, const Vec3& a, const Vec3& b, c
 }
 
 // Per sample, the nearest point of the surface within `reach`, looked for first within `near`.
-std::vector<Nearest> nearestPoints(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double near, double reach)
+std::vector<Nearest> nearestPoints(
+  const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double near, double reach)
 {
   const std::vector<Vec3>& y = mesh.points();
   // A grid of the triangles (rebuilt every step, by counting sort) rather than a tree: the searches
@@ -144,7 +151,8 @@ std::vector<Nearest> nearestPoints(const SurfaceMesh& mesh, const std::vector<Ve
 }
 } // namespace
 
-std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach)
+std::vector<Vec3> rimMoves(
+  const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double tolerance, double reach)
 {
   const std::vector<Vec3>& y = mesh.points();
   std::vector<Vec3> moves(y.size(), Vec3::Zero());
@@ -165,7 +173,8 @@ std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& sam
     }
     const auto& t = mesh.triangles()[hit.triangle];
     const auto w = barycentric(hit.point, y[t[0]], y[t[1]], y[t[2]]);
-    const double sum = w[0] * w[0] + w[1] * w[1] + w[2] * w[2]; // moves w_k gap / sum carry the point by gap
+    const double sum =
+      w[0] * w[0] + w[1] * w[1] + w[2] * w[2]; // moves w_k gap / sum carry the point by gap
     for (int k = 0; k < 3; ++k)
     {
       const Vec3 move = gap * (w[k] / sum);
@@ -178,7 +187,8 @@ std::vector<Vec3> rimMoves(const SurfaceMesh& mesh, const std::vector<Vec3>& sam
   return moves;
 }
 
-std::vector<double> rimHolds(const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double reach)
+std::vector<double> rimHolds(
+  const SurfaceMesh& mesh, const std::vector<Vec3>& samples, double reach)
 {
   const std::vector<Vec3>& y = mesh.points();
   std::vector<double> holds(y.size(), 0.0);

@@ -1,11 +1,11 @@
 #include "Evolution/StartingSurface.h"
 
-#include "Remeshing/CheckedEdits.h"
 #include "Distance/ContourTopology.h"
-#include "Surface/Components.h"
-#include "Surface/Icosphere.h"
+#include "Remeshing/CheckedEdits.h"
 #include "Remeshing/Relaxation.h"
 #include "Remeshing/Remesher.h"
+#include "Surface/Components.h"
+#include "Surface/Icosphere.h"
 #include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceGeometry.h"
 
@@ -14,14 +14,16 @@
 namespace shrinkwrap
 {
 
-Status offsetSurface(const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& surface)
+Status offsetSurface(
+  const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& surface)
 {
   surface = contourWithFewerJoins(field, offset, contour);
   SurfaceMesh closed;
   if (surface.triangles.empty() || !SurfaceMesh::build(surface.points, surface.triangles, closed))
   {
-    return Status::failure("the contour at Start Offset is empty or reaches the border of the distance "
-                           "field; lower it, or enlarge the field");
+    return Status::failure(
+      "the contour at Start Offset is empty or reaches the border of the distance "
+      "field; lower it, or enlarge the field");
   }
   removeCavities(surface);
   if (surface.triangles.empty())
@@ -40,8 +42,8 @@ constexpr double kSpeckCells = 2;
 constexpr double kLowestOffsetCells = 0.5;
 constexpr double kOffsetStepCells = 0.25;
 
-// The handles a contour keeps once its specks are gone (a speck may be a tiny ring); the contour itself
-// stays whole, so that the start's specks are counted where they are removed.
+// The handles a contour keeps once its specks are gone (a speck may be a tiny ring); the contour
+// itself stays whole, so that the start's specks are counted where they are removed.
 int handlesWithoutSpecks(TriangleSoup surface, double speck)
 {
   removeSpecks(surface, speck);
@@ -50,15 +52,17 @@ int handlesWithoutSpecks(TriangleSoup surface, double speck)
 
 // `start`, the contour at `offset`, replaced by the contour at the highest lower offset with fewer
 // handles, if one has. Where two parts lie a little more than twice the offset apart, the grid's
-// contour may join them across the slot: a handle the closed field has not, which the Lagrangian wrap
-// can never open again. A lower offset cannot close a hole a higher one keeps open,
-// so fewer handles there are such joins undone. The Euler characteristics of the contours, counted
-// without building them (ContourTopology.h), pick the offsets worth building.
-void fewestHandles(const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& start)
+// contour may join them across the slot: a handle the closed field has not, which the Lagrangian
+// wrap can never open again. A lower offset cannot close a hole a higher one keeps open, so fewer
+// handles there are such joins undone. The Euler characteristics of the contours, counted without
+// building them (ContourTopology.h), pick the offsets worth building.
+void fewestHandles(
+  const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& start)
 {
   const double h = field.lattice().spacing.maxCoeff();
   std::vector<double> offsets{ offset }; // the start's, then lower ones
-  for (double d = offset - kOffsetStepCells * h; d >= (kLowestOffsetCells - 1e-9) * h; d -= kOffsetStepCells * h)
+  for (double d = offset - kOffsetStepCells * h; d >= (kLowestOffsetCells - 1e-9) * h;
+       d -= kOffsetStepCells * h)
   {
     offsets.push_back(d);
   }
@@ -108,8 +112,8 @@ Status orientOutwards(SurfaceMesh& mesh)
 }
 
 Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSoup* given,
-  const StartSettings& settings, const FlipSettings& flips, const Contour& contour, SurfaceMesh& mesh,
-  int& specks)
+  const StartSettings& settings, const FlipSettings& flips, const Contour& contour,
+  SurfaceMesh& mesh, int& specks)
 {
   const double h = field.lattice().spacing.maxCoeff();
   TriangleSoup start;
@@ -119,7 +123,8 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   }
   else if (settings.shape == StartShape::OffsetSurface)
   {
-    const double offset = std::max(std::min(settings.offset * h, settings.maxOffset), std::min(settings.offset, 1.0) * h);
+    const double offset = std::max(
+      std::min(settings.offset * h, settings.maxOffset), std::min(settings.offset, 1.0) * h);
     if (Status status = offsetSurface(field, offset, contour, start); !status)
     {
       return Status::failure("cannot start from the offset surface: " + status.message());
@@ -143,30 +148,32 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   if (!given && settings.shape == StartShape::OffsetSurface && settings.coarsenTo)
   {
     // The evolution's thresholds. Collapses chain over a dozen passes here, so the ones behind a
-    // crossing lie farther from it than a step's do. In stages from two cells, the length doubling: a
-    // contour coarsened at once to several cells crosses itself where its walls lie a few cells
+    // crossing lie farther from it than a step's do. In stages from two cells, the length doubling:
+    // a contour coarsened at once to several cells crosses itself where its walls lie a few cells
     // apart, and each redo with guards costs three times the collapses.
     const RemeshSettings remeshing;
     const double last = *settings.coarsenTo;
     const double first = 2 * h > 0 ? std::min(2 * h, last) : last;
     for (double length = first;; length = std::min(2 * length, last))
     {
-      editCheckedOnce(mesh, 4 * length, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
-        CollapseSettings collapses;
-        collapses.avoidCrossings = guarded;
-        collapses.orientDegenerate = true;
-        collapses.guardOnlyIn = only;
-        return collapseShortEdges(m, remeshing.collapseBelow * length, remeshing.splitAbove * length, collapses) > 0;
-      });
+      editCheckedOnce(
+        mesh, 4 * length, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
+          CollapseSettings collapses;
+          collapses.avoidCrossings = guarded;
+          collapses.orientDegenerate = true;
+          collapses.guardOnlyIn = only;
+          return collapseShortEdges(m, remeshing.collapseBelow * length,
+                   remeshing.splitAbove * length, collapses) > 0;
+        });
       if (length >= last)
       {
         break;
       }
     }
   }
-  // A contour's slivers would fail the first step (the icosphere needs no relaxation). Where two parts
-  // of a contour nearly touch, relaxing can make them cross: then fewer iterations, down to none (a
-  // contour never crosses itself; a given surface is taken as it is).
+  // A contour's slivers would fail the first step (the icosphere needs no relaxation). Where two
+  // parts of a contour nearly touch, relaxing can make them cross: then fewer iterations, down to
+  // none (a contour never crosses itself; a given surface is taken as it is).
   if (settings.shape != StartShape::Icosphere || given)
   {
     const long long crossing = findSelfIntersections(mesh.points(), mesh.triangles()).pairs;

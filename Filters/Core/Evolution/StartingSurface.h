@@ -1,15 +1,15 @@
-// The surface an evolution starts from (Algorithm 3's F(0)): a geodesic icosphere around the target,
-// the paper's Section 5 offset surface (a contour of d near the target), or the caller's own; then
-// made ready: specks removed, outward oriented, relaxed where it is a contour.
+// The surface an evolution starts from (Algorithm 3's F(0)): a geodesic icosphere around the
+// target, the paper's Section 5 offset surface (a contour of d near the target), or the caller's
+// own; then made ready: specks removed, outward oriented, relaxed where it is a contour.
 #ifndef ShrinkWrap_StartingSurface_h
 #define ShrinkWrap_StartingSurface_h
 
+#include "Common/Status.h"
+#include "Common/TriangleSoup.h"
 #include "Distance/ContourTopology.h"
 #include "Distance/DistanceGrid.h"
 #include "Remeshing/EdgeFlips.h"
-#include "Common/Status.h"
 #include "Surface/SurfaceMesh.h"
-#include "Common/TriangleSoup.h"
 
 #include <functional>
 #include <limits>
@@ -38,12 +38,13 @@ struct StartSettings
   std::optional<double> coarsenTo;
 };
 
-// The paper's Section 5 start, a contour of d at `offset` (in the field's units) from the target. Give
-// it the field of the target's closing (GapClosing.h): a contour of the target's own field nearly
-// touches itself where two parts are about twice the offset apart, and the thin necks marching cubes
-// leaves there pinch off under curvature at once. Walls of cavities (an unsigned field's contour has
-// them inside an open target) are left out.
-Status offsetSurface(const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& surface);
+// The paper's Section 5 start, a contour of d at `offset` (in the field's units) from the target.
+// Give it the field of the target's closing (GapClosing.h): a contour of the target's own field
+// nearly touches itself where two parts are about twice the offset apart, and the thin necks
+// marching cubes leaves there pinch off under curvature at once. Walls of cavities (an unsigned
+// field's contour has them inside an open target) are left out.
+Status offsetSurface(
+  const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& surface);
 
 // Outward orientation, which eta N with D > 0 and the output's normals and curvatures rely on.
 Status orientOutwards(SurfaceMesh& mesh);
@@ -53,8 +54,8 @@ Status orientOutwards(SurfaceMesh& mesh);
 // specks smaller than two cells of the field removed (counted in `specks`), outward oriented, and a
 // contour or a given surface relaxed with `flips`.
 Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSoup* given,
-  const StartSettings& settings, const FlipSettings& flips, const Contour& contour, SurfaceMesh& mesh,
-  int& specks);
+  const StartSettings& settings, const FlipSettings& flips, const Contour& contour,
+  SurfaceMesh& mesh, int& specks);
 
 } // namespace shrinkwrap
 

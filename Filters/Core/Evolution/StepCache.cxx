@@ -45,8 +45,8 @@ void StepCache::thin(double limit, int kept)
     this->Stride *= 2;
     for (auto it = this->Steps.begin(); it != this->Steps.end();)
     {
-      const bool keep = it->first % this->Stride == 0 || it->first == this->Newest || it->first == kept ||
-        it->second.edited;
+      const bool keep = it->first % this->Stride == 0 || it->first == this->Newest ||
+        it->first == kept || it->second.edited;
       it = keep ? std::next(it) : this->Steps.erase(it);
     }
   }

@@ -1,6 +1,6 @@
 // The steps of an evolution kept for going back and forth in time: the evolver's exact state (so a
-// restart continues bit for bit), the tangential velocity shown with it, and the triangles, shared by
-// consecutive steps without edits. Beyond a memory limit every other step is dropped.
+// restart continues bit for bit), the tangential velocity shown with it, and the triangles, shared
+// by consecutive steps without edits. Beyond a memory limit every other step is dropped.
 #ifndef ShrinkWrap_StepCache_h
 #define ShrinkWrap_StepCache_h
 
@@ -33,8 +33,9 @@ public:
   const std::pair<const int, Step>& atOrBefore(int k) const;
   // Drops the steps after k (an edit at k makes them another evolution's).
   void dropAfter(int k);
-  // Drops every other step until the cache fits `bytes`, keeping step 0, the newest, `kept` and edited
-  // steps. Once the stride passes the newest step only those are left, however little memory is allowed.
+  // Drops every other step until the cache fits `bytes`, keeping step 0, the newest, `kept` and
+  // edited steps. Once the stride passes the newest step only those are left, however little memory
+  // is allowed.
   void thin(double bytes, int kept);
   double bytes() const;
   int newest() const { return this->Newest; }

@@ -1,6 +1,6 @@
 #include "Evolution/TangentialRedistribution.h"
-#include "Surface/CotanLaplacian.h"
 #include "Common/Parallel.h"
+#include "Surface/CotanLaplacian.h"
 
 #include <Eigen/IterativeLinearSolvers>
 
@@ -39,8 +39,8 @@ void angleVelocities(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const 
 }
 
 bool volumeVelocities(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const SurfaceGeometry& g,
-  const std::vector<Vec3>& normalVelocity, const VolumeRedistribution& settings, std::vector<double>& potential,
-  std::vector<Vec3>& velocity)
+  const std::vector<Vec3>& normalVelocity, const VolumeRedistribution& settings,
+  std::vector<double>& potential, std::vector<Vec3>& velocity)
 {
   const int nv = mesh.vertexCount();
   // Right-hand side of the Poisson problem for psi.
@@ -58,9 +58,10 @@ bool volumeVelocities(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const
     rhs[i] = g.coVolume[i] * (hv[i] - mean) + settings.omega * (g.area / nv - g.coVolume[i]);
   }
   // The area element changes as d(dA)/dt = (-h.v_N + div v_T) dA (h = Laplace-Beltrami of F), so
-  // co-volumes relax towards A/N_V when the integral of div grad psi over V_i, sum_j w_ij (psi_j - psi_i),
-  // equals the right-hand side. The sum_j w_ij (psi_i - psi_j) with v_T = +grad psi drives them
-  // apart (measured: max/min co-volume 79 -> 26000 on an MCF ellipsoid); hence the minus sign.
+  // co-volumes relax towards A/N_V when the integral of div grad psi over V_i, sum_j w_ij (psi_j -
+  // psi_i), equals the right-hand side. The sum_j w_ij (psi_i - psi_j) with v_T = +grad psi
+  // drives them apart (measured: max/min co-volume 79 -> 26000 on an MCF ellipsoid); hence the
+  // minus sign.
   rhs = -rhs;
   // The cotangent Laplacian with psi_0 = 0.
   CotanLaplacian laplacian(mesh);
@@ -106,9 +107,11 @@ bool volumeVelocities(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const
     Vec3 integral = Vec3::Zero();
     for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
     {
-      integral += g.triangleArea[mesh.ringTriangle(p)] / 3.0 * triangleGradient[mesh.ringTriangle(p)];
+      integral +=
+        g.triangleArea[mesh.ringTriangle(p)] / 3.0 * triangleGradient[mesh.ringTriangle(p)];
     }
-    const Vec3 v = settings.perArea && g.coVolume[i] > 0 ? Vec3(integral / g.coVolume[i]) : integral;
+    const Vec3 v =
+      settings.perArea && g.coVolume[i] > 0 ? Vec3(integral / g.coVolume[i]) : integral;
     velocity[i] = tangential(v, g.normal[i]);
   }
   return true;

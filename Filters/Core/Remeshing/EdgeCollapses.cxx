@@ -22,8 +22,8 @@ bool linkCondition(const SurfaceMesh& mesh, int a, int b)
 }
 
 // The triangles around a and b other than the two on the edge keep their orientation when a and b
-// move to m; degenerating ones have no reliable normal to keep: they are left out, or (orientDegenerate)
-// must only face the way the fan does.
+// move to m; degenerating ones have no reliable normal to keep: they are left out, or
+// (orientDegenerate) must only face the way the fan does.
 bool keepsNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, int b, const Vec3& m,
   const CollapseSettings& settings)
 {
@@ -31,7 +31,8 @@ bool keepsNormals(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int a, in
   Vec3 fan = Vec3::Zero(); // area-weighted normal of the fan before
   if (settings.orientDegenerate)
   {
-    forEachFanTriangle(mesh, a, b, [&](int v, int u, int w) { fan += (x[u] - x[v]).cross(x[w] - x[v]); });
+    forEachFanTriangle(
+      mesh, a, b, [&](int v, int u, int w) { fan += (x[u] - x[v]).cross(x[w] - x[v]); });
   }
   forEachFanTriangle(mesh, a, b, [&](int v, int u, int w) {
     if (!keeps)
@@ -63,17 +64,18 @@ Merge mergeOf(const std::vector<Vec3>& x, const std::vector<double>& anchors, in
   return { a, b, 0.5 * (x[a] + x[b]) };
 }
 
-bool collapseIsOk(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
-  const CollapseSettings& settings)
+bool collapseIsOk(const SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone,
+  const Vec3& m, const CollapseSettings& settings)
 {
   const int p = mesh.ringEntry(keep, gone);
   const int c = mesh.ring(mesh.next(keep, p)), d = mesh.ring(mesh.previous(keep, p));
-  return !(mesh.valence(c) <= 3 || mesh.valence(d) <= 3 || mesh.valence(keep) + mesh.valence(gone) - 4 < 3 ||
-    !linkCondition(mesh, keep, gone) || !keepsNormals(mesh, x, keep, gone, m, settings));
+  return !(mesh.valence(c) <= 3 || mesh.valence(d) <= 3 ||
+    mesh.valence(keep) + mesh.valence(gone) - 4 < 3 || !linkCondition(mesh, keep, gone) ||
+    !keepsNormals(mesh, x, keep, gone, m, settings));
 }
 
-bool collapseInPass(SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone, const Vec3& m,
-  const CollapseSettings& settings, std::vector<char>& touched, CrossingGuard& guard)
+bool collapseInPass(SurfaceMesh& mesh, const std::vector<Vec3>& x, int keep, int gone,
+  const Vec3& m, const CollapseSettings& settings, std::vector<char>& touched, CrossingGuard& guard)
 {
   if (touched[keep] || touched[gone] || !collapseIsOk(mesh, x, keep, gone, m, settings))
   {

@@ -24,7 +24,8 @@ bool flipKeepsShape(const std::vector<Vec3>& x, int i, int j, int c, int d, doub
 {
   const Vec3 n1 = unitNormal(x[i], x[j], x[c]), n2 = unitNormal(x[i], x[d], x[j]);
   const Vec3 n3 = unitNormal(x[i], x[d], x[c]), n4 = unitNormal(x[d], x[j], x[c]);
-  return !(n1.dot(n2) < cosMax || n3.dot(n4) < cosMax || n3.dot(n1 + n2) <= 0 || n4.dot(n1 + n2) <= 0);
+  return !(
+    n1.dot(n2) < cosMax || n3.dot(n4) < cosMax || n3.dot(n1 + n2) <= 0 || n4.dot(n1 + n2) <= 0);
 }
 
 bool flipGainsAngle(const std::vector<Vec3>& x, int i, int j, int c, int d, double minGain)

@@ -1,8 +1,8 @@
 // Edge flips that raise the smallest angle of a triangle pair, for a Lagrangian surface whose fixed
 // connectivity cannot follow large tangential stretching (the paper's Section 5 names connectivity
 // adjustments as the missing piece). A flip keeps the vertices, so the surface stays closed and
-// 2-manifold; it is refused where the two triangles are not nearly coplanar, so the shape is kept, and
-// where the new triangles would cross another part of the surface.
+// 2-manifold; it is refused where the two triangles are not nearly coplanar, so the shape is kept,
+// and where the new triangles would cross another part of the surface.
 #ifndef ShrinkWrap_EdgeFlips_h
 #define ShrinkWrap_EdgeFlips_h
 
@@ -19,10 +19,11 @@ namespace shrinkwrap
 
 struct FlipSettings
 {
-  double maxDihedral = 60;       // degrees between the normals of the two triangles, before and after
-  double minGain = 0.01;         // radians the smallest angle of the pair must gain
-  bool avoidCrossings = true;    // no flip whose new triangles would cross the surface (CrossingGuard)
-  std::vector<Box> guardOnlyIn;  // not empty: avoidCrossings checks only the flips within these boxes
+  double maxDihedral = 60;    // degrees between the normals of the two triangles, before and after
+  double minGain = 0.01;      // radians the smallest angle of the pair must gain
+  bool avoidCrossings = true; // no flip whose new triangles would cross the surface (CrossingGuard)
+  std::vector<Box>
+    guardOnlyIn; // not empty: avoidCrossings checks only the flips within these boxes
 };
 
 // Whether flipping edge (i, j) of triangles (i, j, c) and (i, d, j) to (c, d) keeps the shape: both
@@ -30,13 +31,14 @@ struct FlipSettings
 // triangles facing the way the old ones did.
 bool flipKeepsShape(const std::vector<Vec3>& x, int i, int j, int c, int d, double cosMax);
 
-// Whether flipping edge (i, j) of triangles (i, j, c) and (i, d, j) to (c, d) raises the pair's smallest
-// angle by at least minGain (radians): the test of flipEdges, before its checks of shape and crossings.
+// Whether flipping edge (i, j) of triangles (i, j, c) and (i, d, j) to (c, d) raises the pair's
+// smallest angle by at least minGain (radians): the test of flipEdges, before its checks of shape
+// and crossings.
 bool flipGainsAngle(const std::vector<Vec3>& x, int i, int j, int c, int d, double minGain);
 
-// One pass of flips, decided from the surface as the pass began (the rings stay so until the commit):
-// a vertex takes part in at most one flip, and a flip is refused that would leave a vertex of
-// valence 3 or less, pinch the surface, change its shape or cross it.
+// One pass of flips, decided from the surface as the pass began (the rings stay so until the
+// commit): a vertex takes part in at most one flip, and a flip is refused that would leave a vertex
+// of valence 3 or less, pinch the surface, change its shape or cross it.
 class FlipPass
 {
 public:

@@ -16,7 +16,8 @@ std::vector<std::array<int, 2>> edgesOf(const SurfaceMesh& mesh);
 
 // Splits each edge at its midpoint (vertex data interpolated; SurfaceMesh::split), committed. The
 // edges are those of the mesh before the call, so an edge split earlier in the list may have made a
-// later one's triangles new: each split finds its edge's current triangles. Returns the splits made.
+// later one's triangles new: each split finds its edge's current triangles. Returns the splits
+// made.
 int splitEdges(SurfaceMesh& mesh, const std::vector<std::array<int, 2>>& edges);
 
 } // namespace shrinkwrap

@@ -8,7 +8,8 @@ namespace shrinkwrap
 namespace
 {
 // One Jacobi sweep: every vertex towards the mean of its neighbours, without the normal component.
-std::vector<Vec3> smoothTangentially(const SurfaceMesh& mesh, const std::vector<Vec3>& x, double weight)
+std::vector<Vec3> smoothTangentially(
+  const SurfaceMesh& mesh, const std::vector<Vec3>& x, double weight)
 {
   SurfaceGeometry g;
   computeGeometry(mesh, x, g);

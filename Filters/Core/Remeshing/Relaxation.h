@@ -1,6 +1,7 @@
-// Tangential relaxation of a starting surface (the paper's Section 5 proposes starting from a contour
-// of d "after tangentially relaxing triangle vertices"): a marching-cubes contour has slivers and
-// near-coincident vertices that would fail the evolution's degenerate-triangle check at once.
+// Tangential relaxation of a starting surface (the paper's Section 5 proposes starting from a
+// contour of d "after tangentially relaxing triangle vertices"): a marching-cubes contour has
+// slivers and near-coincident vertices that would fail the evolution's degenerate-triangle check at
+// once.
 #ifndef ShrinkWrap_Relaxation_h
 #define ShrinkWrap_Relaxation_h
 

@@ -39,12 +39,14 @@ void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings)
       const double d2 = d.squaredNorm();
       curvature = d2 > 0 ? std::max(curvature, 2 * std::abs(g.normal[i].dot(d)) / d2) : curvature;
     }
-    const double square = curvature > 0 ? 6 * e / curvature - 3 * e * e : std::numeric_limits<double>::infinity();
+    const double square =
+      curvature > 0 ? 6 * e / curvature - 3 * e * e : std::numeric_limits<double>::infinity();
     const double length = square > 0 ? std::sqrt(square) : 0;
     sizes[i] = std::clamp(length / L, settings.shortest, settings.longest);
   }
-  // Sizes that jump between neighbours make poor triangles: each may exceed a neighbour's by at most `grading` times the edge between
-  // them (in L); three sweeps carry that about three rings out.
+  // Sizes that jump between neighbours make poor triangles: each may exceed a neighbour's by at
+  // most `grading` times the edge between them (in L); three sweeps carry that about three rings
+  // out.
   for (int pass = 0; pass < 3; ++pass)
   {
     for (int i = 0; i < mesh.vertexCount(); ++i)
@@ -61,7 +63,8 @@ void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings)
 int splitLongEdges(SurfaceMesh& mesh, double maxLength)
 {
   int splits = 0;
-  // After the first pass only the edges at the new vertices (numbered after the others) can be long.
+  // After the first pass only the edges at the new vertices (numbered after the others) can be
+  // long.
   for (int pass = 0, firstNew = 0; pass < 16; ++pass)
   {
     std::vector<std::array<int, 2>> longEdges;
@@ -69,7 +72,8 @@ int splitLongEdges(SurfaceMesh& mesh, double maxLength)
     const std::vector<Vec3>& x = mesh.points();
     for (const auto& e : edgesOf(mesh))
     {
-      if (std::max(e[0], e[1]) >= firstNew && (x[e[0]] - x[e[1]]).norm() > maxLength * edgeSize(sizes, e[0], e[1]))
+      if (std::max(e[0], e[1]) >= firstNew &&
+        (x[e[0]] - x[e[1]]).norm() > maxLength * edgeSize(sizes, e[0], e[1]))
       {
         longEdges.push_back(e);
       }
@@ -89,14 +93,15 @@ namespace
 {
 // No edge from the merged vertex (which keeps the kept vertex's size) to a neighbour of either end
 // longer than maxLength.
-bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const std::vector<double>& sizes,
-  const Merge& merge, double maxLength)
+bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x,
+  const std::vector<double>& sizes, const Merge& merge, double maxLength)
 {
   for (int v : { merge.keep, merge.gone })
   {
     for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
     {
-      if ((x[mesh.ring(p)] - merge.at).norm() > maxLength * edgeSize(sizes, merge.keep, mesh.ring(p)))
+      if ((x[mesh.ring(p)] - merge.at).norm() >
+        maxLength * edgeSize(sizes, merge.keep, mesh.ring(p)))
       {
         return false;
       }
@@ -107,11 +112,11 @@ bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x, const std::
 
 // One pass over the edges with an end in `look` (all when it is empty), in the order of edgesOf.
 // `look` becomes, numbered as after the pass, the ends of the short edges it found: the only edges
-// that can be short in the next pass are those and the ones a merge moved an end of (the kept vertex
-// is among them), since no other vertex moves. So later passes look at a few edges and decide as a
-// pass over all of them would.
-int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings,
-  std::vector<char>& look)
+// that can be short in the next pass are those and the ones a merge moved an end of (the kept
+// vertex is among them), since no other vertex moves. So later passes look at a few edges and
+// decide as a pass over all of them would.
+int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength,
+  const CollapseSettings& settings, std::vector<char>& look)
 {
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
   const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // edits change the mesh's own
@@ -158,7 +163,8 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength, const Co
 }
 } // namespace
 
-int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings)
+int collapseShortEdges(
+  SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings)
 {
   int collapses = 0;
   std::vector<char> look; // every edge in the first pass
@@ -189,7 +195,8 @@ int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings)
     {
       continue;
     }
-    const int vi = mesh.valence(i), vj = mesh.valence(j), vc = mesh.valence(c), vd = mesh.valence(d);
+    const int vi = mesh.valence(i), vj = mesh.valence(j), vc = mesh.valence(c),
+              vd = mesh.valence(d);
     // A flip that the angle pass (flipEdges, after each step's edits) would flip back is churn.
     if (deviation(vi - 1, vj - 1, vc + 1, vd + 1) < deviation(vi, vj, vc, vd) &&
       mesh.ringEntry(c, d) < 0 && !flipGainsAngle(pass.points(), c, d, i, j, settings.minGain))
@@ -206,7 +213,8 @@ RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings)
   const double L = settings.targetLength;
   if (!(L > 0) || !std::isfinite(L) || !(settings.collapseBelow < settings.splitAbove))
   {
-    report.status = Status::failure("the target edge length must be positive, and collapseBelow < splitAbove");
+    report.status =
+      Status::failure("the target edge length must be positive, and collapseBelow < splitAbove");
     return report;
   }
   RelaxSettings relax;

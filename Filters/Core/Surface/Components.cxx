@@ -95,8 +95,8 @@ int removeCavities(TriangleSoup& surface)
     volume[root[t[0]]] += tripleProduct(p, surface.points[t[1]], surface.points[t[2]]) / 6;
   }
   // The largest piece is an outer one, whichever way the triangles face.
-  const double outer = *std::max_element(volume.begin(), volume.end(),
-    [](double u, double w) { return std::abs(u) < std::abs(w); });
+  const double outer = *std::max_element(
+    volume.begin(), volume.end(), [](double u, double w) { return std::abs(u) < std::abs(w); });
   return removeComponents(surface, root, [&](int r) { return volume[r] * outer < 0; });
 }
 

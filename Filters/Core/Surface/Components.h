@@ -1,6 +1,6 @@
-// Connected components of a triangle surface, for the repairs a marching-cubes contour needs before it
-// can start an evolution: specks (closed components around single grid nodes, which mean curvature
-// shrinks to a point) and the walls of cavities.
+// Connected components of a triangle surface, for the repairs a marching-cubes contour needs before
+// it can start an evolution: specks (closed components around single grid nodes, which mean
+// curvature shrinks to a point) and the walls of cavities.
 #ifndef ShrinkWrap_Components_h
 #define ShrinkWrap_Components_h
 

@@ -40,8 +40,8 @@ void CotanLaplacian::pin(const SurfaceMesh& mesh, int v)
   double* values = this->M.valuePtr();
   for (int p = mesh.ringBegin(v); p < mesh.ringEnd(v); ++p)
   {
-    values[this->OffDiagonal[p]] = 0;                                        // row v
-    values[this->OffDiagonal[mesh.ringEntry(mesh.ring(p), v)]] = 0;          // column v
+    values[this->OffDiagonal[p]] = 0;                               // row v
+    values[this->OffDiagonal[mesh.ringEntry(mesh.ring(p), v)]] = 0; // column v
   }
   values[this->Diagonal[v]] = 1;
 }

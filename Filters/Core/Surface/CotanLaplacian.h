@@ -1,6 +1,7 @@
-// The cotangent Laplacian of a surface as a sparse matrix on its one-rings (paper Section 2.2): row i
-// holds i and its neighbours, in column order, with the cotangent weights w_ij of SurfaceGeometry.
-// The pattern is built once per connectivity; assemble() sets the values, row by row, as
+// The cotangent Laplacian of a surface as a sparse matrix on its one-rings (paper Section 2.2): row
+// i holds i and its neighbours, in column order, with the cotangent weights w_ij of
+// SurfaceGeometry. The pattern is built once per connectivity; assemble() sets the values, row by
+// row, as
 //   a_ii = shift_i + scale_i sum_j w_ij,   a_ij = -scale_i w_ij,
 // which gives both the evolver's system (eq. (5): shift 1 or |V_i|/eps_i, scale tau times the row's
 // factor) and the plain Laplacian of the volume redistribution (shift 0, scale 1).
@@ -43,8 +44,8 @@ public:
     }
   }
 
-  // Fixes the value at vertex v (a Dirichlet condition that makes a pure Laplacian definite): row and
-  // column v become those of the identity.
+  // Fixes the value at vertex v (a Dirichlet condition that makes a pure Laplacian definite): row
+  // and column v become those of the identity.
   void pin(const SurfaceMesh& mesh, int v);
 
   const Matrix& matrix() const { return this->M; }

@@ -5,10 +5,10 @@
 #include "Surface/TriangleGrid.h"
 
 #include <algorithm>
-#include <memory>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <mutex>
 #include <optional>
 
@@ -28,7 +28,8 @@ int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
   return sign(tripleProduct(b - a, c - a, d - a));
 }
 
-// Whether the open segment pq passes through the triangle abc (strictly on both sides of its plane).
+// Whether the open segment pq passes through the triangle abc (strictly on both sides of its
+// plane).
 bool segmentCrosses(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const int sp = orientation(a, b, c, p), sq = orientation(a, b, c, q);
@@ -36,8 +37,10 @@ bool segmentCrosses(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, 
   {
     return false;
   }
-  const int s1 = orientation(p, q, a, b), s2 = orientation(p, q, b, c), s3 = orientation(p, q, c, a);
-  return (s1 >= 0 && s2 >= 0 && s3 >= 0 && (s1 | s2 | s3)) || (s1 <= 0 && s2 <= 0 && s3 <= 0 && (s1 | s2 | s3));
+  const int s1 = orientation(p, q, a, b), s2 = orientation(p, q, b, c),
+            s3 = orientation(p, q, c, a);
+  return (s1 >= 0 && s2 >= 0 && s3 >= 0 && (s1 | s2 | s3)) ||
+    (s1 <= 0 && s2 <= 0 && s3 <= 0 && (s1 | s2 | s3));
 }
 
 // A triangle by its corners and their vertex ids (-1: a new point, shared with nothing), with its
@@ -100,7 +103,8 @@ bool crosses(const Facet& s, const Facet& t, double margin)
     for (int k = 0; k < 3; ++k)
     {
       const int q = (k + 1) % 3;
-      if (!has(f.id, e.id[k]) && !has(f.id, e.id[q]) && segmentCrosses(e.p[k], e.p[q], f.p[0], f.p[1], f.p[2]))
+      if (!has(f.id, e.id[k]) && !has(f.id, e.id[q]) &&
+        segmentCrosses(e.p[k], e.p[q], f.p[0], f.p[1], f.p[2]))
       {
         return true;
       }
@@ -112,8 +116,8 @@ bool crosses(const Facet& s, const Facet& t, double margin)
 
 // A guarded question's box (an edit's new triangles) is at most this many grid cells wide, but for
 // rare wide fans: where a guard holds a few boxes, the triangles and the edits of a pass are binned
-// only within that reach of them. Many boxes (thousands where the hold-back kept two parts apart) lie
-// all over the surface, and picking the triangles near them costs more than it saves.
+// only within that reach of them. Many boxes (thousands where the hold-back kept two parts apart)
+// lie all over the surface, and picking the triangles near them costs more than it saves.
 constexpr double kQuestionCells = 4;
 constexpr std::size_t kFewBoxes = 32;
 
@@ -123,8 +127,8 @@ double roundingMargin(const TriangleGrid& grid)
   return 1e-7 * grid.cell();
 }
 
-// The pairs each(b, e, out) finds over chunks [b, e) of [0, n), from all threads, in one order whatever
-// the threads did.
+// The pairs each(b, e, out) finds over chunks [b, e) of [0, n), from all threads, in one order
+// whatever the threads did.
 template <typename Each>
 std::vector<std::pair<int, int>> pairsInParallel(Index n, Index grain, Each&& each)
 {
@@ -141,14 +145,14 @@ std::vector<std::pair<int, int>> pairsInParallel(Index n, Index grain, Each&& ea
 }
 
 // The pairs of triangles that cross at x, found through the grid (boxes at x or containing them).
-std::vector<std::pair<int, int>> crossingPairs(
-  const TriangleGrid& grid, const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+std::vector<std::pair<int, int>> crossingPairs(const TriangleGrid& grid, const std::vector<Vec3>& x,
+  const std::vector<std::array<int, 3>>& triangles)
 {
   const double margin = roundingMargin(grid);
   std::vector<Facet> facets(triangles.size());
-  // Two triangles cross only where both boxes hold the crossing point: boxes at x (the grid's may be
-  // wider, swept over a step), widened by the margin against rounding, rule a pair out before its planes
-  // are asked.
+  // Two triangles cross only where both boxes hold the crossing point: boxes at x (the grid's may
+  // be wider, swept over a step), widened by the margin against rounding, rule a pair out before
+  // its planes are asked.
   std::vector<Box> boxes(triangles.size());
   parallelFor(0, static_cast<Index>(triangles.size()), kCheapGrain, [&](Index b, Index e) {
     for (Index t = b; t < e; ++t)
@@ -157,39 +161,42 @@ std::vector<std::pair<int, int>> crossingPairs(
       boxes[t] = Box::around(facets[t].p).widened(margin);
     }
   });
-  return pairsInParallel(grid.bucketCount(), 0, [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
-    grid.forEachOverlappingPair(static_cast<int>(b), static_cast<int>(e), [&](int s, int t) {
-      if (boxes[s].overlaps(boxes[t]) && crosses(facets[s], facets[t], margin))
-      {
-        found.emplace_back(s, t);
-      }
-    });
-  });
-}
-
-// The pairs that cross at x with a triangle in `changed` (sorted), each once.
-std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid, const std::vector<Vec3>& x,
-  const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& changed)
-{
-  const double margin = roundingMargin(grid);
-  const auto n = static_cast<Index>(changed.size());
-  return pairsInParallel(n, kQueryGrain, [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
-    for (Index k = b; k < e; ++k)
-    {
-      const int s = changed[k];
-      const Facet fs = facetOf(x, triangles[s]);
-      const Box near = Box::around(fs.p).widened(margin);
-      grid.forEachNear(near, [&](int t) {
-        // A pair of two changed triangles is met twice; it is kept once.
-        const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
-        if (t != s && !counted && near.overlaps(Box::around(x, triangles[t]).widened(margin)) &&
-          crosses(fs, facetOf(x, triangles[t]), margin))
+  return pairsInParallel(
+    grid.bucketCount(), 0, [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
+      grid.forEachOverlappingPair(static_cast<int>(b), static_cast<int>(e), [&](int s, int t) {
+        if (boxes[s].overlaps(boxes[t]) && crosses(facets[s], facets[t], margin))
         {
           found.emplace_back(s, t);
         }
       });
-    }
-  });
+    });
+}
+
+// The pairs that cross at x with a triangle in `changed` (sorted), each once.
+std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid,
+  const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<int>& changed)
+{
+  const double margin = roundingMargin(grid);
+  const auto n = static_cast<Index>(changed.size());
+  return pairsInParallel(
+    n, kQueryGrain, [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
+      for (Index k = b; k < e; ++k)
+      {
+        const int s = changed[k];
+        const Facet fs = facetOf(x, triangles[s]);
+        const Box near = Box::around(fs.p).widened(margin);
+        grid.forEachNear(near, [&](int t) {
+          // A pair of two changed triangles is met twice; it is kept once.
+          const bool counted = t < s && std::binary_search(changed.begin(), changed.end(), t);
+          if (t != s && !counted && near.overlaps(Box::around(x, triangles[t]).widened(margin)) &&
+            crosses(fs, facetOf(x, triangles[t]), margin))
+          {
+            found.emplace_back(s, t);
+          }
+        });
+      }
+    });
 }
 
 // Few changed triangles (a step's touch-ups, a round of edits) are tested alone; many, all pairs in
@@ -201,8 +208,8 @@ std::vector<std::pair<int, int>> crossingsOf(const TriangleGrid& grid, const std
                                                : crossingPairs(grid, x, triangles);
 }
 
-// For each of `points`, the vertex of `mesh` at exactly the same position (-1: none), through a sorted
-// table of the positions' bits.
+// For each of `points`, the vertex of `mesh` at exactly the same position (-1: none), through a
+// sorted table of the positions' bits.
 std::vector<int> samePositions(const SurfaceMesh& mesh, const std::vector<Vec3>& points)
 {
   auto hash = [](const Vec3& p) {
@@ -246,7 +253,8 @@ bool hasTriangle(const SurfaceMesh& mesh, int a, int b, int c)
   return p >= 0 && mesh.ring(mesh.next(a, p)) == c;
 }
 
-SelfIntersections fromPairs(std::size_t triangleCount, const std::vector<std::pair<int, int>>& pairs)
+SelfIntersections fromPairs(
+  std::size_t triangleCount, const std::vector<std::pair<int, int>>& pairs)
 {
   SelfIntersections found;
   found.intersecting.assign(triangleCount, 0);
@@ -270,8 +278,8 @@ SelfIntersections findSelfIntersections(
   return fromPairs(triangles.size(), crossingPairs(grid, x, triangles));
 }
 
-SelfIntersections findNewSelfIntersections(
-  const SurfaceMesh& before, const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+SelfIntersections findNewSelfIntersections(const SurfaceMesh& before, const std::vector<Vec3>& x,
+  const std::vector<std::array<int, 3>>& triangles)
 {
   const std::vector<int> same = samePositions(before, x);
   std::vector<int> made;
@@ -291,8 +299,8 @@ SelfIntersections findNewSelfIntersections(
   return fromPairs(triangles.size(), crossingsOf(grid, x, triangles, made));
 }
 
-std::vector<Box> boxesAround(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-  const SelfIntersections& found, double reach)
+std::vector<Box> boxesAround(const std::vector<Vec3>& points,
+  const std::vector<std::array<int, 3>>& triangles, const SelfIntersections& found, double reach)
 {
   std::vector<Box> boxes;
   for (std::size_t t = 0; t < found.intersecting.size(); ++t)
@@ -318,7 +326,8 @@ std::vector<Box> cellsCovering(const std::vector<Box>& boxes, double cell)
     {
       continue;
     }
-    const Eigen::Array3d lo = (box.min / cell).array().floor(), hi = (box.max / cell).array().floor();
+    const Eigen::Array3d lo = (box.min / cell).array().floor(),
+                         hi = (box.max / cell).array().floor();
     // Cells far smaller than the boxes (the boxes themselves are the fewer), or beyond integers.
     if (((hi - lo) > 64).any() || (lo.abs() > 1e15).any() || (hi.abs() > 1e15).any())
     {
@@ -328,7 +337,8 @@ std::vector<Box> cellsCovering(const std::vector<Box>& boxes, double cell)
       for (double j = lo[1]; j <= hi[1]; ++j)
         for (double i = lo[0]; i <= hi[0]; ++i)
         {
-          cells.push_back({ static_cast<std::int64_t>(i), static_cast<std::int64_t>(j), static_cast<std::int64_t>(k) });
+          cells.push_back({ static_cast<std::int64_t>(i), static_cast<std::int64_t>(j),
+            static_cast<std::int64_t>(k) });
         }
   }
   std::sort(cells.begin(), cells.end());
@@ -336,14 +346,15 @@ std::vector<Box> cellsCovering(const std::vector<Box>& boxes, double cell)
   std::vector<Box> covering;
   for (const auto& c : cells)
   {
-    const Vec3 corner = cell * Vec3(static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2]));
+    const Vec3 corner =
+      cell * Vec3(static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2]));
     covering.push_back({ corner, corner + Vec3::Constant(cell) });
   }
   return covering;
 }
 
-CrossingGuard::CrossingGuard(
-  const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles, std::vector<Box> only)
+CrossingGuard::CrossingGuard(const std::vector<Vec3>& points,
+  const std::vector<std::array<int, 3>>& triangles, std::vector<Box> only)
   : Points(points)
   , Triangles(triangles)
   , Only(std::move(only))
@@ -442,12 +453,14 @@ std::vector<CrossingGuard::Made> CrossingGuard::flipped(int i, int j, int c, int
   return { { p, { i, c, d }, Box::around(p) }, { q, { j, d, c }, Box::around(q) } };
 }
 
-bool CrossingGuard::collapseCrosses(int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim)
+bool CrossingGuard::collapseCrosses(
+  int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim)
 {
   return this->anyCrosses(this->fan(keep, m, rim), keep, gone);
 }
 
-void CrossingGuard::addCollapse(int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim)
+void CrossingGuard::addCollapse(
+  int keep, int gone, const Vec3& m, const std::vector<std::array<int, 2>>& rim)
 {
   this->add(this->fan(keep, m, rim));
   if (this->Merged.empty())
@@ -487,7 +500,8 @@ bool CrossingGuard::guards(const Box& box) const
     return guarded;
   }
   // Boxes the grid cannot bin (empty, degenerate, not finite).
-  return std::any_of(this->Only.begin(), this->Only.end(), [&box](const Box& only) { return only.overlaps(box); });
+  return std::any_of(
+    this->Only.begin(), this->Only.end(), [&box](const Box& only) { return only.overlaps(box); });
 }
 
 // One grid query for all the new triangles; each is then tested against the candidates its own box
@@ -535,8 +549,8 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
   grid.forEachNear(all, [&](int binned) {
     const int t = this->Ids[binned];
     const auto& tri = this->Triangles[t];
-    const bool replaced =
-      !this->Merged.empty() && (this->Merged[tri[0]] || this->Merged[tri[1]] || this->Merged[tri[2]]);
+    const bool replaced = !this->Merged.empty() &&
+      (this->Merged[tri[0]] || this->Merged[tri[1]] || this->Merged[tri[2]]);
     if (!crossing && !replaced && !has(tri, a) && !has(tri, b))
     {
       test(grid.box(binned), [&] { return facetOf(this->Points, tri); });
@@ -565,8 +579,8 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
   return crossing;
 }
 
-// Recorded everywhere (a wider question may yet ask for all), but indexed in the grid's cells only once
-// a question needs the grid (where the guard covers a few boxes, most passes ask none).
+// Recorded everywhere (a wider question may yet ask for all), but indexed in the grid's cells only
+// once a question needs the grid (where the guard covers a few boxes, most passes ask none).
 void CrossingGuard::add(const std::vector<Made>& made)
 {
   for (const Made& m : made)

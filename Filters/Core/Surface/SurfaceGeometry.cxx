@@ -1,7 +1,6 @@
 #include "Surface/SurfaceGeometry.h"
 #include "Common/Parallel.h"
 
-
 #include <cmath>
 
 namespace shrinkwrap
@@ -14,8 +13,8 @@ std::array<double, 3> triangleAngles(const Vec3& a, const Vec3& b, const Vec3& c
 
 namespace
 {
-// Per triangle, computed once and gathered by the vertices: unit normal, and per corner the angle and
-// the cotangent.
+// Per triangle, computed once and gathered by the vertices: unit normal, and per corner the angle
+// and the cotangent.
 struct TriangleTerms
 {
   Vec3 normal;
@@ -52,7 +51,8 @@ void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& x, Surfac
         // angleBetween and cotangent from one sine and cosine (times |u| |w|)
         const double sine = u.cross(w).norm(), cosine = u.dot(w);
         terms[t].angle[k] = std::atan2(sine, cosine);
-        terms[t].cotangent[k] = sine > 0 ? cosine / sine : 0.0; // degenerate: nothing (the step reports it)
+        terms[t].cotangent[k] =
+          sine > 0 ? cosine / sine : 0.0; // degenerate: nothing (the step reports it)
       }
     }
   });
@@ -63,13 +63,15 @@ void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& x, Surfac
       Vec3 normal = Vec3::Zero(), laplacian = Vec3::Zero();
       for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
       {
-        const int j = mesh.ring(p), t = mesh.ringTriangle(p), s = mesh.ringTriangle(mesh.previous(i, p));
+        const int j = mesh.ring(p), t = mesh.ringTriangle(p),
+                  s = mesh.ringTriangle(mesh.previous(i, p));
         coVolume += g.triangleArea[t] / 3.0;
         // Triangle (i, j, k): its normal weighted by its angle at i.
         normal += terms[t].angle[cornerOf(tris[t], i)] * terms[t].normal;
         // Edge (i, j): the corners opposite it in triangles (i, j, k) and (i, l, j), i.e. after j.
         const int k = mesh.ring(mesh.next(i, p)), l = mesh.ring(mesh.previous(i, p));
-        const double w = 0.5 * (terms[t].cotangent[cornerOf(tris[t], k)] + terms[s].cotangent[cornerOf(tris[s], l)]);
+        const double w = 0.5 *
+          (terms[t].cotangent[cornerOf(tris[t], k)] + terms[s].cotangent[cornerOf(tris[s], l)]);
         g.weight[p] = w;
         laplacian += w * (x[j] - x[i]);
       }
@@ -129,7 +131,8 @@ SmallestAngle smallestAngle(const SurfaceMesh& mesh, const std::vector<Vec3>& x)
     int triangle = -1;
   };
   std::vector<Part> parts(std::max(1, mesh.triangleCount() / static_cast<int>(kCheapGrain) + 1));
-  const int n = mesh.triangleCount(), chunk = (n + static_cast<int>(parts.size()) - 1) / static_cast<int>(parts.size());
+  const int n = mesh.triangleCount(),
+            chunk = (n + static_cast<int>(parts.size()) - 1) / static_cast<int>(parts.size());
   parallelFor(0, static_cast<int>(parts.size()), 1, [&](int b, int e) {
     for (int p = b; p < e; ++p)
     {

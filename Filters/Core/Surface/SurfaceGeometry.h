@@ -1,7 +1,8 @@
 // The finite-volume quantities of one step (paper Section 2.2, Fig. 5), from the current positions:
-// barycentric co-volume areas |V_i| (a third of each incident triangle), angle-weighted outward unit
-// normals N_i, cotangent weights w_ij = (cot alpha_ij + cot beta_ij) / 2 per one-ring entry, and the
-// mean-curvature vectors h_i = (1/|V_i|) sum_j w_ij (F_j - F_i) (the discrete Laplace-Beltrami of F).
+// barycentric co-volume areas |V_i| (a third of each incident triangle), angle-weighted outward
+// unit normals N_i, cotangent weights w_ij = (cot alpha_ij + cot beta_ij) / 2 per one-ring entry,
+// and the mean-curvature vectors h_i = (1/|V_i|) sum_j w_ij (F_j - F_i) (the discrete
+// Laplace-Beltrami of F).
 #ifndef ShrinkWrap_SurfaceGeometry_h
 #define ShrinkWrap_SurfaceGeometry_h
 
@@ -16,11 +17,11 @@ namespace shrinkwrap
 struct SurfaceGeometry
 {
   std::vector<double> triangleArea;
-  std::vector<double> coVolume;  // |V_i|
-  std::vector<Vec3> normal;      // N_i
-  std::vector<double> weight;    // w_ij, indexed like the one-rings
-  std::vector<Vec3> curvature;   // h_i
-  double area = 0;               // total
+  std::vector<double> coVolume; // |V_i|
+  std::vector<Vec3> normal;     // N_i
+  std::vector<double> weight;   // w_ij, indexed like the one-rings
+  std::vector<Vec3> curvature;  // h_i
+  double area = 0;              // total
 };
 
 void computeGeometry(const SurfaceMesh& mesh, const std::vector<Vec3>& points, SurfaceGeometry& g);

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <sstream>
 #include <cstdint>
+#include <sstream>
 #include <utility>
 
 namespace shrinkwrap
@@ -20,10 +20,10 @@ struct Corner
 };
 
 // Corners grouped by vertex: at vertex a, triangle (a, b, c) leads from neighbour b to neighbour c.
-// Bucketed by a (counting sort; each bucket is sorted by b where its fan is walked): linear time, as
-// this runs again after every round of edits. `bucket` gets the bucket offsets.
-Status sortCorners(int nv, const std::vector<std::array<int, 3>>& triangles, std::vector<Corner>& corners,
-  std::vector<int>& bucket)
+// Bucketed by a (counting sort; each bucket is sorted by b where its fan is walked): linear time,
+// as this runs again after every round of edits. `bucket` gets the bucket offsets.
+Status sortCorners(int nv, const std::vector<std::array<int, 3>>& triangles,
+  std::vector<Corner>& corners, std::vector<int>& bucket)
 {
   const int nt = static_cast<int>(triangles.size());
   bucket.assign(nv + 1, 0);
@@ -63,8 +63,8 @@ Status sortCorners(int nv, const std::vector<std::array<int, 3>>& triangles, std
   return {};
 }
 
-// Walks the fan of vertex v, whose corners are [first, last) (sorted here by b): from neighbour b, the
-// corner starting at b leads to c, which must start the next. Writes v's ring entries.
+// Walks the fan of vertex v, whose corners are [first, last) (sorted here by b): from neighbour b,
+// the corner starting at b leads to c, which must start the next. Writes v's ring entries.
 Status walkFan(int v, Corner* first, Corner* last, int* ring, int* ringTriangle)
 {
   std::sort(first, last, [](const Corner& x, const Corner& y) { return x.b < y.b; });
@@ -83,12 +83,15 @@ Status walkFan(int v, Corner* first, Corner* last, int* ring, int* ringTriangle)
     return failure("a vertex belongs to no triangle: vertex ");
   }
   auto find = [&](int b) -> const Corner* {
-    const Corner* it = std::lower_bound(first, last, b, [](const Corner& x, int key) { return x.b < key; });
+    const Corner* it =
+      std::lower_bound(first, last, b, [](const Corner& x, int key) { return x.b < key; });
     return it != last && it->b == b ? it : nullptr;
   };
-  if (std::adjacent_find(first, last, [](const Corner& x, const Corner& y) { return x.b == y.b; }) != last)
+  if (std::adjacent_find(
+        first, last, [](const Corner& x, const Corner& y) { return x.b == y.b; }) != last)
   {
-    return failure("an edge is used by more than two triangles or twice in one direction at vertex ");
+    return failure(
+      "an edge is used by more than two triangles or twice in one direction at vertex ");
   }
   const Corner* corner = first;
   for (int p = 0; p < last - first; ++p)
@@ -115,7 +118,8 @@ Status walkFan(int v, Corner* first, Corner* last, int* ring, int* ringTriangle)
 
 std::uint64_t edgeKey(int a, int b)
 {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+    static_cast<std::uint32_t>(b);
 }
 
 constexpr std::array<int, 3> kRemoved = { -1, -1, -1 };
@@ -184,7 +188,8 @@ public:
   // Removes the key if it maps to value.
   void erase(std::uint64_t key, int value)
   {
-    for (std::size_t s = this->first(key); !this->Slots.empty(); s = (s + 1) & (this->Slots.size() - 1))
+    for (std::size_t s = this->first(key); !this->Slots.empty();
+         s = (s + 1) & (this->Slots.size() - 1))
     {
       if (this->Slots[s].first == key)
       {
@@ -219,9 +224,9 @@ private:
 };
 } // namespace
 
-// What the edits since the last commit need: which vertices they touched (the rings of the others are
-// still exact), the directed edges' triangles once a lookup needs them (then kept current by every
-// edit), the removed vertices, and the surface as committed, to restore if the commit fails.
+// What the edits since the last commit need: which vertices they touched (the rings of the others
+// are still exact), the directed edges' triangles once a lookup needs them (then kept current by
+// every edit), the removed vertices, and the surface as committed, to restore if the commit fails.
 struct SurfaceMesh::EditState
 {
   std::vector<char> touched; // per committed vertex
@@ -260,8 +265,8 @@ SurfaceMesh& SurfaceMesh::operator=(const SurfaceMesh& other)
   return *this;
 }
 
-Status SurfaceMesh::build(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-  SurfaceMesh& mesh)
+Status SurfaceMesh::build(const std::vector<Vec3>& points,
+  const std::vector<std::array<int, 3>>& triangles, SurfaceMesh& mesh)
 {
   if (points.empty() || triangles.empty())
   {
@@ -301,8 +306,8 @@ Status SurfaceMesh::connect()
   this->Ring.resize(corners.size());
   this->RingTriangle.resize(corners.size());
   auto walk = [&](int v) {
-    return walkFan(v, corners.data() + bucket[v], corners.data() + bucket[v + 1], this->Ring.data() + bucket[v],
-      this->RingTriangle.data() + bucket[v]);
+    return walkFan(v, corners.data() + bucket[v], corners.data() + bucket[v + 1],
+      this->Ring.data() + bucket[v], this->RingTriangle.data() + bucket[v]);
   };
   std::atomic<int> firstFailing{ nv };
   parallelFor(0, nv, 1024, [&](Index b, Index e) {
@@ -557,9 +562,9 @@ SurfaceMesh::Renumbering SurfaceMesh::compact(const std::vector<char>& removedVe
 }
 
 // The rings of vertices the edits did not touch are the committed ones, renumbered (the numbering
-// keeps the order, so each still starts at its lowest neighbour, as connect() would start it); only the
-// touched and new vertices' fans are walked again. A commit after a few edits thus costs a pass over the
-// rings, not a sort of every corner.
+// keeps the order, so each still starts at its lowest neighbour, as connect() would start it); only
+// the touched and new vertices' fans are walked again. A commit after a few edits thus costs a pass
+// over the rings, not a sort of every corner.
 Status SurfaceMesh::reconnect(const std::vector<char>& touched, const Renumbering& r)
 {
   const int committed = static_cast<int>(touched.size());
@@ -620,8 +625,8 @@ Status SurfaceMesh::reconnect(const std::vector<char>& touched, const Renumberin
   {
     if (dirty(v))
     {
-      if (Status status = walkFan(v, corners.data() + count[v], corners.data() + count[v + 1], ring.data() + start[v],
-            ringTriangle.data() + start[v]);
+      if (Status status = walkFan(v, corners.data() + count[v], corners.data() + count[v + 1],
+            ring.data() + start[v], ringTriangle.data() + start[v]);
           !status)
       {
         return status;

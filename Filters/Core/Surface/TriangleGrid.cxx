@@ -6,7 +6,8 @@
 namespace shrinkwrap
 {
 
-double TriangleGrid::cellSizeFor(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+double TriangleGrid::cellSizeFor(
+  const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
 {
   Box all;
   double edges = 0, longest = 0;
@@ -21,13 +22,15 @@ double TriangleGrid::cellSizeFor(const std::vector<Vec3>& x, const std::vector<s
     }
   }
   const double nt = static_cast<double>(triangles.size());
-  const double cell = nt > 0 ? std::max({ 2 * edges / (3.0 * nt), longest / 8, 1e-9 * all.diagonal() }) : 0;
+  const double cell =
+    nt > 0 ? std::max({ 2 * edges / (3.0 * nt), longest / 8, 1e-9 * all.diagonal() }) : 0;
   return std::isfinite(cell) && std::isfinite(all.diagonal()) ? cell : 0;
 }
 
 namespace
 {
-std::vector<Box> boxesOf(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+std::vector<Box> boxesOf(
+  const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
 {
   std::vector<Box> boxes(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
@@ -38,7 +41,8 @@ std::vector<Box> boxesOf(const std::vector<Vec3>& x, const std::vector<std::arra
 }
 } // namespace
 
-TriangleGrid::TriangleGrid(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+TriangleGrid::TriangleGrid(
+  const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
   : TriangleGrid(boxesOf(x, triangles), cellSizeFor(x, triangles))
 {
 }
@@ -54,7 +58,8 @@ TriangleGrid::TriangleGrid(std::vector<Box> boxes, double cell)
     all.extend(b);
     largest = std::max(largest, b.size().maxCoeff());
   }
-  if (this->Boxes.empty() || !(cell > 0) || !std::isfinite(cell) || !all.min.allFinite() || !all.max.allFinite())
+  if (this->Boxes.empty() || !(cell > 0) || !std::isfinite(cell) || !all.min.allFinite() ||
+    !all.max.allFinite())
   {
     return;
   }
@@ -66,7 +71,8 @@ TriangleGrid::TriangleGrid(std::vector<Box> boxes, double cell)
   this->build();
 }
 
-// Counting sort of (cell, triangle) into buckets; a triangle whose cells share a bucket is stored once.
+// Counting sort of (cell, triangle) into buckets; a triangle whose cells share a bucket is stored
+// once.
 void TriangleGrid::build()
 {
   const int nt = static_cast<int>(this->Boxes.size());
@@ -128,7 +134,8 @@ TriangleGrid::Range TriangleGrid::rangeOf(const Box& box) const
   {
     // Clamped to 2^21 cells an axis (a query box may reach beyond the surface's).
     const auto cellOf = [&](double v) {
-      return static_cast<std::uint32_t>(std::clamp((v - this->Origin[a]) / this->Cell, 0.0, 2097151.0));
+      return static_cast<std::uint32_t>(
+        std::clamp((v - this->Origin[a]) / this->Cell, 0.0, 2097151.0));
     };
     r[a] = cellOf(box.min[a]);
     r[a + 3] = cellOf(box.max[a]);

@@ -1,7 +1,8 @@
-// Triangle boxes binned in a uniform grid, for the neighbour queries of self-intersection tests. Cells
-// are hashed into buckets stored end to end (counting sort, no comparison sort: the grid is rebuilt
-// every evolution step). A bucket may hold triangles of several cells; queries filter by box overlap and
-// report each triangle once, in the first cell (lowest i, j, k) its range shares with the query's.
+// Triangle boxes binned in a uniform grid, for the neighbour queries of self-intersection tests.
+// Cells are hashed into buckets stored end to end (counting sort, no comparison sort: the grid is
+// rebuilt every evolution step). A bucket may hold triangles of several cells; queries filter by
+// box overlap and report each triangle once, in the first cell (lowest i, j, k) its range shares
+// with the query's.
 #ifndef ShrinkWrap_TriangleGrid_h
 #define ShrinkWrap_TriangleGrid_h
 
@@ -26,7 +27,8 @@ public:
   // Given boxes (e.g. swept over a step) in cells of the given size.
   TriangleGrid(std::vector<Box> boxes, double cell);
 
-  static double cellSizeFor(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
+  static double cellSizeFor(
+    const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
 
   bool empty() const { return this->Items.empty(); }
   double cell() const { return this->Cell; }
@@ -35,15 +37,18 @@ public:
   // f(t) once for every triangle whose box overlaps `box`.
   template <typename F>
   void forEachNear(const Box& box, F&& f) const;
-  // f(s, t) once for every pair of triangles whose boxes overlap; buckets [begin, end) of bucketCount(),
-  // so that threads can share the buckets.
+  // f(s, t) once for every pair of triangles whose boxes overlap; buckets [begin, end) of
+  // bucketCount(), so that threads can share the buckets.
   int bucketCount() const { return static_cast<int>(this->Start.size()) - 1; }
   template <typename F>
   void forEachOverlappingPair(int begin, int end, F&& f) const;
 
   // The cells a box covers (clamped to the grid's 2^21 cells an axis), and a cell's key.
   Range rangeOf(const Box& box) const;
-  static std::uint64_t key(std::uint64_t i, std::uint64_t j, std::uint64_t k) { return (k << 42) | (j << 21) | i; }
+  static std::uint64_t key(std::uint64_t i, std::uint64_t j, std::uint64_t k)
+  {
+    return (k << 42) | (j << 21) | i;
+  }
 
 private:
   void build();
@@ -53,14 +58,15 @@ private:
     return static_cast<std::uint32_t>(h & this->Mask);
   }
   // Whether (i, j, k) is the first cell (lowest on every axis) that both ranges hold.
-  static bool firstSharedIs(const Range& a, const Range& b, std::uint32_t i, std::uint32_t j, std::uint32_t k)
+  static bool firstSharedIs(
+    const Range& a, const Range& b, std::uint32_t i, std::uint32_t j, std::uint32_t k)
   {
     return std::max(a[0], b[0]) == i && std::max(a[1], b[1]) == j && std::max(a[2], b[2]) == k;
   }
 
   std::vector<Box> Boxes;
   std::vector<Range> Ranges;
-  Range Extent{}; // the cells the triangles cover
+  Range Extent{};                   // the cells the triangles cover
   std::vector<std::uint32_t> Start; // bucket b holds Items[Start[b], Start[b + 1])
   std::vector<int> Items;
   std::vector<Box> ItemBoxes; // Boxes[Items[p]], beside the items for the pair loops
@@ -76,8 +82,9 @@ void TriangleGrid::forEachNear(const Box& box, F&& f) const
   {
     return;
   }
-  // Only the cells the triangles cover hold any; a box wider than the triangles have cells (a search
-  // radius far beyond the surface's edge length) is answered by testing every triangle instead.
+  // Only the cells the triangles cover hold any; a box wider than the triangles have cells (a
+  // search radius far beyond the surface's edge length) is answered by testing every triangle
+  // instead.
   Range r = this->rangeOf(box);
   double cells = 1;
   for (int a = 0; a < 3; ++a)
@@ -136,8 +143,8 @@ void TriangleGrid::forEachOverlappingPair(int begin, int end, F&& f) const
         const Range& rs = this->Ranges[s];
         const Range& rt = this->Ranges[t];
         // Tested in the bucket of the first cell both hold, so once.
-        if (this->bucketOf(std::max(rs[0], rt[0]), std::max(rs[1], rt[1]), std::max(rs[2], rt[2])) ==
-          static_cast<std::uint32_t>(b))
+        if (this->bucketOf(std::max(rs[0], rt[0]), std::max(rs[1], rt[1]),
+              std::max(rs[2], rt[2])) == static_cast<std::uint32_t>(b))
         {
           f(s, t);
         }

@@ -21,9 +21,9 @@ class PropertyArray
 public:
   virtual ~PropertyArray() = default;
   virtual std::unique_ptr<PropertyArray> clone() const = 0;
-  virtual void resize(std::size_t n) = 0;                    // new vertices get the default value
-  virtual void appendBetween(int a, int b, double t) = 0;    // (1 - t) value(a) + t value(b)
-  virtual void move(int from, int to) = 0;                   // value(to) = value(from)
+  virtual void resize(std::size_t n) = 0;                 // new vertices get the default value
+  virtual void appendBetween(int a, int b, double t) = 0; // (1 - t) value(a) + t value(b)
+  virtual void move(int from, int to) = 0;                // value(to) = value(from)
 };
 
 template <typename T>

@@ -70,8 +70,7 @@ GridPlacement fieldPlacement(
   const double room = 1 - 2 * cells;
   if (!givenStart && settings.start.shape == StartShape::OffsetSurface && side > 0 && room > 0)
   {
-    placement.offsetFactor =
-      std::min((cells + 0.5 * gapSize / side) / room, kPaperOffsetFactor);
+    placement.offsetFactor = std::min((cells + 0.5 * gapSize / side) / room, kPaperOffsetFactor);
   }
   return placement;
 }
@@ -82,7 +81,8 @@ namespace
 std::optional<double> fieldCell(const WrapSettings& settings, const Box& box, bool givenStart)
 {
   GridLattice lattice;
-  if (!placeGrid(box, fieldPlacement(settings, gapSizeFor(settings, box), box, givenStart), lattice))
+  if (!placeGrid(
+        box, fieldPlacement(settings, gapSizeFor(settings, box), box, givenStart), lattice))
   {
     return std::nullopt;
   }

@@ -1,6 +1,7 @@
-// The sizes a wrap chooses where the user leaves them unset, as rules of the target's box and, for a
-// point cloud, of its spacing and noise. The panel's documentation of Gap Size, Target Edge Length
-// and Resolution states these rules to users (Plugin/ShrinkWrap.xml); a test holds the two together.
+// The sizes a wrap chooses where the user leaves them unset, as rules of the target's box and, for
+// a point cloud, of its spacing and noise. The panel's documentation of Gap Size, Target Edge
+// Length and Resolution states these rules to users (Plugin/ShrinkWrap.xml); a test holds the two
+// together.
 #ifndef ShrinkWrap_AutomaticSizes_h
 #define ShrinkWrap_AutomaticSizes_h
 
@@ -16,7 +17,8 @@ namespace shrinkwrap
 
 // The Gap Size: the given one, else the box's diagonal / WrapSettings::kGapDivisor.
 double gapSizeFor(const WrapSettings& settings, const Box& targetBox);
-// The Target Edge Length L: the given one, else the diagonal / kLengthDivisor; none without Remeshing.
+// The Target Edge Length L: the given one, else the diagonal / kLengthDivisor; none without
+// Remeshing.
 std::optional<double> edgeLengthFor(const WrapSettings& settings, const Box& targetBox);
 
 // Where the field computed for a wrap lies: `settings.resolution` cells along the longest side of a

@@ -69,8 +69,9 @@ Status checkPointsEnclose(const PointList& points)
     return Status::failure("the points lie on a line, so they enclose nothing to wrap (Mesh Signed "
                            "Distance measures the distance to them)");
   if (extent[0] <= tolerance)
-    return Status::failure("the points lie in a plane, so they enclose nothing to wrap (Mesh Signed "
-                           "Distance measures the distance to them)");
+    return Status::failure(
+      "the points lie in a plane, so they enclose nothing to wrap (Mesh Signed "
+      "Distance measures the distance to them)");
   return {};
 }
 

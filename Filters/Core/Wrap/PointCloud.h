@@ -1,5 +1,5 @@
-// A point cloud as a wrap takes it, measured once: its nearest-neighbour spacing (median, and in its
-// sparsest part: PointSpacing), and the surface the points sample (PointSurface), which also
+// A point cloud as a wrap takes it, measured once: its nearest-neighbour spacing (median, and in
+// its sparsest part: PointSpacing), and the surface the points sample (PointSurface), which also
 // measures their noise.
 #ifndef ShrinkWrap_PointCloud_h
 #define ShrinkWrap_PointCloud_h
@@ -17,7 +17,7 @@ struct PointCloud
 {
   std::shared_ptr<const PointSource> points;
   std::shared_ptr<const PointSurface> surface; // none where the spacing is 0
-  double spacing = 0;       // median nearest-neighbour distance, target units
+  double spacing = 0;                          // median nearest-neighbour distance, target units
   double sparseSpacing = 0; // the same in the sparsest part; 0 (none) counts as `spacing`
   double noise() const;     // PointSurface::typicalNoise, 0 without a surface
 };

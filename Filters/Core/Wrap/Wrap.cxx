@@ -21,7 +21,8 @@ Status startOf(const WrapTarget& target, const WrapPlan& plan, const WrapFields&
     plan.start(), plan.settings.evolution.flips, contour, start, specks);
   if (specks > 0)
   {
-    warn(notes, "Left out " + std::to_string(specks) +
+    warn(notes,
+      "Left out " + std::to_string(specks) +
         " piece(s) of the starting surface smaller than two cells of the distance field");
   }
   return status;

@@ -2,8 +2,8 @@
 //   target   makeTarget: the triangles checked, the points checked and measured
 //   plan     planWrap (WrapPlan.h): every size chosen, the field placed
 //   fields   the target's distance, closed over the gaps narrower than the Gap Size (WrapFields.h)
-//   start    the starting surface: the offset surface of the closed target, an icosphere or a given one
-//   session  the evolver on the fields (WrapSession.h), which then computes steps on request
+//   start    the starting surface: the offset surface of the closed target, an icosphere or a given
+//   one session  the evolver on the fields (WrapSession.h), which then computes steps on request
 // startWrap runs the last three from a plan; wrap() runs them all and the steps.
 #ifndef ShrinkWrap_Wrap_h
 #define ShrinkWrap_Wrap_h
@@ -37,8 +37,8 @@ struct WrapResult
   TriangleSoup surface; // the wrap, in the target's units
   WrapPlan plan;
   Notes notes;
-  int steps = 0;        // the step shown: the last, or the last good one after a failure
-  std::string failure;  // why the evolution stopped early, if it did
+  int steps = 0;       // the step shown: the last, or the last good one after a failure
+  std::string failure; // why the evolution stopped early, if it did
 };
 Status wrap(const WrapTarget& target, const WrapSettings& settings, const Contour& contour,
   WrapResult& result, const Progress& progress = {});

@@ -26,8 +26,10 @@ Status givenGrid(const DistanceGrid& given, Notes& notes, DistanceGrid& grid, bo
   isSigned = std::any_of(values.begin(), values.end(), [](float d) { return d < 0; });
   if (!isSigned)
   {
-    warn(notes, std::string("The Distance Field has no inside (no negative value): it is taken as "
-                            "unsigned") + kUnsignedEffect);
+    warn(notes,
+      std::string("The Distance Field has no inside (no negative value): it is taken as "
+                  "unsigned") +
+        kUnsignedEffect);
   }
   grid = given;
   return {};
@@ -40,7 +42,8 @@ Status computedGrid(const TriangleSoup& soup, const WrapPlan& plan, const Progre
   SignedDistanceSettings distance;
   distance.windingNumber = plan.settings.closeHoles;
   SignedDistanceResult result;
-  if (Status made = signedDistanceGrid(soup, plan.lattice, distance, grid, result, progress, &exact);
+  if (Status made =
+        signedDistanceGrid(soup, plan.lattice, distance, grid, result, progress, &exact);
       !made)
   {
     return Status::failure("the target's distance field: " + made.message());
@@ -52,7 +55,8 @@ Status computedGrid(const TriangleSoup& soup, const WrapPlan& plan, const Progre
   isSigned = result.isSigned;
   if (signNeedsWarning(result, true))
   {
-    warn(notes, "The target's distance field is " + signStatus(result, true) +
+    warn(notes,
+      "The target's distance field is " + signStatus(result, true) +
         (result.isSigned ? "" : kUnsignedEffect));
   }
   return {};
@@ -81,8 +85,8 @@ Status meshFields(const WrapTarget& target, const WrapPlan& plan, const Progress
 }
 
 // The unsigned field of the points (and of the polygons beside them, if any).
-Status pointFields(const WrapTarget& target, const WrapPlan& plan, const Progress& progress,
-  WrapFields& fields)
+Status pointFields(
+  const WrapTarget& target, const WrapPlan& plan, const Progress& progress, WrapFields& fields)
 {
   const PointCloud& cloud = *target.points;
   std::shared_ptr<const TriangleSource> polygons;

@@ -6,9 +6,9 @@
 
 #include "Common/Box.h"
 #include "Common/Status.h"
+#include "Common/TriangleSoup.h"
 #include "Distance/DistanceGrid.h"
 #include "Distance/GridLattice.h"
-#include "Common/TriangleSoup.h"
 #include "Wrap/PointCloud.h"
 #include "Wrap/WrapSettings.h"
 

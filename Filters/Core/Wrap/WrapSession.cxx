@@ -17,8 +17,9 @@ Status WrapSession::create(WrapFields fields, const WrapPlan& plan, const Surfac
   {
     if (domain.squaredDistance(p) > 0)
     {
-      return Status::failure("the distance field does not contain the starting surface; enlarge the field "
-                             "(Offset Factor of Mesh Signed Distance) or start from a smaller surface");
+      return Status::failure(
+        "the distance field does not contain the starting surface; enlarge the field "
+        "(Offset Factor of Mesh Signed Distance) or start from a smaller surface");
     }
   }
   std::unique_ptr<WrapSession> s(new WrapSession());
@@ -45,8 +46,9 @@ double WrapSession::scaleFor(int vertexCount) const
   {
     return 1.0;
   }
-  return e.remeshing ? stabilityScaleForEdgeLength(e.timeStep, e.remeshing->targetLength)
-                     : stabilityScale(e.timeStep, this->Radius, static_cast<long long>(vertexCount));
+  return e.remeshing
+    ? stabilityScaleForEdgeLength(e.timeStep, e.remeshing->targetLength)
+    : stabilityScale(e.timeStep, this->Radius, static_cast<long long>(vertexCount));
 }
 
 void WrapSession::cacheCurrent(bool connectivityChanged, bool edited)
@@ -54,9 +56,11 @@ void WrapSession::cacheCurrent(bool connectivityChanged, bool edited)
   const Evolver& e = *this->Evolving;
   if (connectivityChanged || !this->EvolverTriangles)
   {
-    this->EvolverTriangles = std::make_shared<const std::vector<std::array<int, 3>>>(e.mesh().triangles());
+    this->EvolverTriangles =
+      std::make_shared<const std::vector<std::array<int, 3>>>(e.mesh().triangles());
   }
-  this->Cache.store(e.steps(), { e.state(), e.tangentialVelocity(), this->EvolverTriangles, e.scale(), edited });
+  this->Cache.store(
+    e.steps(), { e.state(), e.tangentialVelocity(), this->EvolverTriangles, e.scale(), edited });
 }
 
 bool WrapSession::advanceTo(int k, const Progress& progress)
@@ -73,7 +77,8 @@ bool WrapSession::advanceTo(int k, const Progress& progress)
     // Cached triangles were the evolver's own, so they always form a closed surface again.
     const bool reconnect = base.second.triangles != this->EvolverTriangles;
     if (e.restart(base.second.state, reconnect ? base.second.triangles.get() : nullptr, base.first,
-          base.second.scale) && reconnect)
+          base.second.scale) &&
+      reconnect)
     {
       this->EvolverTriangles = base.second.triangles;
     }

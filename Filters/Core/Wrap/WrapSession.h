@@ -1,6 +1,6 @@
 // One shrink-wrap run (Algorithm 3) as a session the filter keeps while its inputs and properties
-// stay: the fields, the evolver, and the cache of computed steps. Asking for a step computes what is
-// missing from the nearest cached step before it.
+// stay: the fields, the evolver, and the cache of computed steps. Asking for a step computes what
+// is missing from the nearest cached step before it.
 #ifndef ShrinkWrap_WrapSession_h
 #define ShrinkWrap_WrapSession_h
 
@@ -25,9 +25,12 @@ public:
     std::unique_ptr<WrapSession>& session);
 
   // The step shown for a wanted one: after a failure, the last good step at most.
-  int shown(int wanted) const { return this->LastGood >= 0 ? std::min(wanted, this->LastGood) : wanted; }
-  // Computes the missing steps up to shown(k); false when progress asked to stop (the steps computed
-  // stay cached).
+  int shown(int wanted) const
+  {
+    return this->LastGood >= 0 ? std::min(wanted, this->LastGood) : wanted;
+  }
+  // Computes the missing steps up to shown(k); false when progress asked to stop (the steps
+  // computed stay cached).
   bool advanceTo(int k, const Progress& progress = {});
   // The surface of step k (or the nearest cached one before it) in the caller's units.
   struct Surface
@@ -61,7 +64,7 @@ private:
   std::unique_ptr<Evolver> Evolving;
   StepCache Cache;
   StepCache::Triangles EvolverTriangles; // the evolver's current connectivity
-  int LastGood = -1; // set when a step failed: the last step that did not
+  int LastGood = -1;                     // set when a step failed: the last step that did not
   std::string Failure;
   int Computed = 0;
 };

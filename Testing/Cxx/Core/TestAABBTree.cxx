@@ -1,6 +1,6 @@
 // The AABB tree (Algorithm 1, line 1): its closest point equals the brute-force closest point over
-// every triangle, for points near and far, on a soup with noise, duplicates and a degenerate triangle,
-// and within a search radius it finds nothing beyond it.
+// every triangle, for points near and far, on a soup with noise, duplicates and a degenerate
+// triangle, and within a search radius it finds nothing beyond it.
 #include "Distance/AABBTree.h"
 #include "Surface/Icosphere.h"
 #include "TestUtilities.h"
@@ -22,9 +22,9 @@ TriangleSoup noisySoup()
   {
     p += Vec3(u(random), u(random), u(random));
   }
-  soup.triangles.push_back(soup.triangles.front());                // a duplicate
-  soup.triangles.push_back({ 0, 1, 1 });                           // a segment
-  soup.points.push_back(Vec3(3, 0, 0));                            // a lone triangle far off
+  soup.triangles.push_back(soup.triangles.front()); // a duplicate
+  soup.triangles.push_back({ 0, 1, 1 });            // a segment
+  soup.points.push_back(Vec3(3, 0, 0));             // a lone triangle far off
   soup.points.push_back(Vec3(3, 0.5, 0));
   soup.points.push_back(Vec3(3, 0, 0.5));
   const int n = static_cast<int>(soup.points.size());
@@ -47,13 +47,15 @@ void closestPoints()
     const double exact = testing::bruteForceDistance(soup, p);
     worst = std::max(worst, std::abs(std::sqrt(hit.squaredDistance) - exact));
     const auto& t = soup.triangles[hit.triangle];
-    const TrianglePoint again = closestPointOnTriangle(p, soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
+    const TrianglePoint again =
+      closestPointOnTriangle(p, soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
     wrongFeature += (again.point - hit.point).norm() > 1e-12;
   }
   std::printf("AABB tree: 2000 queries, largest difference from brute force %.3g\n", worst);
   SW_CHECK(worst < 1e-12, "the tree's closest point is the brute-force one");
   SW_CHECK(wrongFeature == 0, "the hit's point lies on its triangle");
-  SW_CHECK(tree.bounds().max.x() >= 3 && tree.bounds().min.x() < -0.7, "the root box holds every triangle");
+  SW_CHECK(tree.bounds().max.x() >= 3 && tree.bounds().min.x() < -0.7,
+    "the root box holds every triangle");
 }
 
 void searchRadius()
@@ -63,7 +65,8 @@ void searchRadius()
   const ClosestHit outside = tree.closestPoint(Vec3(3, 0, 0), 1.0); // 2 away, radius 1
   SW_CHECK(outside.triangle < 0, "nothing within the radius: no hit");
   const ClosestHit within = tree.closestPoint(Vec3(3, 0, 0), 4.1);
-  SW_CHECK(within.triangle >= 0 && std::abs(std::sqrt(within.squaredDistance) - 2) < 0.01, "a hit within it");
+  SW_CHECK(within.triangle >= 0 && std::abs(std::sqrt(within.squaredDistance) - 2) < 0.01,
+    "a hit within it");
 }
 } // namespace
 

@@ -23,7 +23,8 @@ void removesSpecks()
   append(icosphere(1, Vec3(-3, 0, 0), 0.06)); // 0.12 across: kept
   const int removed = removeSpecks(s, 0.1);
   SW_CHECK(removed == 1, "one speck removed (" << removed << ")");
-  SW_CHECK(s.points.size() == 162 + 42 && s.triangles.size() == 320 + 80, "the other two pieces kept");
+  SW_CHECK(
+    s.points.size() == 162 + 42 && s.triangles.size() == 320 + 80, "the other two pieces kept");
   SurfaceMesh mesh;
   std::string error;
   SW_CHECK(testing::builds(s.points, s.triangles, mesh, error), "still closed: " << error);

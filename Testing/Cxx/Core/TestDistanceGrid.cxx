@@ -36,16 +36,15 @@ void distanceSampling()
     worst = std::max(worst, std::abs(s.value - (a.dot(x) + 0.7)));
     worstGradient = std::max(worstGradient, (s.gradient - a).norm());
   }
-  SW_CHECK(worst < 1e-5 && worstGradient < 1e-4, "trilinear value and gradient exact for a linear field ("
-      << worst << ", " << worstGradient << ")");
+  SW_CHECK(worst < 1e-5 && worstGradient < 1e-4,
+    "trilinear value and gradient exact for a linear field (" << worst << ", " << worstGradient
+                                                              << ")");
 }
 
 } // namespace
 
 int TestDistanceGrid(int, char*[])
 {
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
-    distanceSampling();
-  });
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] { distanceSampling(); });
   return testing::finish("TestDistanceGrid");
 }

@@ -14,7 +14,8 @@ using namespace shrinkwrap;
 using testing::meshOf;
 
 // Euler characteristic V - E + F of a closed triangle surface: V - F / 2.
-int eulerCharacteristic(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles)
+int eulerCharacteristic(
+  const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles)
 {
   return static_cast<int>(points.size()) - static_cast<int>(triangles.size()) / 2;
 }
@@ -45,7 +46,8 @@ void edgeCollapses()
     const int own = after.vertexProperty<int>("v:label")[i];
     relabelled += own != i && own != i + 1;
   }
-  std::printf("edge collapses: a needle of %.2f degrees, %d collapse(s), smallest angle then %.1f degrees\n",
+  std::printf(
+    "edge collapses: a needle of %.2f degrees, %d collapse(s), smallest angle then %.1f degrees\n",
     smallestAngle(mesh, needle.points).angle * 180 / M_PI, n,
     closed ? smallestAngle(after, points).angle * 180 / M_PI : 0.0);
   SW_CHECK(n == 1 && closed, "one collapse, a closed 2-manifold: " << error);
@@ -55,8 +57,8 @@ void edgeCollapses()
     "vertex data follows the collapse (each vertex keeps its own, renumbered)");
   SW_CHECK(smallestAngle(after, points).angle > 20 * M_PI / 180, "no thin triangle left");
 
-  // A cap: a vertex of valence 3 put into a face, almost on one of its edges. The flat triangle goes
-  // with it.
+  // A cap: a vertex of valence 3 put into a face, almost on one of its edges. The flat triangle
+  // goes with it.
   TriangleSoup cap = icosphere(2);
   const std::array<int, 3> face = cap.triangles[7];
   const Vec3 centre = (cap.points[face[0]] + cap.points[face[1]] + cap.points[face[2]]) / 3;
@@ -68,7 +70,8 @@ void edgeCollapses()
   cap.triangles.push_back({ face[2], face[0], v });
   SurfaceMesh capped = meshOf(cap);
   SW_CHECK(collapseEdges(capped, CollapseSettings()) == 1 && capped.vertexCount() == 162 &&
-      capped.triangleCount() == 320 && testing::builds(capped.points(), capped.triangles(), rebuilt, error),
+      capped.triangleCount() == 320 &&
+      testing::builds(capped.points(), capped.triangles(), rebuilt, error),
     "the cap's vertex is merged away: the icosphere's counts again, closed");
 
   // Where the two ends of an edge share a third neighbour, merging them would pinch the surface:
@@ -81,8 +84,8 @@ void edgeCollapses()
     "no collapse leaves fewer than four vertices or breaks the link condition");
 }
 
-// A needle (a, b) beside a vertex of valence 3 merges that vertex away first, into a where a stands;
-// but where the lone vertex holds a rim (kAnchor), a merges into it there instead.
+// A needle (a, b) beside a vertex of valence 3 merges that vertex away first, into a where a
+// stands; but where the lone vertex holds a rim (kAnchor), a merges into it there instead.
 void loneVertexAnchored()
 {
   TriangleSoup cap = icosphere(2);
@@ -101,12 +104,14 @@ void loneVertexAnchored()
       mesh.addVertexProperty<double>(kAnchor, 0)[v] = 1;
     }
     const int n = collapseEdges(mesh, CollapseSettings());
-    const bool found = std::find(mesh.points().begin(), mesh.points().end(), lone) != mesh.points().end();
-    std::printf("lone vertex %s: %d collapse(s), its position %s\n", anchored ? "anchored" : "free", n,
-      found ? "kept" : "gone");
+    const bool found =
+      std::find(mesh.points().begin(), mesh.points().end(), lone) != mesh.points().end();
+    std::printf("lone vertex %s: %d collapse(s), its position %s\n", anchored ? "anchored" : "free",
+      n, found ? "kept" : "gone");
     return n > 0 && found;
   };
-  SW_CHECK(keeps(true) && !keeps(false), "an anchored lone vertex keeps its place; a free one merges into a");
+  SW_CHECK(keeps(true) && !keeps(false),
+    "an anchored lone vertex keeps its place; a free one merges into a");
 }
 
 } // namespace

@@ -1,9 +1,10 @@
 // Edge flips: thin triangles of a stretched icosphere mended without changing the shape, and in the
-// evolver after every step; the remesher's valence flips leave alone what the angle flips would undo.
-#include "Remeshing/EdgeFlips.h"
+// evolver after every step; the remesher's valence flips leave alone what the angle flips would
+// undo.
 #include "Evolution/Evolver.h"
-#include "Surface/Icosphere.h"
+#include "Remeshing/EdgeFlips.h"
 #include "Remeshing/Remesher.h"
+#include "Surface/Icosphere.h"
 #include "Surface/SurfaceGeometry.h"
 #include "TestUtilities.h"
 
@@ -52,11 +53,14 @@ void edgeFlips()
   const std::vector<std::array<int, 3>> flipped = after.triangles();
   SurfaceMesh rebuilt;
   std::string error;
-  const bool closed = testing::builds(after.points(), flipped, rebuilt, error) && after.points() == x;
-  std::printf("edge flips on a stretched icosphere: %d flips, triangles below 20 degrees %.1f%% -> %.1f%%, "
-              "smallest angle %.1f -> %.1f degrees\n",
+  const bool closed =
+    testing::builds(after.points(), flipped, rebuilt, error) && after.points() == x;
+  std::printf(
+    "edge flips on a stretched icosphere: %d flips, triangles below 20 degrees %.1f%% -> %.1f%%, "
+    "smallest angle %.1f -> %.1f degrees\n",
     flips, 100 * thinShare(mesh.triangles(), x), 100 * thinShare(flipped, x),
-    smallestAngle(mesh, x).angle * 180 / M_PI, closed ? smallestAngle(after, x).angle * 180 / M_PI : 0.0);
+    smallestAngle(mesh, x).angle * 180 / M_PI,
+    closed ? smallestAngle(after, x).angle * 180 / M_PI : 0.0);
   SW_CHECK(flips > 0 && closed, "flips leave a closed 2-manifold: " << error);
   // Each flip raises the smaller angle of its pair, so the smallest angle never drops; the vertices
   // stay, so triangles thin because of the vertex spacing itself stay thin.
@@ -64,9 +68,11 @@ void edgeFlips()
       smallestAngle(after, x).angle >= smallestAngle(mesh, x).angle,
     "flips cut the thin triangles by a quarter or more and never lower the smallest angle");
   const double v0 = enclosedVolume(mesh, x), v1 = enclosedVolume(after, x);
-  SW_CHECK(std::abs(v1 - v0) < 0.02 * v0, "the shape is kept: volume within 2% (" << v0 << " -> " << v1 << ")");
+  SW_CHECK(std::abs(v1 - v0) < 0.02 * v0,
+    "the shape is kept: volume within 2% (" << v0 << " -> " << v1 << ")");
 
-  // No pair of triangles on a curved surface is exactly coplanar: a zero dihedral limit flips nothing.
+  // No pair of triangles on a curved surface is exactly coplanar: a zero dihedral limit flips
+  // nothing.
   settings.maxDihedral = 0;
   SurfaceMesh ridged = mesh;
   SW_CHECK(flipEdges(ridged, settings) == 0, "the dihedral limit keeps ridges");
@@ -90,10 +96,11 @@ void edgeFlips()
     "the evolver flips as it goes (" << total << " flips)");
 }
 
-// The evolver runs the remesher's valence flips and then the angle flips after every step. A valence
-// flip that lowers the pair's smallest angle by the angle pass's gain is flipped back by it, and made
-// again at the next step: on the noisy camel's 200,000 points both passes flipped about 190 edges at
-// every step, the surface standing still. On fixed vertices, rounds of both must die out.
+// The evolver runs the remesher's valence flips and then the angle flips after every step. A
+// valence flip that lowers the pair's smallest angle by the angle pass's gain is flipped back by
+// it, and made again at the next step: on the noisy camel's 200,000 points both passes flipped
+// about 190 edges at every step, the surface standing still. On fixed vertices, rounds of both must
+// die out.
 void noChurn()
 {
   SurfaceMesh mesh = meshOf(stretchedIcosphere());

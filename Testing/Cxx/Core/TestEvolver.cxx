@@ -1,10 +1,10 @@
 // The evolver (besides the shrinking-sphere tables): redistribution does its job, advection onto a
 // target, failures reported, scale covariance, the domain, refused settings, and vertices that land
 // off the target by their edges' sagitta (EvolverSettings::facetFit).
-#include "Evolution/Evolver.h"
-#include "Surface/Icosphere.h"
 #include "Distance/DistanceSource.h"
 #include "Distance/SignedDistance.h"
+#include "Evolution/Evolver.h"
+#include "Surface/Icosphere.h"
 #include "TestUtilities.h"
 
 #include <cmath>
@@ -72,22 +72,27 @@ void redistributionDoesItsJob()
   const Shape none = ellipsoidFlow(Redistribution::None, steps);
   const Shape volume = ellipsoidFlow(Redistribution::Volume, steps);
   const Shape angle = ellipsoidFlow(Redistribution::Angle, steps);
-  std::printf("ellipsoid (1, 0.5, 0.35) from an icosphere of level 3, MCF, %d steps of 1e-4, omega 1:\n", steps);
+  std::printf(
+    "ellipsoid (1, 0.5, 0.35) from an icosphere of level 3, MCF, %d steps of 1e-4, omega 1:\n",
+    steps);
   for (const auto& [name, shape] : { std::make_pair("none", none), std::make_pair("volume", volume),
          std::make_pair("angle", angle) })
   {
-    std::printf("  %-7s max/min co-volume %7.2f, min angle %5.2f deg, mean of triangles' min angles %5.2f deg\n",
+    std::printf("  %-7s max/min co-volume %7.2f, min angle %5.2f deg, mean of triangles' min "
+                "angles %5.2f deg\n",
       name, shape.coVolumeRatio, shape.minAngleDegrees, shape.meanMinAngleDegrees);
   }
   SW_CHECK((none.coVolumeRatio - 1) >= 3 * (volume.coVolumeRatio - 1),
     "volume-based redistribution evens co-volumes at least 3x better than none");
-  SW_CHECK(angle.minAngleDegrees > none.minAngleDegrees && angle.meanMinAngleDegrees > none.meanMinAngleDegrees,
+  SW_CHECK(angle.minAngleDegrees > none.minAngleDegrees &&
+      angle.meanMinAngleDegrees > none.meanMinAngleDegrees,
     "angle-based redistribution (omega_angle = 1) keeps the minimum angles higher");
 }
 
 void advection()
 {
-  // The signed distance of a unit sphere, from the project's own SDF (the lattice the filter writes).
+  // The signed distance of a unit sphere, from the project's own SDF (the lattice the filter
+  // writes).
   const TriangleSoup target = icosphere(5);
   TriangleSoup soup{ target.points, target.triangles };
   GridLattice lattice;
@@ -121,7 +126,8 @@ void advection()
   {
     worst = std::max(worst, std::abs(x.norm() - 1.0));
   }
-  std::printf("advection: radius 2 -> max | |x| - 1 | = %.4f = %.3f h after 200 steps\n", worst, worst / h);
+  std::printf(
+    "advection: radius 2 -> max | |x| - 1 | = %.4f = %.3f h after 200 steps\n", worst, worst / h);
   SW_CHECK(worst <= 0.5 * h, "the sphere settles on the unit sphere within 0.5 h");
 }
 
@@ -146,16 +152,19 @@ void failureIsReported()
   {
     finite = finite && x.allFinite();
   }
-  SW_CHECK(finite && evolver.steps() == r.step - 1, "the last good surface is kept: no NaN escapes");
-  SW_CHECK(reports == r.step - 1, "run() reported progress after each good step and stopped at the failure");
+  SW_CHECK(
+    finite && evolver.steps() == r.step - 1, "the last good surface is kept: no NaN escapes");
+  SW_CHECK(reports == r.step - 1,
+    "run() reported progress after each good step and stopped at the failure");
 }
 
 void scaledEvolution()
 {
-  // Mean curvature flow is scale covariant (y = phi x, t' = phi^2 t): evolving scaled coordinates with
-  // tau' = phi^2 tau gives the same surface, and the caller sees it in its own units. (The redistribution
-  // terms and eta are not covariant: omega_vol (A/N_V - |V_i|) and the angle velocity carry lengths, so
-  // the scale of Section 2.4 changes their effective weights, as the paper's stability study shows.)
+  // Mean curvature flow is scale covariant (y = phi x, t' = phi^2 t): evolving scaled coordinates
+  // with tau' = phi^2 tau gives the same surface, and the caller sees it in its own units. (The
+  // redistribution terms and eta are not covariant: omega_vol (A/N_V - |V_i|) and the angle
+  // velocity carry lengths, so the scale of Section 2.4 changes their effective weights, as the
+  // paper's stability study shows.)
   const SurfaceMesh mesh = meshOf(icosphere(3, Vec3(0.5, -1, 2), 1.5));
   EvolverSettings settings = EvolverSettings::paper();
   settings.C2 = 0;
@@ -192,7 +201,8 @@ void leavingTheDomain()
   domain.extend(Vec3::Constant(0.5));
   Evolver evolver(mesh, settings, nullptr, domain);
   const StepReport r = evolver.step();
-  SW_CHECK(r.failure == Failure::LeftDomain && r.step == 1 && r.where >= 0, "leaving the domain is reported: " << r.message);
+  SW_CHECK(r.failure == Failure::LeftDomain && r.step == 1 && r.where >= 0,
+    "leaving the domain is reported: " << r.message);
 }
 
 void refusedSettings()
@@ -200,13 +210,14 @@ void refusedSettings()
   const TriangleSoup tet{ { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
     { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } } };
   const SurfaceMesh mesh = meshOf(tet);
-  for (const auto& [what, change] : std::vector<std::pair<std::string, std::function<void(EvolverSettings&)>>>{
-         { "tau = 0", [](EvolverSettings& s) { s.timeStep = 0; } },
-         { "tau < 0", [](EvolverSettings& s) { s.timeStep = -0.1; } },
-         { "C1 < 0", [](EvolverSettings& s) { s.C1 = -1; } },
-         { "C < 0", [](EvolverSettings& s) { s.C = -1; } },
-         { "D < 0", [](EvolverSettings& s) { s.D = -1; } },
-         { "omega < 0", [](EvolverSettings& s) { s.omegaAngle = -1; } } })
+  for (const auto& [what, change] :
+    std::vector<std::pair<std::string, std::function<void(EvolverSettings&)>>>{
+      { "tau = 0", [](EvolverSettings& s) { s.timeStep = 0; } },
+      { "tau < 0", [](EvolverSettings& s) { s.timeStep = -0.1; } },
+      { "C1 < 0", [](EvolverSettings& s) { s.C1 = -1; } },
+      { "C < 0", [](EvolverSettings& s) { s.C = -1; } },
+      { "D < 0", [](EvolverSettings& s) { s.D = -1; } },
+      { "omega < 0", [](EvolverSettings& s) { s.omegaAngle = -1; } } })
   {
     EvolverSettings settings;
     change(settings);
@@ -232,7 +243,8 @@ Landing landOnSphere(double facetFit)
   placeGrid(soup.bounds(), GridPlacement{ 1.1, 0.6, 48, 0 }, lattice);
   std::vector<float> values(lattice.nodeCount());
   computeSignedDistance(soup, lattice, {}, values.data());
-  const TargetDistance distance(DistanceGrid(lattice, values), std::make_shared<const TriangleSource>(soup));
+  const TargetDistance distance(
+    DistanceGrid(lattice, values), std::make_shared<const TriangleSource>(soup));
   EvolverSettings settings;
   settings.facetFit = facetFit;
   RemeshSettings remeshing = EvolverSettings::duringEvolution();
@@ -283,14 +295,17 @@ Landing landOnSphere(double facetFit)
 void facetsStraddleTheTarget()
 {
   const Landing plain = landOnSphere(0), fitted = landOnSphere(1);
-  std::printf("facet fit: vertices at %+.5f (without) / %+.5f (with) of the sphere, edge sagitta %.5f / %.5f; "
+  std::printf("facet fit: vertices at %+.5f (without) / %+.5f (with) of the sphere, edge sagitta "
+              "%.5f / %.5f; "
               "mean facet distance %.5f / %.5f\n",
     plain.vertexOffset, fitted.vertexOffset, plain.sagitta, fitted.sagitta, plain.facetDistance,
     fitted.facetDistance);
-  SW_CHECK(std::abs(plain.vertexOffset) < 0.1 * plain.sagitta, "without the fit, the vertices land on the sphere");
+  SW_CHECK(std::abs(plain.vertexOffset) < 0.1 * plain.sagitta,
+    "without the fit, the vertices land on the sphere");
   SW_CHECK(fitted.vertexOffset > 0.5 * fitted.sagitta && fitted.vertexOffset < 1.5 * fitted.sagitta,
     "with it, they land about an edge's sagitta outside");
-  SW_CHECK(fitted.facetDistance < 0.6 * plain.facetDistance, "and the facets lie closer to the sphere");
+  SW_CHECK(
+    fitted.facetDistance < 0.6 * plain.facetDistance, "and the facets lie closer to the sphere");
 }
 
 } // namespace

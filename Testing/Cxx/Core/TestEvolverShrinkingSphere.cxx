@@ -1,10 +1,11 @@
 // The shrinking sphere of Section 4.2: pure mean curvature flow (eps = 1, C = 0) of the unit
-// icosphere, whose exact radius is r(t) = sqrt(1 - 4t) (eq. (6), n = 3), up to t_s = 0.06, on levels
-// s = 1..4 with tau = 0.01 / 4^(s-1). Error norm as the paper's tables were computed:
+// icosphere, whose exact radius is r(t) = sqrt(1 - 4t) (eq. (6), n = 3), up to t_s = 0.06, on
+// levels s = 1..4 with tau = 0.01 / 4^(s-1). Error norm as the paper's tables were computed:
 //   err = sqrt(tau sum_k sum_i (|F_i^k| - r(t_k))^2 |V_i|),
-// with |V_i| the co-volumes that step k computed (from F^(k-1), Algorithm 3 line 4): with them Table 2
-// comes out to four digits; with the co-volumes of F^k level 1 is 2.3% lower. Eq. (11) as printed
-// squares the inner sum; that variant is printed too, and does not give the tables' figures.
+// with |V_i| the co-volumes that step k computed (from F^(k-1), Algorithm 3 line 4): with them
+// Table 2 comes out to four digits; with the co-volumes of F^k level 1 is 2.3% lower. Eq. (11) as
+// printed squares the inner sum; that variant is printed too, and does not give the tables'
+// figures.
 #include "Evolution/Evolver.h"
 #include "Surface/Icosphere.h"
 #include "TestUtilities.h"
@@ -70,16 +71,18 @@ Errors shrinkingSphere(int level, const EvolverSettings& base)
 void table(const std::string& name, const EvolverSettings& settings, const double expected[4],
   const double expectedEoc[3], double tolerance, double eocTolerance, bool eocAtLeast)
 {
-  std::printf("%s\n  N_V    tau          err (tables)  paper        EOC     paper   | eq. (11) as printed\n", name.c_str());
+  std::printf(
+    "%s\n  N_V    tau          err (tables)  paper        EOC     paper   | eq. (11) as printed\n",
+    name.c_str());
   double previous = 0;
   for (int level = 1; level <= 4; ++level)
   {
     const Errors e = shrinkingSphere(level, settings);
     SW_CHECK(e.ok, name << ": the evolution runs to t = 0.06 on level " << level);
     const double eoc = level > 1 ? std::log2(previous / e.tables) : 0;
-    std::printf("  %-6lld %-12.4e %-13.4e %-12.4e %-7.4f %-7.4f | %.4e\n", icosphereVertexCount(level),
-      0.01 / std::pow(4.0, level - 1), e.tables, expected[level - 1], eoc, level > 1 ? expectedEoc[level - 2] : 0.0,
-      e.printed);
+    std::printf("  %-6lld %-12.4e %-13.4e %-12.4e %-7.4f %-7.4f | %.4e\n",
+      icosphereVertexCount(level), 0.01 / std::pow(4.0, level - 1), e.tables, expected[level - 1],
+      eoc, level > 1 ? expectedEoc[level - 2] : 0.0, e.printed);
     SW_CHECK(std::abs(e.tables - expected[level - 1]) <= tolerance * expected[level - 1],
       name << ": err within " << 100 * tolerance << "% of the table on level " << level);
     if (level > 1)
@@ -106,11 +109,12 @@ int TestEvolverShrinkingSphere(int, char*[])
     EvolverSettings volume = EvolverSettings::paper();
     volume.redistribution = Redistribution::Volume;
     volume.omegaVolume = 1.0;
-    // Level 1 cannot reproduce the paper's 2.845e-3: every vertex of the level-1 icosphere is the centre
-    // of a rotation of the mesh onto itself (5-fold at the 12 icosahedron vertices, 2-fold at the 30
-    // edge midpoints), and a tangent vector that such a rotation leaves unchanged is zero. So v_T = 0
-    // there for any scheme that respects the symmetry, and err equals Table 2's; the paper's code must
-    // break the symmetry. Checked directly, then levels 2-4 are held to the table.
+    // Level 1 cannot reproduce the paper's 2.845e-3: every vertex of the level-1 icosphere is the
+    // centre of a rotation of the mesh onto itself (5-fold at the 12 icosahedron vertices, 2-fold
+    // at the 30 edge midpoints), and a tangent vector that such a rotation leaves unchanged is
+    // zero. So v_T = 0 there for any scheme that respects the symmetry, and err equals Table 2's;
+    // the paper's code must break the symmetry. Checked directly, then levels 2-4 are held to the
+    // table.
     {
       const TriangleSoup sphere = icosphere(1);
       SurfaceMesh mesh;
@@ -130,7 +134,8 @@ int TestEvolverShrinkingSphere(int, char*[])
       std::printf("Table 3, level 1: max |v_T| = %.2e (zero by symmetry)\n", largest);
       SW_CHECK(largest < 1e-10, "v_T vanishes on the symmetric level-1 icosphere");
     }
-    const double table3[4] = { 3.067e-3 /* Table 2's; the paper prints 2.845e-3 */, 8.598e-4, 2.105e-4, 5.073e-5 };
+    const double table3[4] = { 3.067e-3 /* Table 2's; the paper prints 2.845e-3 */, 8.598e-4,
+      2.105e-4, 5.073e-5 };
     const double eoc3[3] = { 1.7, 2.0, 2.0 };
     table("Table 3 (volume-based, omega_vol = 1)", volume, table3, eoc3, 0.05, 0, true);
     // The paper's code left out the division by |V_i|; shown for comparison, not held to the table.
@@ -138,11 +143,12 @@ int TestEvolverShrinkingSphere(int, char*[])
     std::printf("  (without the 1/|V_i| factor, as the paper's code:)\n");
     for (int level = 1; level <= 4; ++level)
     {
-      std::printf("  N_V %-6lld err %.4e\n", icosphereVertexCount(level), shrinkingSphere(level, volume).tables);
+      std::printf("  N_V %-6lld err %.4e\n", icosphereVertexCount(level),
+        shrinkingSphere(level, volume).tables);
     }
 
-    // Table 4: angle-based redistribution, omega_angle = 1, really switched on (the paper's code had it
-    // off in this test, so its Table 4 equals Table 2 to three digits).
+    // Table 4: angle-based redistribution, omega_angle = 1, really switched on (the paper's code
+    // had it off in this test, so its Table 4 equals Table 2 to three digits).
     EvolverSettings angle = EvolverSettings::paper();
     angle.redistribution = Redistribution::Angle;
     angle.omegaAngle = 1.0;

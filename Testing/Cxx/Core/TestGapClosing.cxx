@@ -1,12 +1,13 @@
-// The distance to the target's closing by a ball (GapClosing.h), against the exact closing. Two balls
-// of radius 1 with a slot of 0.3 between them, closed by a ball of radius 0.6: the dilation is two
-// overlapping balls of radius 1.6, and inside it the closing's distance is 0.6 - e, e the distance to
-// the nearest point outside both (on one sphere outside the other, or on the circle where they meet);
-// outside it, the distance to the nearer ball. The closing bridges the slot. Points sampling a sphere:
-// their dilation is a shell, whose cavity joins it only when asked (a point set's closing).
-#include "Evolution/GapClosing.h"
+// The distance to the target's closing by a ball (GapClosing.h), against the exact closing. Two
+// balls of radius 1 with a slot of 0.3 between them, closed by a ball of radius 0.6: the dilation
+// is two overlapping balls of radius 1.6, and inside it the closing's distance is 0.6 - e, e the
+// distance to the nearest point outside both (on one sphere outside the other, or on the circle
+// where they meet); outside it, the distance to the nearer ball. The closing bridges the slot.
+// Points sampling a sphere: their dilation is a shell, whose cavity joins it only when asked (a
+// point set's closing).
 #include "Distance/DistanceSource.h"
 #include "Distance/PointSource.h"
+#include "Evolution/GapClosing.h"
 #include "TestUtilities.h"
 
 #include <vtkSMPTools.h>
@@ -48,7 +49,10 @@ public:
     b.extend(Vec3(C + R, R, R));
     return b;
   }
-  bool outline(const GridLattice&, const Progress&, std::vector<std::int64_t>&) const override { return false; }
+  bool outline(const GridLattice&, const Progress&, std::vector<std::int64_t>&) const override
+  {
+    return false;
+  }
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override
   {
     const Vec3 centre(x[0] < 0 ? -C : C, 0, 0);
@@ -74,7 +78,8 @@ double outsideBothBalls(const Vec3& x, double c, double r)
   double e = std::numeric_limits<double>::infinity();
   for (const auto& [centre, other] : { std::pair{ a, b }, std::pair{ b, a } })
   {
-    const Vec3 away = (x - centre).norm() > 0 ? Vec3((x - centre).normalized()) : Vec3((centre - other).normalized());
+    const Vec3 away = (x - centre).norm() > 0 ? Vec3((x - centre).normalized())
+                                              : Vec3((centre - other).normalized());
     const Vec3 y = centre + r * away;
     if ((y - other).norm() >= r)
     {
@@ -82,7 +87,8 @@ double outsideBothBalls(const Vec3& x, double c, double r)
     }
   }
   const double rho = std::sqrt(r * r - c * c);
-  return std::min(e, std::hypot(x[0], std::hypot(x[1], x[2]) - rho)); // the circle in the plane x = 0
+  return std::min(
+    e, std::hypot(x[0], std::hypot(x[1], x[2]) - rho)); // the circle in the plane x = 0
 }
 
 void bridgesTheSlotBetweenTwoBalls()
@@ -99,7 +105,8 @@ void bridgesTheSlotBetweenTwoBalls()
   for (const bool exact : { true, false })
   {
     DistanceGrid closed;
-    SW_CHECK(closingField(field, radius, exact ? &balls : nullptr, false, closed), "the closing of two balls");
+    SW_CHECK(closingField(field, radius, exact ? &balls : nullptr, false, closed),
+      "the closing of two balls");
     double worst = 0, mean = 0, middle = 0;
     long long inside = 0, above = 0;
     for (std::int64_t n = 0; n < lattice.nodeCount(); ++n)
@@ -108,7 +115,8 @@ void bridgesTheSlotBetweenTwoBalls()
       const double d = balls.distance(x);
       if (d < 0)
       {
-        above += closed.values()[n] > d + 1e-6; // inside the target only a bound: the wrap never goes there
+        above += closed.values()[n] >
+          d + 1e-6; // inside the target only a bound: the wrap never goes there
         continue;
       }
       const double expected = d < radius ? radius - outsideBothBalls(x, c, R + radius) : d;
@@ -125,14 +133,17 @@ void bridgesTheSlotBetweenTwoBalls()
       }
     }
     mean /= static_cast<double>(inside);
-    const double bridged = radius - std::sqrt((R + radius) * (R + radius) - c * c); // the circle's radius
-    std::cout << "two balls, sites " << (exact ? "from the balls" : "down the grid's gradient") << ", outside them: largest error "
-              << worst / h << " h, mean inside the dilation " << mean / h << " h; the slot's middle at " << middle
-              << " (exactly " << bridged << ")" << std::endl;
-    // Measured outside the balls: from the balls, largest 0.06 h, mean 5e-5 h; down the gradient (no
-    // crease points), largest 0.55 h, mean 0.016 h, the middle 0.07 h off.
+    const double bridged =
+      radius - std::sqrt((R + radius) * (R + radius) - c * c); // the circle's radius
+    std::cout << "two balls, sites " << (exact ? "from the balls" : "down the grid's gradient")
+              << ", outside them: largest error " << worst / h << " h, mean inside the dilation "
+              << mean / h << " h; the slot's middle at " << middle << " (exactly " << bridged << ")"
+              << std::endl;
+    // Measured outside the balls: from the balls, largest 0.06 h, mean 5e-5 h; down the gradient
+    // (no crease points), largest 0.55 h, mean 0.016 h, the middle 0.07 h off.
     SW_CHECK(above == 0, "inside the balls the closing's distance is at most theirs");
-    SW_CHECK(middle < 0 && std::abs(middle - bridged) < (exact ? 0.01 : 0.1) * h, "the closing spans the slot, 0.3 wide");
+    SW_CHECK(middle < 0 && std::abs(middle - bridged) < (exact ? 0.01 : 0.1) * h,
+      "the closing spans the slot, 0.3 wide");
     SW_CHECK(worst < (exact ? 0.1 : 0.75) * h && mean < (exact ? 0.001 : 0.03) * h,
       "the closing's distance within a fraction of a cell");
   }
@@ -140,12 +151,14 @@ void bridgesTheSlotBetweenTwoBalls()
 
 void fillsTheCavityOfSampledSphere()
 {
-  // About 2,000 points on the unit sphere (Fibonacci), 0.08 apart; a ball of radius 0.15 closes them.
+  // About 2,000 points on the unit sphere (Fibonacci), 0.08 apart; a ball of radius 0.15 closes
+  // them.
   std::vector<Vec3> points;
   const int count = 2000;
   for (int k = 0; k < count; ++k)
   {
-    const double z = 1 - (2 * k + 1.0) / count, ring = std::sqrt(1 - z * z), angle = 2.399963229728653 * k;
+    const double z = 1 - (2 * k + 1.0) / count, ring = std::sqrt(1 - z * z),
+                 angle = 2.399963229728653 * k;
     points.emplace_back(ring * std::cos(angle), ring * std::sin(angle), z);
   }
   const PointSource source(points);
@@ -164,18 +177,21 @@ void fillsTheCavityOfSampledSphere()
     DistanceGrid closed;
     SW_CHECK(closingField(field, 0.15, &source, fill, closed), "the closing of a sampled sphere");
     const double atCentre = closed.values()[centre];
-    std::cout << "sampled sphere, cavity " << (fill ? "filled" : "kept") << ": the centre at " << atCentre << std::endl;
-    // Filled: the closing is the unit ball (within the points' bumps); kept: the centre is 1 from a point.
+    std::cout << "sampled sphere, cavity " << (fill ? "filled" : "kept") << ": the centre at "
+              << atCentre << std::endl;
+    // Filled: the closing is the unit ball (within the points' bumps); kept: the centre is 1 from a
+    // point.
     SW_CHECK(fill ? std::abs(atCentre + 1) < 0.02 : std::abs(atCentre - 1) < 1e-3,
-      (fill ? "the filled cavity lies inside the closing" : "the kept cavity lies outside the closing"));
+      (fill ? "the filled cavity lies inside the closing"
+            : "the kept cavity lies outside the closing"));
   }
 }
 
-// A shell (the field |1 - |x||, its dilation by 0.15 a hollow ball) with a tunnel of nodes outside the
-// dilation through it, along each axis in turn: a cavity the border reaches through face neighbours
-// is not filled. A tunnel whose nodes meet only across a cell's diagonal is no face path: the cavity
-// is filled. (The fill joins runs of nodes along x across neighbouring rows: tunnels along y and z
-// cross rows, one along x stays in a row.)
+// A shell (the field |1 - |x||, its dilation by 0.15 a hollow ball) with a tunnel of nodes outside
+// the dilation through it, along each axis in turn: a cavity the border reaches through face
+// neighbours is not filled. A tunnel whose nodes meet only across a cell's diagonal is no face
+// path: the cavity is filled. (The fill joins runs of nodes along x across neighbouring rows:
+// tunnels along y and z cross rows, one along x stays in a row.)
 void fillsOnlyCavitiesTheBorderCannotReach()
 {
   const GridLattice lattice = cube(1.5, 0.05);
@@ -189,7 +205,14 @@ void fillsOnlyCavitiesTheBorderCannotReach()
     centre = x.norm() < 1e-9 ? n : centre;
   }
   const int middle = lattice.dims[0] / 2;
-  enum Tunnel { None, AlongX, AlongY, AlongZ, Diagonal };
+  enum Tunnel
+  {
+    None,
+    AlongX,
+    AlongY,
+    AlongZ,
+    Diagonal
+  };
   for (const Tunnel tunnel : { None, AlongX, AlongY, AlongZ, Diagonal })
   {
     std::vector<float> values = shell;
@@ -214,7 +237,8 @@ void fillsOnlyCavitiesTheBorderCannotReach()
       "the closing of a shell with a tunnel");
     const double atCentre = closed.values()[centre];
     const bool open = tunnel == AlongX || tunnel == AlongY || tunnel == AlongZ;
-    std::cout << "shell, tunnel " << static_cast<int>(tunnel) << ": the centre at " << atCentre << std::endl;
+    std::cout << "shell, tunnel " << static_cast<int>(tunnel) << ": the centre at " << atCentre
+              << std::endl;
     SW_CHECK(open ? atCentre == 1.0 : atCentre < 0,
       (open ? "a cavity that a face path joins to the border stays outside the closing"
             : "a cavity without a face path to the border is filled"));

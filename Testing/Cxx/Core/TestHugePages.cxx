@@ -1,8 +1,8 @@
 // LargeVector (HugePages.h): buffers from a quarter of a huge page up come from their own mapping,
 // aligned to a huge page, where mapsLargeBuffers(); smaller ones, and all elsewhere, from the heap.
 // Growing across that size, shrinking back, copying and moving keep every value (a buffer freed the
-// wrong way would crash here, and under AddressSanitizer would be reported); sizes no mapping can hold
-// throw std::bad_alloc.
+// wrong way would crash here, and under AddressSanitizer would be reported); sizes no mapping can
+// hold throw std::bad_alloc.
 #include "Common/HugePages.h"
 #include "TestUtilities.h"
 
@@ -47,7 +47,8 @@ int TestHugePages(int, char*[])
 
   v.resize(large - 1);
   v.shrink_to_fit(); // back to the heap
-  SW_CHECK(v.size() == large - 1 && holdsIndices(v), "shrinking below the threshold keeps every value");
+  SW_CHECK(
+    v.size() == large - 1 && holdsIndices(v), "shrinking below the threshold keeps every value");
 
   LargeVector<std::int64_t> copy = v;
   copy.resize(2 * large);
@@ -67,7 +68,8 @@ int TestHugePages(int, char*[])
 
   // Sizes no mapping can hold are refused, not rounded into a small one: one whose rounding up to
   // huge pages would wrap, one beyond the address space.
-  for (const std::size_t bytes : { std::numeric_limits<std::size_t>::max() - 100, std::size_t(1) << 50 })
+  for (const std::size_t bytes :
+    { std::numeric_limits<std::size_t>::max() - 100, std::size_t(1) << 50 })
   {
     bool refused = false;
     try

@@ -1,9 +1,9 @@
-// The point queries behind a wrap onto points (issue #13) against brute force: the k-d tree's nearest
-// point (with and without a search radius, and the nearest at another position, which the spacing
-// uses) on clouds in a cube, on a sphere, on a line, in a plane, all at one position, with duplicates
-// and with NaN points (left out), and on a few points (the tree built without its halves apart); the
-// hash grid's points within a radius (the fitted surface's neighbourhoods); medianNeighbourDistance,
-// duplicates aside; and the spacing of a cloud's sparsest part.
+// The point queries behind a wrap onto points (issue #13) against brute force: the k-d tree's
+// nearest point (with and without a search radius, and the nearest at another position, which the
+// spacing uses) on clouds in a cube, on a sphere, on a line, in a plane, all at one position, with
+// duplicates and with NaN points (left out), and on a few points (the tree built without its halves
+// apart); the hash grid's points within a radius (the fitted surface's neighbourhoods);
+// medianNeighbourDistance, duplicates aside; and the spacing of a cloud's sparsest part.
 #include "Distance/PointGrid.h"
 #include "Distance/PointSource.h"
 #include "Distance/PointTree.h"
@@ -47,7 +47,8 @@ void nearestAgrees(const std::string& name, const std::vector<Vec3>& points, uns
   for (int q = 0; q < 400; ++q)
   {
     // Queries anywhere, and at the points themselves (the spacing's queries).
-    const Vec3 x = q % 2 == 0 || points.empty() ? Vec3(u(rng), u(rng), u(rng)) : points[q % points.size()];
+    const Vec3 x =
+      q % 2 == 0 || points.empty() ? Vec3(u(rng), u(rng), u(rng)) : points[q % points.size()];
     for (const double radius : { kInfinity, 0.3 })
     {
       for (const bool apart : { false, true })
@@ -59,12 +60,14 @@ void nearestAgrees(const std::string& name, const std::vector<Vec3>& points, uns
         found += !none;
         // The hit's point is at the exact distance (ties may pick another point at it).
         wrong += none ? hit.id >= 0
-                      : hit.id < 0 || hit.squaredDistance != exact || (points[hit.id] - x).squaredNorm() != exact;
+                      : hit.id < 0 || hit.squaredDistance != exact ||
+            (points[hit.id] - x).squaredNorm() != exact;
       }
     }
   }
-  SW_CHECK(wrong == 0, "PointTree, " << name << ": the nearest point equals brute force (" << wrong << " wrong of 1600, "
-                                     << found << " found)");
+  SW_CHECK(wrong == 0,
+    "PointTree, " << name << ": the nearest point equals brute force (" << wrong
+                  << " wrong of 1600, " << found << " found)");
 }
 
 std::vector<Vec3> randomPoints(int n, unsigned seed, const Vec3& scale)
@@ -100,7 +103,9 @@ void withinAgrees()
     std::sort(got.begin(), got.end());
     wrong += got != exact;
   }
-  SW_CHECK(wrong == 0, "PointGrid: the points within a radius equal brute force (" << wrong << " of 200 queries wrong)");
+  SW_CHECK(wrong == 0,
+    "PointGrid: the points within a radius equal brute force (" << wrong
+                                                                << " of 200 queries wrong)");
 }
 
 void medianAgrees()
@@ -113,22 +118,22 @@ void medianAgrees()
   }
   std::nth_element(exact.begin(), exact.begin() + exact.size() / 2, exact.end());
   const double median = medianNeighbourDistance(points);
-  SW_CHECK(median == exact[exact.size() / 2], "medianNeighbourDistance " << median << " equals brute force's "
-                                                                          << exact[exact.size() / 2]);
+  SW_CHECK(median == exact[exact.size() / 2],
+    "medianNeighbourDistance " << median << " equals brute force's " << exact[exact.size() / 2]);
   // Every point twice (the vertices of an unwelded soup): the same spacing, not 0.
   std::vector<Vec3> twice = points;
   twice.insert(twice.end(), points.begin(), points.end());
-  SW_CHECK(medianNeighbourDistance(twice) == median, "medianNeighbourDistance ignores duplicates ("
-                                                        << medianNeighbourDistance(twice) << ")");
+  SW_CHECK(medianNeighbourDistance(twice) == median,
+    "medianNeighbourDistance ignores duplicates (" << medianNeighbourDistance(twice) << ")");
   SW_CHECK(medianNeighbourDistance(std::vector<Vec3>(50, Vec3(1, 2, 3))) == 0,
     "medianNeighbourDistance of points all at one position is 0");
 }
 
 // PointSpacing's sparse spacing: the median where the points are uniform, more where their density
-// falls across them (a scan's far side). 20,000 points on a unit sphere, uniform and thinned 2, 4 and
-// 8 times from one pole to the other (a sample kept with a probability falling linearly along z). The
-// Gap Size follows the sparse spacing; that the wrap then stays out is TestPointClouds.py's. Strays
-// strewn around the points do not widen it.
+// falls across them (a scan's far side). 20,000 points on a unit sphere, uniform and thinned 2, 4
+// and 8 times from one pole to the other (a sample kept with a probability falling linearly along
+// z). The Gap Size follows the sparse spacing; that the wrap then stays out is
+// TestPointClouds.py's. Strays strewn around the points do not widen it.
 void sparseSpacing()
 {
   std::mt19937 random(17);
@@ -138,13 +143,14 @@ void sparseSpacing()
     std::vector<Vec3> points;
     for (const Vec3& p : testing::spherePoints(200000, 0, 19))
     {
-      if (points.size() < 20000 && uniform(random) < 1 / ratio + (1 - 1 / ratio) * 0.5 * (1 + p.z()))
+      if (points.size() < 20000 &&
+        uniform(random) < 1 / ratio + (1 - 1 / ratio) * 0.5 * (1 + p.z()))
         points.push_back(p);
     }
     const PointSpacing spacing = PointSource(points).spacing();
     const double factor = spacing.sparse / spacing.median;
-    std::cout << "sphere thinned " << ratio << " times to one side: sparse spacing " << factor << " medians"
-              << std::endl;
+    std::cout << "sphere thinned " << ratio << " times to one side: sparse spacing " << factor
+              << " medians" << std::endl;
     // The sparsest pole's spacing is sqrt(ratio) times the densest's, the median between (measured
     // 1.14, 1.54, 2.02: the smoothing lags the sparsest end at 2).
     const double least = ratio == 1 ? 1 : (ratio == 2 ? 1.05 : (ratio == 4 ? 1.3 : 1.6));
@@ -152,16 +158,18 @@ void sparseSpacing()
       "sphere thinned " << ratio << " times: sparse spacing " << factor << " median spacings ("
                         << (ratio == 1 ? "exactly " : "over ") << least << ")");
   }
-  // Strays (a scan's outliers) have no local spacing: 3% of the points strewn through the sphere's box
-  // leave it at the median (without that rule their own distances took it to 11.2 medians).
+  // Strays (a scan's outliers) have no local spacing: 3% of the points strewn through the sphere's
+  // box leave it at the median (without that rule their own distances took it to 11.2 medians).
   std::vector<Vec3> strewn = testing::spherePoints(20000, 0, 23);
   for (int k = 0; k < 600; ++k)
   {
-    strewn.push_back(Vec3(2 * uniform(random) - 1, 2 * uniform(random) - 1, 2 * uniform(random) - 1));
+    strewn.push_back(
+      Vec3(2 * uniform(random) - 1, 2 * uniform(random) - 1, 2 * uniform(random) - 1));
   }
   const PointSpacing spacing = PointSource(strewn).spacing();
-  SW_CHECK(spacing.sparse < 1.05 * spacing.median, "a sphere's 20,000 points and 600 strays in its box: sparse spacing "
-                                                     << spacing.sparse / spacing.median << " medians (under 1.05)");
+  SW_CHECK(spacing.sparse < 1.05 * spacing.median,
+    "a sphere's 20,000 points and 600 strays in its box: sparse spacing "
+      << spacing.sparse / spacing.median << " medians (under 1.05)");
 }
 } // namespace
 
@@ -189,7 +197,8 @@ int TestPointTree(int, char*[])
   dirty[20] = Vec3(0, kInfinity, 0);
   nearestAgrees("duplicates and NaN", dirty, 16);
   nearestAgrees("no points", {}, 17);
-  nearestAgrees("a few points (one subtree, no split built apart)", randomPoints(20, 4, Vec3(1, 1, 1)), 18);
+  nearestAgrees(
+    "a few points (one subtree, no split built apart)", randomPoints(20, 4, Vec3(1, 1, 1)), 18);
   withinAgrees();
   medianAgrees();
   sparseSpacing();

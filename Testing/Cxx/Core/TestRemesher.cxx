@@ -1,9 +1,9 @@
-// Isotropic remeshing (groundwork of issue #10): a coarse sphere refined and a fine one coarsened to
-// the target edge length, closed, same genus, the shape kept, valences near 6, good angles; vertex data
-// follows the edits; anchored vertices stay in place through collapses; adaptive sizes from the
-// curvature; refused settings.
-#include "Surface/Icosphere.h"
+// Isotropic remeshing (groundwork of issue #10): a coarse sphere refined and a fine one coarsened
+// to the target edge length, closed, same genus, the shape kept, valences near 6, good angles;
+// vertex data follows the edits; anchored vertices stay in place through collapses; adaptive sizes
+// from the curvature; refused settings.
 #include "Remeshing/Remesher.h"
+#include "Surface/Icosphere.h"
 #include "Surface/SurfaceGeometry.h"
 #include "TestUtilities.h"
 
@@ -41,7 +41,8 @@ Spread spreadOf(const SurfaceMesh& mesh, double L)
   }
   for (const auto& t : mesh.triangles())
   {
-    s.thin += smallestAngle(mesh.points()[t[0]], mesh.points()[t[1]], mesh.points()[t[2]]) < 20 * M_PI / 180;
+    s.thin += smallestAngle(mesh.points()[t[0]], mesh.points()[t[1]], mesh.points()[t[2]]) <
+      20 * M_PI / 180;
   }
   s.withinBand /= edges;
   s.valence6 /= mesh.vertexCount();
@@ -61,20 +62,22 @@ void towards(int level, double L, const char* what)
   std::string error;
   const bool closed = testing::builds(mesh.points(), mesh.triangles(), rebuilt, error);
   const double change = std::abs(enclosedVolume(mesh, mesh.points()) - volume) / volume;
-  std::printf("%s: level %d to L = %.3f: %d splits, %d collapses, %d flips -> %d vertices; edges in "
-              "[4/5, 4/3] L %.1f%%, valence 5-7 %.1f%%, angles < 20 deg %.1f%%, volume %+.2f%%\n",
-    what, level, L, r.splits, r.collapses, r.flips, mesh.vertexCount(), 100 * s.withinBand, 100 * s.valence6,
-    100 * s.thin, 100 * change);
+  std::printf(
+    "%s: level %d to L = %.3f: %d splits, %d collapses, %d flips -> %d vertices; edges in "
+    "[4/5, 4/3] L %.1f%%, valence 5-7 %.1f%%, angles < 20 deg %.1f%%, volume %+.2f%%\n",
+    what, level, L, r.splits, r.collapses, r.flips, mesh.vertexCount(), 100 * s.withinBand,
+    100 * s.valence6, 100 * s.thin, 100 * change);
   SW_CHECK(r.status && closed, what << ": closed 2-manifold: " << error);
   SW_CHECK(mesh.vertexCount() - mesh.triangleCount() / 2 == 2, what << ": genus 0 kept");
-  SW_CHECK(s.withinBand > 0.9 && s.valence6 > 0.9 && s.thin < 0.05, what << ": edges near L, valences near 6, few thin triangles");
+  SW_CHECK(s.withinBand > 0.9 && s.valence6 > 0.9 && s.thin < 0.05,
+    what << ": edges near L, valences near 6, few thin triangles");
   SW_CHECK(change < 0.03, what << ": the volume within 3%");
 }
 
 void dataFollows()
 {
-  // Vertex data equal to the positions stays equal through splits (interpolated both) and flips, when
-  // no relaxation moves the positions alone; a collapse keeps the surviving vertex's data.
+  // Vertex data equal to the positions stays equal through splits (interpolated both) and flips,
+  // when no relaxation moves the positions alone; a collapse keeps the surviving vertex's data.
   SurfaceMesh mesh = testing::meshOf(icosphere(2));
   const VertexProperty<Vec3> copy = mesh.addVertexProperty<Vec3>("v:copy", Vec3::Zero());
   copy.values() = mesh.points();
@@ -89,7 +92,8 @@ void dataFollows()
   {
     worst = std::max(worst, (mesh.vertexProperty<Vec3>("v:copy")[i] - mesh.points()[i]).norm());
   }
-  SW_CHECK(r.splits > 0 && r.flips > 0 && worst < 1e-12, "vertex data follows splits and flips (" << worst << ")");
+  SW_CHECK(r.splits > 0 && r.flips > 0 && worst < 1e-12,
+    "vertex data follows splits and flips (" << worst << ")");
   SurfaceMesh fine = testing::meshOf(icosphere(3));
   const VertexProperty<int> label = fine.addVertexProperty<int>("v:label", -1);
   for (int i = 0; i < fine.vertexCount(); ++i)
@@ -100,9 +104,11 @@ void dataFollows()
   bool own = true; // every survivor's label is an old vertex's, in increasing order
   for (int i = 1; i < fine.vertexCount(); ++i)
   {
-    own = own && fine.vertexProperty<int>("v:label")[i] > fine.vertexProperty<int>("v:label")[i - 1];
+    own =
+      own && fine.vertexProperty<int>("v:label")[i] > fine.vertexProperty<int>("v:label")[i - 1];
   }
-  SW_CHECK(collapses > 0 && own && fine.vertexCount() == 642 - collapses, "collapses keep the survivors' data, in order");
+  SW_CHECK(collapses > 0 && own && fine.vertexCount() == 642 - collapses,
+    "collapses keep the survivors' data, in order");
 }
 
 // Collapses merge into an anchored end at its position (kAnchor, e.g. a vertex holding a target's
@@ -140,14 +146,15 @@ void anchorsStay()
   const int without = collapseShortEdges(plain, 0.2, 1.0, CollapseSettings());
   const int n = static_cast<int>(anchored.size());
   SW_CHECK(withAnchors > 0 && kept(fixed) == n && kept(plain) < n,
-    "anchored vertices keep their places through collapses (" << kept(fixed) << " of " << n << "; without anchors "
-                                                               << kept(plain) << ", " << without << " collapses)");
+    "anchored vertices keep their places through collapses ("
+      << kept(fixed) << " of " << n << "; without anchors " << kept(plain) << ", " << without
+      << " collapses)");
 }
 
 // Passes after the first look only at the edges the last pass found short or moved an end of, and
-// splits only at the new vertices: yet a fresh pass over every edge afterwards finds nothing left, on
-// a level-5 sphere coarsened to twice its edge length (a dozen collapse passes, as a contour start
-// takes) and on a level-0 one refined, whose splits take several passes.
+// splits only at the new vertices: yet a fresh pass over every edge afterwards finds nothing left,
+// on a level-5 sphere coarsened to twice its edge length (a dozen collapse passes, as a contour
+// start takes) and on a level-0 one refined, whose splits take several passes.
 void laterPassesMissNothing()
 {
   SurfaceMesh fine = testing::meshOf(icosphere(5));
@@ -157,15 +164,17 @@ void laterPassesMissNothing()
   SurfaceMesh coarse = testing::meshOf(icosphere(0));
   const int splits = splitLongEdges(coarse, 0.1);
   const int more = splitLongEdges(coarse, 0.1);
-  std::printf("later passes: %d collapses (10242 -> %d vertices), then %d; %d splits, then %d\n", collapses,
-    fine.vertexCount(), again, splits, more);
-  SW_CHECK(collapses > 5000 && again == 0, "a fresh collapse pass after the incremental ones finds no edge left");
-  SW_CHECK(splits > 100 && more == 0, "a fresh split pass after the incremental ones finds no edge left");
+  std::printf("later passes: %d collapses (10242 -> %d vertices), then %d; %d splits, then %d\n",
+    collapses, fine.vertexCount(), again, splits, more);
+  SW_CHECK(collapses > 5000 && again == 0,
+    "a fresh collapse pass after the incremental ones finds no edge left");
+  SW_CHECK(
+    splits > 100 && more == 0, "a fresh split pass after the incremental ones finds no edge left");
 }
 
-// Adaptive sizing: on a sphere of radius R every vertex gets the chord-error length sqrt(6 e R - 3 e^2);
-// an ellipsoid remeshed adaptively gets shorter edges at its sharp ends than at its flat waist, and
-// more of them than with L alone there.
+// Adaptive sizing: on a sphere of radius R every vertex gets the chord-error length sqrt(6 e R - 3
+// e^2); an ellipsoid remeshed adaptively gets shorter edges at its sharp ends than at its flat
+// waist, and more of them than with L alone there.
 void adaptive()
 {
   SurfaceMesh sphere = testing::meshOf(icosphere(4, Vec3::Zero(), 2.0));
@@ -182,8 +191,10 @@ void adaptive()
     low = std::min(low, s);
     high = std::max(high, s);
   }
-  std::printf("sizes on a sphere of radius 2: %.3f to %.3f L (chord error: %.3f L)\n", low, high, expected);
-  SW_CHECK(low > 0.95 * expected && high < 1.01 * expected, "the sphere's sizes are the chord-error length (within 5%)");
+  std::printf(
+    "sizes on a sphere of radius 2: %.3f to %.3f L (chord error: %.3f L)\n", low, high, expected);
+  SW_CHECK(low > 0.95 * expected && high < 1.01 * expected,
+    "the sphere's sizes are the chord-error length (within 5%)");
 
   // x^2 / 9 + y^2 + z^2 = 1: curvature 3 at the ends (x = +-3), 1/3 to 1 at the waist.
   auto ellipsoid = [] {
@@ -199,7 +210,8 @@ void adaptive()
     int count = 0;
     for (int i = 0; i < mesh.vertexCount(); ++i)
     {
-      const bool atEnd = std::abs(mesh.points()[i].x()) > 2.7, atWaist = std::abs(mesh.points()[i].x()) < 1;
+      const bool atEnd = std::abs(mesh.points()[i].x()) > 2.7,
+                 atWaist = std::abs(mesh.points()[i].x()) < 1;
       for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
       {
         if ((ends && atEnd) || (!ends && atWaist))
@@ -220,8 +232,9 @@ void adaptive()
   r.chordError = 0.05;
   const RemeshReport report = remesh(adapted, r);
   const Spread s = spreadOf(adapted, 0.25);
-  std::printf("ellipsoid at L = 0.25: uniform %d vertices, ends %.3f, waist %.3f; adaptive %d vertices, ends "
-              "%.3f, waist %.3f; angles < 20 deg %.1f%%\n",
+  std::printf(
+    "ellipsoid at L = 0.25: uniform %d vertices, ends %.3f, waist %.3f; adaptive %d vertices, ends "
+    "%.3f, waist %.3f; angles < 20 deg %.1f%%\n",
     uniform.vertexCount(), meanEdge(uniform, true), meanEdge(uniform, false), adapted.vertexCount(),
     meanEdge(adapted, true), meanEdge(adapted, false), 100 * s.thin);
   SW_CHECK(report.status && meanEdge(adapted, true) < 0.75 * meanEdge(adapted, false),
@@ -235,7 +248,8 @@ void refused()
 {
   SurfaceMesh mesh = testing::meshOf(icosphere(1));
   RemeshSettings settings;
-  SW_CHECK(!remesh(mesh, settings).status && mesh.vertexCount() == 42, "L = 0 refused, the mesh untouched");
+  SW_CHECK(!remesh(mesh, settings).status && mesh.vertexCount() == 42,
+    "L = 0 refused, the mesh untouched");
 }
 } // namespace
 

@@ -1,14 +1,14 @@
 // Rim coverage (issue #10, RimCoverage.h): a mesh's rims are its edges of one triangle and, below a
 // crease angle, its sharp creases; rim samples along every edge at most the spacing apart, each rim
-// vertex once; a sample outside the surface moves the nearest triangle's corners so that its nearest
-// point reaches the sample; samples inside, within the tolerance or beyond the reach move nothing; the
-// vertices of a sample's nearest point hold it by their weights there. Whole wraps of an open CAD
-// shell: Cxx.TestShrinkWrapCGALMeshes.
+// vertex once; a sample outside the surface moves the nearest triangle's corners so that its
+// nearest point reaches the sample; samples inside, within the tolerance or beyond the reach move
+// nothing; the vertices of a sample's nearest point hold it by their weights there. Whole wraps of
+// an open CAD shell: Cxx.TestShrinkWrapCGALMeshes.
 #include "Distance/DistanceSource.h"
-#include "Surface/Icosphere.h"
-#include "Evolution/RimCoverage.h"
-#include "TestUtilities.h"
 #include "Distance/TriangleDistance.h"
+#include "Evolution/RimCoverage.h"
+#include "Surface/Icosphere.h"
+#include "TestUtilities.h"
 
 #include <vtkSMPTools.h>
 
@@ -19,7 +19,8 @@ namespace
 using namespace shrinkwrap;
 
 // The nearest point of the surface to p.
-Vec3 nearestOn(const std::vector<Vec3>& y, const std::vector<std::array<int, 3>>& triangles, const Vec3& p)
+Vec3 nearestOn(
+  const std::vector<Vec3>& y, const std::vector<std::array<int, 3>>& triangles, const Vec3& p)
 {
   Vec3 best = Vec3::Zero();
   double d2 = std::numeric_limits<double>::infinity();
@@ -60,8 +61,9 @@ void samples()
     }
     gap = std::max(gap, nearest);
   }
-  SW_CHECK(s.size() == 16 && gap <= 0.3, "rim samples: every vertex once, at most the spacing apart (" << s.size()
-    << " samples, largest gap " << gap << ")");
+  SW_CHECK(s.size() == 16 && gap <= 0.3,
+    "rim samples: every vertex once, at most the spacing apart ("
+      << s.size() << " samples, largest gap " << gap << ")");
   SW_CHECK(rimSamples({ { a, b } }, 0).empty(), "no spacing, no samples");
 }
 
@@ -74,8 +76,8 @@ TriangleSoup cube(bool open)
   {
     soup.points.push_back(Vec3(k & 1, (k >> 1) & 1, (k >> 2) & 1));
   }
-  soup.triangles = { { 0, 2, 1 }, { 1, 2, 3 }, { 0, 1, 5 }, { 0, 5, 4 }, { 1, 3, 7 }, { 1, 7, 5 }, { 3, 2, 6 },
-    { 3, 6, 7 }, { 2, 0, 4 }, { 2, 4, 6 } };
+  soup.triangles = { { 0, 2, 1 }, { 1, 2, 3 }, { 0, 1, 5 }, { 0, 5, 4 }, { 1, 3, 7 }, { 1, 7, 5 },
+    { 3, 2, 6 }, { 3, 6, 7 }, { 2, 0, 4 }, { 2, 4, 6 } };
   if (!open)
   {
     soup.triangles.push_back({ 4, 5, 7 });
@@ -89,12 +91,14 @@ void rims()
   const TriangleSource closed(cube(false)), open(cube(true));
   SW_CHECK(closed.rims(180).empty(), "a closed cube has no rims");
   SW_CHECK(closed.rims(45).size() == 12 && closed.rims(91).empty(),
-    "a cube's 12 edges are creases of 90 degrees, its faces' diagonals none (" << closed.rims(45).size() << ")");
+    "a cube's 12 edges are creases of 90 degrees, its faces' diagonals none ("
+      << closed.rims(45).size() << ")");
   SW_CHECK(open.rims(180).size() == 4 && open.rims(45).size() == 12,
-    "an open cube: 4 rims, and its 8 other edges creases (" << open.rims(180).size() << ", " << open.rims(45).size()
-                                                              << ")");
+    "an open cube: 4 rims, and its 8 other edges creases (" << open.rims(180).size() << ", "
+                                                            << open.rims(45).size() << ")");
   const TriangleSoup sphere = icosphere(3);
-  SW_CHECK(TriangleSource(sphere).rims(45).empty(), "a sphere of 1280 triangles has no crease of 45 degrees");
+  SW_CHECK(TriangleSource(sphere).rims(45).empty(),
+    "a sphere of 1280 triangles has no crease of 45 degrees");
 }
 
 void holds()
@@ -107,7 +111,8 @@ void holds()
   {
     holding += h > 0;
   }
-  SW_CHECK(holding == 1 && atVertex[0] == 1, "a sample over a vertex is held by that vertex alone, fully");
+  SW_CHECK(
+    holding == 1 && atVertex[0] == 1, "a sample over a vertex is held by that vertex alone, fully");
   const auto& t = sphere.triangles()[7];
   const Vec3 centre = (y[t[0]] + y[t[1]] + y[t[2]]) / 3.0;
   const std::vector<double> atFace = rimHolds(sphere, { centre }, 0.1);
@@ -137,11 +142,14 @@ void moves()
   }
   const double reached = (nearestOn(moved, sphere.triangles(), out) - out).norm();
   SW_CHECK(moving(m) >= 1 && moving(m) <= 3 && reached < 1e-9,
-    "a sample outside: the nearest triangle's corners carry its nearest point onto it (" << moving(m)
-      << " vertices, " << reached << " left)");
-  SW_CHECK(moving(rimMoves(sphere, { out * (0.8 / 1.1) }, 0.01, 0.5)) == 0, "a sample inside moves nothing");
-  SW_CHECK(moving(rimMoves(sphere, { out * (1.005 / 1.1) }, 0.01, 0.5)) == 0, "a sample within the tolerance moves nothing");
-  SW_CHECK(moving(rimMoves(sphere, { out * 2.0 }, 0.01, 0.5)) == 0, "a sample beyond the reach moves nothing");
+    "a sample outside: the nearest triangle's corners carry its nearest point onto it ("
+      << moving(m) << " vertices, " << reached << " left)");
+  SW_CHECK(moving(rimMoves(sphere, { out * (0.8 / 1.1) }, 0.01, 0.5)) == 0,
+    "a sample inside moves nothing");
+  SW_CHECK(moving(rimMoves(sphere, { out * (1.005 / 1.1) }, 0.01, 0.5)) == 0,
+    "a sample within the tolerance moves nothing");
+  SW_CHECK(moving(rimMoves(sphere, { out * 2.0 }, 0.01, 0.5)) == 0,
+    "a sample beyond the reach moves nothing");
   // Two samples pulling at the same vertex: the larger move wins.
   const Vec3 far = y[0] * 1.3, near = y[0] * 1.1;
   const std::vector<Vec3> both = rimMoves(sphere, { near, far }, 0.01, 0.5);

@@ -1,13 +1,14 @@
 // Algorithm 1 in the core, without a pipeline: the outline holds every cell a triangle touches, the
 // band's distances are exact, both far-field sweeps stay near the exact distance (the closest-point
-// passes never below it), and the sign votes give inside and outside of a closed mesh; one with a hole
-// wider than the band (a narrower one is sealed by it) is signed by the winding number instead.
+// passes never below it), and the sign votes give inside and outside of a closed mesh; one with a
+// hole wider than the band (a narrower one is sealed by it) is signed by the winding number
+// instead.
 #include "Distance/DistanceBand.h"
-#include "Surface/Icosphere.h"
 #include "Distance/Outline.h"
 #include "Distance/SignedDistance.h"
-#include "TestUtilities.h"
 #include "Distance/TriangleBoxOverlap.h"
+#include "Surface/Icosphere.h"
+#include "TestUtilities.h"
 
 #include <vtkSMPTools.h>
 
@@ -43,14 +44,18 @@ void outline()
         bool touched = false;
         for (const auto& t : s.soup.triangles)
         {
-          touched = touched || triangleOverlapsBox(s.soup.points[t[0]], s.soup.points[t[1]], s.soup.points[t[2]], cell);
+          touched = touched ||
+            triangleOverlapsBox(
+              s.soup.points[t[0]], s.soup.points[t[1]], s.soup.points[t[2]], cell);
         }
         const bool listed = found.count(s.lattice.index(i, j, k)) > 0;
         missing += touched && !listed;
         extra += listed && !touched;
       }
-  std::printf("outline: %zu cells, %lld missing, %lld extra against brute force\n", found.size(), missing, extra);
-  SW_CHECK(missing == 0 && extra == 0, "the octree outline is exactly the cells the surface touches");
+  std::printf("outline: %zu cells, %lld missing, %lld extra against brute force\n", found.size(),
+    missing, extra);
+  SW_CHECK(
+    missing == 0 && extra == 0, "the octree outline is exactly the cells the surface touches");
 }
 
 void fieldAgainstExact(SweepMethod sweep, double meanBound, double maxBound)
@@ -60,7 +65,8 @@ void fieldAgainstExact(SweepMethod sweep, double meanBound, double maxBound)
   settings.sweep = sweep;
   std::vector<float> d(s.lattice.nodeCount());
   const SignedDistanceResult r = computeSignedDistance(s.soup, s.lattice, settings, d.data());
-  SW_CHECK(r.completed && r.isSigned && !r.invertedOrientation, "a closed sphere's field is signed");
+  SW_CHECK(
+    r.completed && r.isSigned && !r.invertedOrientation, "a closed sphere's field is signed");
   double sum = 0, worst = 0, worstBand = 0, below = 0;
   long long signErrors = 0;
   for (std::int64_t n = 0; n < s.lattice.nodeCount(); ++n)
@@ -80,11 +86,13 @@ void fieldAgainstExact(SweepMethod sweep, double meanBound, double maxBound)
     signErrors += (r2 < 0.95 && d[n] > 0) || (r2 > 1.01 && d[n] < 0);
   }
   const double mean = sum / s.lattice.nodeCount();
-  std::printf("%s: mean %.4f h, max %.4f h, band max %.2g h, largest under-estimate %.2g h, sign errors %lld\n",
-    sweep == SweepMethod::ClosestPoint ? "closest-point sweep" : "Eikonal sweep", mean / s.h(), worst / s.h(),
-    worstBand / s.h(), below / s.h(), signErrors);
+  std::printf("%s: mean %.4f h, max %.4f h, band max %.2g h, largest under-estimate %.2g h, sign "
+              "errors %lld\n",
+    sweep == SweepMethod::ClosestPoint ? "closest-point sweep" : "Eikonal sweep", mean / s.h(),
+    worst / s.h(), worstBand / s.h(), below / s.h(), signErrors);
   SW_CHECK(worstBand < 1e-5 * s.h(), "exact distances in the band");
-  SW_CHECK(mean < meanBound * s.h() && worst < maxBound * s.h(), "the far field is near the exact distance");
+  SW_CHECK(mean < meanBound * s.h() && worst < maxBound * s.h(),
+    "the far field is near the exact distance");
   SW_CHECK(sweep != SweepMethod::ClosestPoint || below < 1e-5 * s.h(),
     "closest-point distances are those to true surface points: never below the exact distance");
   SW_CHECK(signErrors == 0, "inside negative, outside positive");
@@ -106,13 +114,16 @@ void openMeshSignedByWindingNumber()
   s.soup.triangles = kept;
   std::vector<float> d(s.lattice.nodeCount());
   const SignedDistanceResult r = computeSignedDistance(s.soup, s.lattice, {}, d.data());
-  SW_CHECK(r.completed && r.isSigned && r.signMethod == SignMethod::WindingNumber && r.boundaryEdges > 0 &&
-      r.signDisagreements > 0,
-    "an open sphere: the votes disagree, the winding number signs it (" << r.boundaryEdges << " boundary edges)");
+  SW_CHECK(r.completed && r.isSigned && r.signMethod == SignMethod::WindingNumber &&
+      r.boundaryEdges > 0 && r.signDisagreements > 0,
+    "an open sphere: the votes disagree, the winding number signs it (" << r.boundaryEdges
+                                                                        << " boundary edges)");
   SignedDistanceSettings paper;
   paper.windingNumber = false;
-  const SignedDistanceResult unsignedResult = computeSignedDistance(s.soup, s.lattice, paper, d.data());
-  SW_CHECK(unsignedResult.completed && !unsignedResult.isSigned, "without the winding number it stays unsigned");
+  const SignedDistanceResult unsignedResult =
+    computeSignedDistance(s.soup, s.lattice, paper, d.data());
+  SW_CHECK(unsignedResult.completed && !unsignedResult.isSigned,
+    "without the winding number it stays unsigned");
   bool nonNegative = true;
   for (float v : d)
   {
@@ -150,7 +161,8 @@ double largestErrorAt(const Vec3& offset)
     worst = std::max(worst, std::abs(std::abs(d[n]) - exact));
     signErrors += (local.norm() < 0.95 && d[n] > 0) || (local.norm() > 1.01 && d[n] < 0);
   }
-  SW_CHECK(r.completed && r.isSigned && signErrors == 0, "the sphere at " << offset.x() << " is signed right");
+  SW_CHECK(r.completed && r.isSigned && signErrors == 0,
+    "the sphere at " << offset.x() << " is signed right");
   return worst / lattice.minSpacing();
 }
 
@@ -158,7 +170,8 @@ void farFromTheOrigin()
 {
   const double atOrigin = largestErrorAt(Vec3::Zero());
   const double far = largestErrorAt(Vec3(1e9, -1e9, 1e9));
-  std::printf("a unit sphere: largest error %.4f cells at the origin, %.4f cells at 1e9\n", atOrigin, far);
+  std::printf(
+    "a unit sphere: largest error %.4f cells at the origin, %.4f cells at 1e9\n", atOrigin, far);
   SW_CHECK(far <= atOrigin + 0.01, "at 1e9 the same error in cells as at the origin");
 }
 
@@ -172,7 +185,8 @@ void checksRefuse()
   SW_CHECK(!checkSoup(soup), "NaN refused: " << checkSoup(soup).message());
   GridLattice huge;
   huge.dims = { 1 << 20, 1 << 20, 1 << 20 };
-  SW_CHECK(!checkMemory(huge, {}), "a grid beyond memory refused: " << checkMemory(huge, {}).message());
+  SW_CHECK(
+    !checkMemory(huge, {}), "a grid beyond memory refused: " << checkMemory(huge, {}).message());
 }
 } // namespace
 

@@ -4,9 +4,9 @@
 // as ParaView's extent translator gives them, ghost planes, more processes than planes; and an
 // abort on one process ends all without a hang.
 #include "Distance/DistanceSource.h"
-#include "Surface/Icosphere.h"
 #include "Distance/PointSource.h"
 #include "Distance/SlabDistance.h"
+#include "Surface/Icosphere.h"
 #include "TestUtilities.h"
 
 #include <condition_variable>
@@ -24,14 +24,21 @@ class ThreadExchange : public SlabExchange
 public:
   struct Shared
   {
-    explicit Shared(int n) : slots(n) {}
+    explicit Shared(int n)
+      : slots(n)
+    {
+    }
     std::mutex mutex;
     std::condition_variable done;
     std::vector<std::vector<char>> slots, published;
     int arrived = 0;
     long long round = 0;
   };
-  ThreadExchange(Shared& shared, int rank) : S(shared), Rank(rank) {}
+  ThreadExchange(Shared& shared, int rank)
+    : S(shared)
+    , Rank(rank)
+  {
+  }
   int rank() const override { return this->Rank; }
   int size() const override { return static_cast<int>(this->S.slots.size()); }
   Messages allGather(const std::vector<char>& mine) const override
@@ -89,8 +96,8 @@ std::vector<Piece> translatorPieces(int planes, int n, int ghosts)
 }
 
 // Every piece computed on its own thread; `abortRank` >= 0 asks that process to stop half-way.
-void computePieces(const std::function<std::unique_ptr<DistanceSource>()>& makeSource, const GridLattice& lattice,
-  std::vector<Piece>& pieces, int abortRank = -1)
+void computePieces(const std::function<std::unique_ptr<DistanceSource>()>& makeSource,
+  const GridLattice& lattice, std::vector<Piece>& pieces, int abortRank = -1)
 {
   ThreadExchange::Shared shared(static_cast<int>(pieces.size()));
   std::vector<std::thread> threads;
@@ -101,10 +108,11 @@ void computePieces(const std::function<std::unique_ptr<DistanceSource>()>& makeS
       const auto source = makeSource();
       const GridLattice slab = planesOf(lattice, p.first, p.last);
       p.values.assign(std::max<std::int64_t>(0, slab.nodeCount()), 0.f);
-      const Progress progress(r == abortRank ? std::function<bool(double)>([](double f) { return f < 0.5; })
-                                             : std::function<bool(double)>());
-      p.status = computeSlabSignedDistance(
-        *source, lattice, p.first, p.last, SignedDistanceSettings(), ThreadExchange(shared, r), p.values.data(), p.result, progress);
+      const Progress progress(r == abortRank
+          ? std::function<bool(double)>([](double f) { return f < 0.5; })
+          : std::function<bool(double)>());
+      p.status = computeSlabSignedDistance(*source, lattice, p.first, p.last,
+        SignedDistanceSettings(), ThreadExchange(shared, r), p.values.data(), p.result, progress);
     });
   }
   for (auto& t : threads)
@@ -115,12 +123,14 @@ void computePieces(const std::function<std::unique_ptr<DistanceSource>()>& makeS
 
 // Compares every piece with the whole grid's field: the largest difference in units of the grid's
 // diagonal, and nodes of the other sign.
-void compare(const std::string& name, const std::function<std::unique_ptr<DistanceSource>()>& makeSource,
-  const GridLattice& lattice, std::vector<Piece> pieces)
+void compare(const std::string& name,
+  const std::function<std::unique_ptr<DistanceSource>()>& makeSource, const GridLattice& lattice,
+  std::vector<Piece> pieces)
 {
   const auto wholeSource = makeSource();
   std::vector<float> whole(lattice.nodeCount());
-  const SignedDistanceResult serial = computeSignedDistance(*wholeSource, lattice, SignedDistanceSettings(), whole.data());
+  const SignedDistanceResult serial =
+    computeSignedDistance(*wholeSource, lattice, SignedDistanceSettings(), whole.data());
   computePieces(makeSource, lattice, pieces);
   const std::int64_t plane = static_cast<std::int64_t>(lattice.dims[0]) * lattice.dims[1];
   const double diagonal = lattice.bounds().diagonal();
@@ -130,7 +140,8 @@ void compare(const std::string& name, const std::function<std::unique_ptr<Distan
   for (const Piece& p : pieces)
   {
     same = same && p.status && p.result.completed && p.result.isSigned == serial.isSigned &&
-      p.result.signMethod == serial.signMethod && p.result.invertedOrientation == serial.invertedOrientation &&
+      p.result.signMethod == serial.signMethod &&
+      p.result.invertedOrientation == serial.invertedOrientation &&
       p.result.signDisagreements == serial.signDisagreements;
     for (std::int64_t n = 0; n < static_cast<std::int64_t>(p.values.size()); ++n)
     {
@@ -140,10 +151,12 @@ void compare(const std::string& name, const std::function<std::unique_ptr<Distan
       ++nodes;
     }
   }
-  std::printf("%s: %zu pieces, %lld nodes, largest difference %.2e of the diagonal, %lld signs differ (%s)\n",
+  std::printf(
+    "%s: %zu pieces, %lld nodes, largest difference %.2e of the diagonal, %lld signs differ (%s)\n",
     name.c_str(), pieces.size(), nodes, worst, signs, signStatus(serial, true).c_str());
   SW_CHECK(same, name + ": every piece completed with the whole grid's sign method and votes");
-  SW_CHECK(worst <= 1e-6 && signs == 0, name + ": the pieces equal the whole field to 1e-6 of the diagonal, same signs");
+  SW_CHECK(worst <= 1e-6 && signs == 0,
+    name + ": the pieces equal the whole field to 1e-6 of the diagonal, same signs");
 }
 
 std::function<std::unique_ptr<DistanceSource>()> triangles(const TriangleSoup& soup)
@@ -173,12 +186,14 @@ GridLattice around(const TriangleSoup& soup, int resolution)
 int TestSlabDistance(int, char*[])
 {
   // Closed: two spheres apart (two inside regions, one outside region across every border).
-  const TriangleSoup two = joined(icosphere(3, Vec3(-0.6, 0, -0.5), 0.5), icosphere(3, Vec3(0.5, 0.2, 0.6), 0.45));
+  const TriangleSoup two =
+    joined(icosphere(3, Vec3(-0.6, 0, -0.5), 0.5), icosphere(3, Vec3(0.5, 0.2, 0.6), 0.45));
   const GridLattice lattice = around(two, 48);
   const int nz = lattice.dims[2];
   compare("two spheres, 2 pieces", triangles(two), lattice, translatorPieces(nz, 2, 0));
   compare("two spheres, 3 pieces", triangles(two), lattice, translatorPieces(nz, 3, 0));
-  compare("two spheres, 3 pieces, 2 ghost planes", triangles(two), lattice, translatorPieces(nz, 3, 2));
+  compare(
+    "two spheres, 3 pieces, 2 ghost planes", triangles(two), lattice, translatorPieces(nz, 3, 2));
 
   // Facing inwards: the votes of the corner region flip every sign.
   TriangleSoup inward = two;
@@ -186,13 +201,17 @@ int TestSlabDistance(int, char*[])
   {
     std::swap(t[1], t[2]);
   }
-  compare("inward-facing spheres, 2 pieces", triangles(inward), lattice, translatorPieces(nz, 2, 1));
+  compare(
+    "inward-facing spheres, 2 pieces", triangles(inward), lattice, translatorPieces(nz, 2, 1));
 
-  // Open and crossing: the votes disagree and the winding number decides, from sites of other pieces too.
+  // Open and crossing: the votes disagree and the winding number decides, from sites of other
+  // pieces too.
   TriangleSoup open = icosphere(3, Vec3::Zero(), 1);
   open.triangles.resize(open.triangles.size() - 12);
-  compare("sphere with a hole, 3 pieces", triangles(open), around(open, 40), translatorPieces(around(open, 40).dims[2], 3, 1));
-  const TriangleSoup crossing = joined(icosphere(3, Vec3::Zero(), 1), icosphere(3, Vec3(0.8, 0.3, 0.2), 0.7));
+  compare("sphere with a hole, 3 pieces", triangles(open), around(open, 40),
+    translatorPieces(around(open, 40).dims[2], 3, 1));
+  const TriangleSoup crossing =
+    joined(icosphere(3, Vec3::Zero(), 1), icosphere(3, Vec3(0.8, 0.3, 0.2), 0.7));
   compare("crossing spheres, 2 pieces", triangles(crossing), around(crossing, 40),
     translatorPieces(around(crossing, 40).dims[2], 2, 0));
 
@@ -206,8 +225,9 @@ int TestSlabDistance(int, char*[])
 
   // Points: unsigned.
   const TriangleSoup sphere = icosphere(3, Vec3::Zero(), 1);
-  compare("points of a sphere, 2 pieces", [&] { return std::make_unique<PointSource>(sphere.points); }, around(sphere, 40),
-    translatorPieces(around(sphere, 40).dims[2], 2, 0));
+  compare(
+    "points of a sphere, 2 pieces", [&] { return std::make_unique<PointSource>(sphere.points); },
+    around(sphere, 40), translatorPieces(around(sphere, 40).dims[2], 2, 0));
 
   // More processes than plane pairs: some compute nothing.
   GridLattice thin;
@@ -218,12 +238,14 @@ int TestSlabDistance(int, char*[])
   std::vector<Piece> gap = translatorPieces(nz, 2, 0);
   gap[1].first += 2;
   computePieces(triangles(two), lattice, gap);
-  SW_CHECK(!gap[0].status && !gap[1].status, "pieces that leave a gap are refused on every process");
+  SW_CHECK(
+    !gap[0].status && !gap[1].status, "pieces that leave a gap are refused on every process");
 
   // An abort on one process: every process returns incomplete.
   std::vector<Piece> aborted = translatorPieces(nz, 3, 0);
   computePieces(triangles(two), lattice, aborted, 1);
-  SW_CHECK(std::all_of(aborted.begin(), aborted.end(), [](const Piece& p) { return p.status && !p.result.completed; }),
+  SW_CHECK(std::all_of(aborted.begin(), aborted.end(),
+             [](const Piece& p) { return p.status && !p.result.completed; }),
     "an abort on one process ends the computation on all");
   return testing::finish("TestSlabDistance");
 }

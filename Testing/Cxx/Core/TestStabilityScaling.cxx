@@ -1,7 +1,7 @@
 // The stability scale of Section 2.4: the square root, not eq. (7)'s cube root, brings the mean
 // co-volume to tau.
-#include "Surface/Icosphere.h"
 #include "Evolution/StabilityScaling.h"
+#include "Surface/Icosphere.h"
 #include "Surface/SurfaceGeometry.h"
 #include "TestUtilities.h"
 
@@ -14,14 +14,15 @@ using testing::meshOf;
 
 void stabilityScaling()
 {
-  // Eq. (7) prints phi = cbrt(tau / mu_r); areas scale with phi^2, so only the square root brings the
-  // mean co-volume to tau. Measured on an icosphere of radius r scaled by phi.
+  // Eq. (7) prints phi = cbrt(tau / mu_r); areas scale with phi^2, so only the square root brings
+  // the mean co-volume to tau. Measured on an icosphere of radius r scaled by phi.
   const double tau = 0.015, r = 10.0; // tau / mu_r far from 1, where the roots differ
   const int level = 3;
   const SurfaceMesh mesh = meshOf(icosphere(level, Vec3::Zero(), r));
   for (const bool squareRoot : { true, false })
   {
-    const double phi = squareRoot ? stabilityScale(tau, r, level) : std::cbrt(tau / meanCoVolume(r, level));
+    const double phi =
+      squareRoot ? stabilityScale(tau, r, level) : std::cbrt(tau / meanCoVolume(r, level));
     std::vector<Vec3> scaled;
     for (const Vec3& x : mesh.points())
     {
@@ -30,10 +31,12 @@ void stabilityScaling()
     SurfaceGeometry g;
     computeGeometry(mesh, scaled, g);
     const double mean = g.area / mesh.vertexCount();
-    std::printf("phi by %s: mean co-volume %.5f for tau %.5f\n", squareRoot ? "sqrt (ours)" : "cbrt (eq. (7))", mean, tau);
+    std::printf("phi by %s: mean co-volume %.5f for tau %.5f\n",
+      squareRoot ? "sqrt (ours)" : "cbrt (eq. (7))", mean, tau);
     if (squareRoot)
     {
-      SW_CHECK(std::abs(mean - tau) < 0.05 * tau, "phi = sqrt(tau / mu_r) gives mean co-volume tau");
+      SW_CHECK(
+        std::abs(mean - tau) < 0.05 * tau, "phi = sqrt(tau / mu_r) gives mean co-volume tau");
     }
     else
     {
@@ -46,8 +49,6 @@ void stabilityScaling()
 
 int TestStabilityScaling(int, char*[])
 {
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
-    stabilityScaling();
-  });
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] { stabilityScaling(); });
   return testing::finish("TestStabilityScaling");
 }

@@ -1,6 +1,6 @@
-// The step cache: the nearest step at or before a time, triangles shared between steps counted once,
-// thinning that keeps step 0, the newest, the one shown and edited steps, and dropping the steps after
-// an edit.
+// The step cache: the nearest step at or before a time, triangles shared between steps counted
+// once, thinning that keeps step 0, the newest, the one shown and edited steps, and dropping the
+// steps after an edit.
 #include "Evolution/StepCache.h"
 #include "TestUtilities.h"
 
@@ -10,7 +10,8 @@ using namespace shrinkwrap;
 
 StepCache::Step stepOf(int vertices, const StepCache::Triangles& triangles, bool edited = false)
 {
-  return { std::vector<Vec3>(vertices, Vec3::Zero()), std::vector<Vec3>(vertices, Vec3::Zero()), triangles, 1.0, edited };
+  return { std::vector<Vec3>(vertices, Vec3::Zero()), std::vector<Vec3>(vertices, Vec3::Zero()),
+    triangles, 1.0, edited };
 }
 
 void lookups()
@@ -21,11 +22,13 @@ void lookups()
   {
     cache.store(k, stepOf(50, triangles));
   }
-  SW_CHECK(cache.atOrBefore(5).first == 5 && cache.atOrBefore(7).first == 5 && cache.atOrBefore(100).first == 9,
+  SW_CHECK(cache.atOrBefore(5).first == 5 && cache.atOrBefore(7).first == 5 &&
+      cache.atOrBefore(100).first == 9,
     "the step asked for, else the nearest before it");
   SW_CHECK(cache.newest() == 9, "the newest step");
   const double oneStep = 2.0 * sizeof(Vec3) * 50;
-  SW_CHECK(cache.bytes() == 5 * oneStep + 100 * sizeof(std::array<int, 3>), "shared triangles counted once");
+  SW_CHECK(cache.bytes() == 5 * oneStep + 100 * sizeof(std::array<int, 3>),
+    "shared triangles counted once");
   cache.dropAfter(2);
   SW_CHECK(cache.newest() == 2 && !cache.has(5) && cache.has(2), "steps after an edit dropped");
 }
@@ -45,8 +48,10 @@ void thinning()
   {
     kept += cache.has(k);
   }
-  SW_CHECK(cache.bytes() <= 12 * oneStep + 10 * sizeof(std::array<int, 3>), "under the limit (" << kept << " steps)");
-  SW_CHECK(cache.has(0) && cache.has(40) && cache.has(27) && cache.has(13), "0, the newest, the shown and the edited kept");
+  SW_CHECK(cache.bytes() <= 12 * oneStep + 10 * sizeof(std::array<int, 3>),
+    "under the limit (" << kept << " steps)");
+  SW_CHECK(cache.has(0) && cache.has(40) && cache.has(27) && cache.has(13),
+    "0, the newest, the shown and the edited kept");
   cache.thin(0, 27);
   kept = 0;
   for (int k = 0; k <= 40; ++k)

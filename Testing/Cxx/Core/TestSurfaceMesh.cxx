@@ -1,9 +1,9 @@
 // The editable surface mesh: one-rings of icospheres (eq. (9) counts), refused surfaces, and local
-// edits (split, flip, collapse) whose vertex data follows them; a commit's rings, rebuilt only where the
-// edits touched, equal those of the surface built anew.
+// edits (split, flip, collapse) whose vertex data follows them; a commit's rings, rebuilt only
+// where the edits touched, equal those of the surface built anew.
 #include "Remeshing/EdgeSplits.h"
-#include "Surface/Icosphere.h"
 #include "Remeshing/Remesher.h"
+#include "Surface/Icosphere.h"
 #include "Surface/SurfaceGeometry.h"
 #include "Surface/SurfaceMesh.h"
 #include "TestUtilities.h"
@@ -21,7 +21,8 @@ void icospheres()
   for (int s = 0; s <= 6; ++s)
   {
     const TriangleSoup sphere = icosphere(s, Vec3(1, 2, 3), 2.0);
-    SW_CHECK(static_cast<long long>(sphere.points.size()) == expected[s] && icosphereVertexCount(s) == expected[s],
+    SW_CHECK(static_cast<long long>(sphere.points.size()) == expected[s] &&
+        icosphereVertexCount(s) == expected[s],
       "icosphere level " << s << " has " << expected[s] << " vertices (eq. (9))");
     if (s > 4)
     {
@@ -37,14 +38,15 @@ void icospheres()
       {
         const auto& t = mesh.triangles()[mesh.ringTriangle(p)];
         const int j = mesh.ring(p), k = mesh.ring(mesh.next(i, p));
-        const bool matches = (t[0] == i && t[1] == j && t[2] == k) || (t[1] == i && t[2] == j && t[0] == k) ||
-          (t[2] == i && t[0] == j && t[1] == k);
+        const bool matches = (t[0] == i && t[1] == j && t[2] == k) ||
+          (t[1] == i && t[2] == j && t[0] == k) || (t[2] == i && t[0] == j && t[1] == k);
         SW_CHECK(matches, "ring entry " << p << " of vertex " << i << " names its triangle");
       }
     }
     SW_CHECK(ringEntries == 3 * mesh.triangleCount(), "ring entries = 2 E = 3 T on level " << s);
     const double volume = enclosedVolume(mesh, sphere.points);
-    SW_CHECK(volume > 0 && volume < 4.0 / 3.0 * M_PI * 8.0, "outward orientation, inscribed volume on level " << s);
+    SW_CHECK(volume > 0 && volume < 4.0 / 3.0 * M_PI * 8.0,
+      "outward orientation, inscribed volume on level " << s);
   }
 }
 
@@ -59,7 +61,8 @@ void refusedSurfaces()
   SW_CHECK(!builds({}, {}, mesh, error), "empty surface refused: " << error);
   TriangleSoup isolated = tet;
   isolated.points.push_back({ 5, 5, 5 });
-  SW_CHECK(!builds(isolated.points, isolated.triangles, mesh, error), "isolated vertex refused: " << error);
+  SW_CHECK(!builds(isolated.points, isolated.triangles, mesh, error),
+    "isolated vertex refused: " << error);
   TriangleSoup open = tet;
   open.triangles.pop_back();
   SW_CHECK(!builds(open.points, open.triangles, mesh, error), "open surface refused: " << error);
@@ -69,7 +72,8 @@ void refusedSurfaces()
   SW_CHECK(!builds(fin.points, fin.triangles, mesh, error), "non-manifold edge refused: " << error);
   TriangleSoup flipped = tet;
   std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
-  SW_CHECK(!builds(flipped.points, flipped.triangles, mesh, error), "inconsistent orientation refused: " << error);
+  SW_CHECK(!builds(flipped.points, flipped.triangles, mesh, error),
+    "inconsistent orientation refused: " << error);
   TriangleSoup nan = tet;
   nan.points[1].x() = std::nan("");
   SW_CHECK(!builds(nan.points, nan.triangles, mesh, error), "NaN refused: " << error);
@@ -85,8 +89,8 @@ bool ringsMatch(const SurfaceMesh& mesh)
     {
       const auto& t = mesh.triangles()[mesh.ringTriangle(p)];
       const int j = mesh.ring(p), k = mesh.ring(mesh.next(i, p));
-      const bool found = (t[0] == i && t[1] == j && t[2] == k) || (t[1] == i && t[2] == j && t[0] == k) ||
-        (t[2] == i && t[0] == j && t[1] == k);
+      const bool found = (t[0] == i && t[1] == j && t[2] == k) ||
+        (t[1] == i && t[2] == j && t[0] == k) || (t[2] == i && t[0] == j && t[1] == k);
       if (!found)
       {
         return false;
@@ -115,24 +119,30 @@ void edits()
   // Split: the new vertex interpolates positions and every vertex data; 2 triangles become 4.
   const int m = mesh.split(a, b, 0.25);
   SW_CHECK(m == 42 && mesh.edited() && mesh.commit(), "a split commits");
-  SW_CHECK(mesh.vertexCount() == 43 && mesh.triangleCount() == 82 && ringsMatch(mesh), "one vertex, two triangles more");
-  SW_CHECK((mesh.points()[m] - (0.75 * sphere.points[a] + 0.25 * sphere.points[b])).norm() < 1e-15 &&
+  SW_CHECK(mesh.vertexCount() == 43 && mesh.triangleCount() == 82 && ringsMatch(mesh),
+    "one vertex, two triangles more");
+  SW_CHECK(
+    (mesh.points()[m] - (0.75 * sphere.points[a] + 0.25 * sphere.points[b])).norm() < 1e-15 &&
       (mesh.vertexProperty<Vec3>("v:velocity")[m] - Vec3(0.25 * b, 0.5 * b, 0)).norm() < 1e-12 &&
       std::abs(mesh.vertexProperty<double>("v:size")[m] - 0.75 * b) < 1e-12,
     "the new vertex's position, velocity and size are interpolated");
-  SW_CHECK(mesh.ringEntry(a, b) < 0 && mesh.ringEntry(a, m) >= 0 && mesh.ringEntry(m, b) >= 0, "(a, b) became (a, m, b)");
-  SW_CHECK(std::abs(enclosedVolume(mesh, mesh.points()) - volume) < 1e-12, "a split on the edge keeps the volume");
+  SW_CHECK(mesh.ringEntry(a, b) < 0 && mesh.ringEntry(a, m) >= 0 && mesh.ringEntry(m, b) >= 0,
+    "(a, b) became (a, m, b)");
+  SW_CHECK(std::abs(enclosedVolume(mesh, mesh.points()) - volume) < 1e-12,
+    "a split on the edge keeps the volume");
 
   // Flip (a, m) back and forth: the same triangles again.
   const int c = mesh.ring(mesh.next(a, mesh.ringEntry(a, m)));
   const int d = mesh.ring(mesh.previous(a, mesh.ringEntry(a, m)));
   const auto before = mesh.triangles();
-  SW_CHECK(mesh.flip(a, m) && mesh.commit() && mesh.ringEntry(c, d) >= 0 && mesh.ringEntry(a, m) < 0 && ringsMatch(mesh),
+  SW_CHECK(mesh.flip(a, m) && mesh.commit() && mesh.ringEntry(c, d) >= 0 &&
+      mesh.ringEntry(a, m) < 0 && ringsMatch(mesh),
     "a flip replaces (a, m) by (c, d)");
   SW_CHECK(!mesh.flip(a, m) && mesh.commit(), "a flip of an edge that is gone is refused");
 
   // Collapse m into b: the split undone, with b's data kept and the count back to the icosphere's.
-  SW_CHECK(mesh.flip(d, c) && mesh.commit() && mesh.triangles().size() == before.size(), "flipped back");
+  SW_CHECK(
+    mesh.flip(d, c) && mesh.commit() && mesh.triangles().size() == before.size(), "flipped back");
   SW_CHECK(mesh.collapse(b, m, sphere.points[b]) && mesh.commit(), "a collapse commits");
   SW_CHECK(mesh.vertexCount() == 42 && mesh.triangleCount() == 80 && ringsMatch(mesh) &&
       mesh.vertexProperty<Vec3>("v:velocity")[b] == Vec3(b, 2 * b, 0) &&
@@ -141,10 +151,11 @@ void edits()
   SurfaceMesh copy = mesh;
   copy.vertexProperty<double>("v:size")[0] = -1;
   copy.removeVertexProperty("v:velocity");
-  SW_CHECK(mesh.vertexProperty<double>("v:size")[0] == 0 && mesh.vertexProperty<Vec3>("v:velocity") &&
-      !copy.vertexProperty<Vec3>("v:velocity"),
+  SW_CHECK(mesh.vertexProperty<double>("v:size")[0] == 0 &&
+      mesh.vertexProperty<Vec3>("v:velocity") && !copy.vertexProperty<Vec3>("v:velocity"),
     "a copy's properties are its own");
-  SW_CHECK(std::abs(enclosedVolume(mesh, mesh.points()) - volume) < 1e-12, "the same surface again");
+  SW_CHECK(
+    std::abs(enclosedVolume(mesh, mesh.points()) - volume) < 1e-12, "the same surface again");
 
   // Edits see each other before the commit: every edge split once, in one pass.
   SurfaceMesh all = meshOf(sphere);
@@ -154,16 +165,18 @@ void edits()
   {
     splits += all.split(e[0], e[1]) >= 0;
   }
-  SW_CHECK(splits == 120 && all.commit() && all.vertexCount() == 162 && all.triangleCount() == 320 && ringsMatch(all),
+  SW_CHECK(splits == 120 && all.commit() && all.vertexCount() == 162 &&
+      all.triangleCount() == 320 && ringsMatch(all),
     "120 splits in one pass: level 2's counts, closed");
 }
 
-// The rings a commit leaves (the untouched vertices' renumbered, the others' walked again) entry for
-// entry equal those of SurfaceMesh::build on the same points and triangles.
+// The rings a commit leaves (the untouched vertices' renumbered, the others' walked again) entry
+// for entry equal those of SurfaceMesh::build on the same points and triangles.
 bool sameAsBuilt(const SurfaceMesh& mesh)
 {
   SurfaceMesh built;
-  if (!SurfaceMesh::build(mesh.points(), mesh.triangles(), built) || built.vertexCount() != mesh.vertexCount())
+  if (!SurfaceMesh::build(mesh.points(), mesh.triangles(), built) ||
+    built.vertexCount() != mesh.vertexCount())
   {
     return false;
   }
@@ -186,8 +199,8 @@ bool sameAsBuilt(const SurfaceMesh& mesh)
 
 void commitsAsBuilt()
 {
-  // A level-3 sphere squashed to an ellipsoid, so that its edges differ in length: rounds of splits,
-  // collapses (which renumber) and flips, each compared with the surface built anew.
+  // A level-3 sphere squashed to an ellipsoid, so that its edges differ in length: rounds of
+  // splits, collapses (which renumber) and flips, each compared with the surface built anew.
   TriangleSoup sphere = icosphere(3);
   for (Vec3& x : sphere.points)
   {
@@ -207,11 +220,12 @@ void commitsAsBuilt()
     flips.avoidCrossings = false;
     const int flipped = equalizeValences(mesh, flips);
     rounds += sameAsBuilt(mesh);
-    std::printf("edge length %.2f: %d splits, %d collapses, %d flips, %d vertices\n", length, splits, collapsed,
-      flipped, mesh.vertexCount());
+    std::printf("edge length %.2f: %d splits, %d collapses, %d flips, %d vertices\n", length,
+      splits, collapsed, flipped, mesh.vertexCount());
     edits += splits + collapsed + flipped;
   }
-  SW_CHECK(rounds == 9 && edits > 300, "after each of 9 rounds (" << edits << " edits) the rings equal a fresh build's");
+  SW_CHECK(rounds == 9 && edits > 300,
+    "after each of 9 rounds (" << edits << " edits) the rings equal a fresh build's");
 }
 
 } // namespace

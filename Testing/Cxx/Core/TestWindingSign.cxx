@@ -1,14 +1,14 @@
-// The sign where the votes disagree (issue #11): the generalized winding number against its brute-force
-// sum, and fields of surfaces with holes, overlaps, flipped faces and crossings signed as that
-// reference says: no node farther than one cell from the surface on the wrong side (the bar allows
-// 0.1%). A disc encloses nothing: unsigned.
-#include "Distance/SoupEdges.h"
+// The sign where the votes disagree (issue #11): the generalized winding number against its
+// brute-force sum, and fields of surfaces with holes, overlaps, flipped faces and crossings signed
+// as that reference says: no node farther than one cell from the surface on the wrong side (the bar
+// allows 0.1%). A disc encloses nothing: unsigned.
 #include "Distance/ConsistentOrientation.h"
 #include "Distance/DistanceSource.h"
-#include "Surface/Icosphere.h"
 #include "Distance/SignedDistance.h"
-#include "TestUtilities.h"
+#include "Distance/SoupEdges.h"
 #include "Distance/WindingNumber.h"
+#include "Surface/Icosphere.h"
+#include "TestUtilities.h"
 
 #include <vtkSMPTools.h>
 
@@ -50,10 +50,13 @@ void fastAgainstExact()
     worst = std::max(worst, std::abs(fast - exact));
     wrongSide += (std::abs(fast) > 0.5) != (std::abs(exact) > 0.5);
   }
-  std::printf("winding number: largest difference from the exact sum %.2e on 2000 points, %d on the other side of 1/2\n",
+  std::printf("winding number: largest difference from the exact sum %.2e on 2000 points, %d on "
+              "the other side of 1/2\n",
     worst, wrongSide);
-  SW_CHECK(worst < 0.02 && wrongSide == 0, "the fast winding number is within 0.02 of the exact sum");
-  SW_CHECK(std::abs(w.exactAt(Vec3(-0.5, 0, 0)) - 1) < 1e-9 && std::abs(w.exactAt(Vec3(0.9, 0.3, 0)) - 2) < 1e-9 &&
+  SW_CHECK(
+    worst < 0.02 && wrongSide == 0, "the fast winding number is within 0.02 of the exact sum");
+  SW_CHECK(std::abs(w.exactAt(Vec3(-0.5, 0, 0)) - 1) < 1e-9 &&
+      std::abs(w.exactAt(Vec3(0.9, 0.3, 0)) - 2) < 1e-9 &&
       std::abs(w.exactAt(Vec3(3, 0, 0))) < 1e-9,
     "1 inside one sphere, 2 where two overlap, 0 outside");
 }
@@ -83,26 +86,31 @@ Field field(const TriangleSoup& soup, int resolution, SweepMethod sweep = SweepM
     if (std::abs(d[n]) > lattice.minSpacing())
     {
       ++f.far;
-      f.wrong += (d[n] < 0) != (std::abs(reference.exactAt(lattice.position(lattice.coordinates(n)))) > 0.5);
+      f.wrong +=
+        (d[n] < 0) != (std::abs(reference.exactAt(lattice.position(lattice.coordinates(n)))) > 0.5);
     }
   }
   return f;
 }
 
-void expectSigned(const std::string& name, const TriangleSoup& soup, SweepMethod sweep = SweepMethod::ClosestPoint,
-  std::vector<int> resolutions = { 24, 48 })
+void expectSigned(const std::string& name, const TriangleSoup& soup,
+  SweepMethod sweep = SweepMethod::ClosestPoint, std::vector<int> resolutions = { 24, 48 })
 {
   for (int resolution : resolutions)
   {
     const Field f = field(soup, resolution, sweep);
-    std::printf("%-34s %3d cells: %s by %s, %lld of %lld far nodes on the wrong side, %lld by winding number, "
+    std::printf("%-34s %3d cells: %s by %s, %lld of %lld far nodes on the wrong side, %lld by "
+                "winding number, "
                 "%lld reoriented, %lld unconfirmed triangles\n",
       name.c_str(), resolution, f.result.isSigned ? "signed" : "UNSIGNED",
-      f.result.signMethod == SignMethod::WindingNumber ? "winding number"
-                                                        : (f.result.signMethod == SignMethod::Votes ? "votes" : "none"),
-      f.wrong, f.far, f.result.windingEvaluations, f.result.reorientedTriangles, f.result.unconfirmedTriangles);
+      f.result.signMethod == SignMethod::WindingNumber
+        ? "winding number"
+        : (f.result.signMethod == SignMethod::Votes ? "votes" : "none"),
+      f.wrong, f.far, f.result.windingEvaluations, f.result.reorientedTriangles,
+      f.result.unconfirmedTriangles);
     SW_CHECK(f.result.completed && f.result.isSigned && f.wrong == 0,
-      name << " at " << resolution << " cells: signed, every node farther than a cell on the winding number's side");
+      name << " at " << resolution
+           << " cells: signed, every node farther than a cell on the winding number's side");
   }
 }
 
@@ -153,22 +161,25 @@ int TestWindingSign(int, char*[])
     fastAgainstExact();
     const TriangleSoup ball = sphere(Vec3(0.05, -0.03, 0.02), 1);
     expectSigned("a sphere missing one triangle", withoutTriangle(ball, 17));
-    // An icosahedron missing a face: the hole is wider than the band (which seals the sphere's small
-    // one), the votes disagree (the field was unsigned, silently, before issue #11).
-    expectSigned("an icosahedron missing a face", withoutTriangle(sphere(Vec3(0.05, -0.03, 0.02), 1, 0), 7),
-      SweepMethod::ClosestPoint, { 48, 64 });
+    // An icosahedron missing a face: the hole is wider than the band (which seals the sphere's
+    // small one), the votes disagree (the field was unsigned, silently, before issue #11).
+    expectSigned("an icosahedron missing a face",
+      withoutTriangle(sphere(Vec3(0.05, -0.03, 0.02), 1, 0), 7), SweepMethod::ClosestPoint,
+      { 48, 64 });
     expectSigned("a sphere missing its cap", [&] {
       TriangleSoup s = ball;
-      s.triangles.erase(std::remove_if(s.triangles.begin(), s.triangles.end(), [&](const auto& t) {
-        return (s.points[t[0]] + s.points[t[1]] + s.points[t[2]]).z() / 3 > 0.7;
-      }), s.triangles.end());
+      s.triangles.erase(std::remove_if(s.triangles.begin(), s.triangles.end(),
+                          [&](const auto& t) {
+                            return (s.points[t[0]] + s.points[t[1]] + s.points[t[2]]).z() / 3 > 0.7;
+                          }),
+        s.triangles.end());
       return s;
     }());
     expectSigned("two overlapping spheres", joined(ball, sphere(Vec3(0.9, 0.2, 0.1), 0.7)));
     expectSigned("half the faces flipped", halfFlipped(ball));
     expectSigned("a sphere pushed through itself", pushedThrough(ball));
-    expectSigned("open and overlapping, Eikonal sweep", joined(withoutTriangle(ball, 17), sphere(Vec3(0.9, 0.2, 0.1), 0.7)),
-      SweepMethod::Eikonal);
+    expectSigned("open and overlapping, Eikonal sweep",
+      joined(withoutTriangle(ball, 17), sphere(Vec3(0.9, 0.2, 0.1), 0.7)), SweepMethod::Eikonal);
     const Field flat = field(disc(), 24);
     SW_CHECK(flat.result.completed && !flat.result.isSigned, "a disc encloses nothing: unsigned");
   });

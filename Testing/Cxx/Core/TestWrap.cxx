@@ -1,12 +1,12 @@
 // A wrap's parts below the filter: a session that is edited between steps (a split surface evolves
 // as the same surface given from the start, also when resumed from the cache), and a point cloud's
 // automatic sizes (AutomaticSizes.h).
+#include "Distance/SignedDistance.h"
 #include "Remeshing/EdgeSplits.h"
 #include "Surface/Icosphere.h"
-#include "Distance/SignedDistance.h"
+#include "TestUtilities.h"
 #include "Wrap/AutomaticSizes.h"
 #include "Wrap/WrapSession.h"
-#include "TestUtilities.h"
 
 #include <cmath>
 #include <memory>
@@ -49,19 +49,20 @@ double largestDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
   return worst;
 }
 
-// Issue #9's bar for edits: split every edge of an icosphere once through the evolver, then step; the
-// result equals stepping that split surface given from the start (the filter's InitialSurface with
-// Initial Relaxation 0 takes the same path: WrapSession with a given surface). The scaled state is
-// interpolated rather than recomputed and phi is recomputed for the new count, so equal means to
-// rounding. And the cache accepts the edit: going back to a step after it and forward again gives the
-// same surface bit for bit.
+// Issue #9's bar for edits: split every edge of an icosphere once through the evolver, then step;
+// the result equals stepping that split surface given from the start (the filter's InitialSurface
+// with Initial Relaxation 0 takes the same path: WrapSession with a given surface). The scaled
+// state is interpolated rather than recomputed and phi is recomputed for the new count, so equal
+// means to rounding. And the cache accepts the edit: going back to a step after it and forward
+// again gives the same surface bit for bit.
 void splitsBetweenSteps()
 {
   const WrapFields field{ TargetDistance(unitSphereField()), TargetDistance(unitSphereField()) };
   const TriangleSoup sphere = icosphere(2, Vec3::Zero(), 1.6);
   SurfaceMesh split = meshOf(sphere);
   splitEdges(split, edgesOf(split));
-  SW_CHECK(split.vertexCount() == 642 && split.triangleCount() == 1280, "every edge of level 2 split once: level 3's counts");
+  SW_CHECK(split.vertexCount() == 642 && split.triangleCount() == 1280,
+    "every edge of level 2 split once: level 3's counts");
   Box box;
   box.extend(Vec3::Constant(-1));
   box.extend(Vec3::Constant(1));
@@ -75,18 +76,23 @@ void splitsBetweenSteps()
   {
     return;
   }
-  SW_CHECK(edited->edit([](SurfaceMesh& mesh) { splitEdges(mesh, edgesOf(mesh)); }), "the split is accepted");
-  SW_CHECK(edited->evolver().mesh().triangles() == split.triangles(), "the same connectivity as the split surface");
+  SW_CHECK(edited->edit([](SurfaceMesh& mesh) { splitEdges(mesh, edgesOf(mesh)); }),
+    "the split is accepted");
+  SW_CHECK(edited->evolver().mesh().triangles() == split.triangles(),
+    "the same connectivity as the split surface");
   edited->advanceTo(steps);
   given->advanceTo(steps);
   const std::vector<Vec3> a = edited->surface(steps).points, b = given->surface(steps).points;
   const double difference = largestDistance(a, b);
-  std::printf("split every edge, then %d steps: %d vertices; largest difference from the split surface "
-              "given at the start %.3g (radius 1)\n", steps, static_cast<int>(a.size()), difference);
+  std::printf(
+    "split every edge, then %d steps: %d vertices; largest difference from the split surface "
+    "given at the start %.3g (radius 1)\n",
+    steps, static_cast<int>(a.size()), difference);
   SW_CHECK(a.size() == b.size() && difference < 1e-8, "the edited evolution equals the given one");
 
   // Mid-way: split at step 10 and go on to 25; against the same with a cache too small to keep more
-  // than step 0, the edit and the newest step, so that step 15 is recomputed from the edited step 10.
+  // than step 0, the edit and the newest step, so that step 15 is recomputed from the edited
+  // step 10.
   std::unique_ptr<WrapSession> once, again;
   WrapSession::create(field, plan, meshOf(sphere), once);
   plan.settings.cacheMiB = 1e-6;
@@ -99,7 +105,8 @@ void splitsBetweenSteps()
   }
   const int computed = again->computedSteps();
   again->advanceTo(15);
-  SW_CHECK(again->computedSteps() == computed + 5, "step 15 was recomputed from the edited step 10");
+  SW_CHECK(
+    again->computedSteps() == computed + 5, "step 15 was recomputed from the edited step 10");
   SW_CHECK(largestDistance(once->surface(15).points, again->surface(15).points) == 0,
     "resuming after an edit from the cache is bit for bit");
 }
@@ -112,10 +119,10 @@ double fieldCellOf(const Box& box, const WrapSettings& settings)
   return lattice.spacing.maxCoeff();
 }
 
-// Issue #13: a point cloud's automatic Gap Size is 8 spacings, at least 1.5 cells of the field; where
-// those cells would exceed 11 spacings (a dense cloud) the field is made finer, up to 1.5 times, and
-// where 8 spacings span between 1.5 and 2.5 cells (a sparser clean cloud), finer too (up to 1.5 times),
-// so that they span 2.5.
+// Issue #13: a point cloud's automatic Gap Size is 8 spacings, at least 1.5 cells of the field;
+// where those cells would exceed 11 spacings (a dense cloud) the field is made finer, up to 1.5
+// times, and where 8 spacings span between 1.5 and 2.5 cells (a sparser clean cloud), finer too (up
+// to 1.5 times), so that they span 2.5.
 void pointSizes()
 {
   const Box box{ Vec3::Zero(), Vec3::Ones() };
@@ -126,36 +133,43 @@ void pointSizes()
     cloud.spacing = spacing;
     return cloud;
   };
-  const double cell = cellOf(withPointSizes(defaults, box, spaced(1.0 / defaults.resolution), false));
+  const double cell =
+    cellOf(withPointSizes(defaults, box, spaced(1.0 / defaults.resolution), false));
   const WrapSettings sparse = withPointSizes(defaults, box, spaced(cell), false);
   SW_CHECK(sparse.resolution == defaults.resolution && std::abs(*sparse.gapSize - 8 * cell) < 1e-12,
-    "a sparse cloud: Resolution " << sparse.resolution << ", gap " << *sparse.gapSize / cell << " spacings (8)");
-  // 1.5 cells at 80 are about 1.25 times 11 spacings: a finer field, the gap at its floor of 1.5 cells
-  // and within 11 spacings.
+    "a sparse cloud: Resolution " << sparse.resolution << ", gap " << *sparse.gapSize / cell
+                                  << " spacings (8)");
+  // 1.5 cells at 80 are about 1.25 times 11 spacings: a finer field, the gap at its floor of 1.5
+  // cells and within 11 spacings.
   const double spacing = 1.5 * cell / (11 * 1.25);
   const WrapSettings dense = withPointSizes(defaults, box, spaced(spacing), false);
   const double floor = 1.5 * cellOf(dense);
-  SW_CHECK(dense.resolution > 80 && dense.resolution < 120 && *dense.gapSize <= 11 * spacing * 1.01 &&
-      std::abs(*dense.gapSize - floor) < 0.01 * floor,
-    "a dense cloud: Resolution " << dense.resolution << " (80 to 120), gap " << *dense.gapSize / spacing
-                                 << " spacings (at most 11), " << *dense.gapSize / floor << " times 1.5 cells");
+  SW_CHECK(dense.resolution > 80 && dense.resolution < 120 &&
+      *dense.gapSize <= 11 * spacing * 1.01 && std::abs(*dense.gapSize - floor) < 0.01 * floor,
+    "a dense cloud: Resolution " << dense.resolution << " (80 to 120), gap "
+                                 << *dense.gapSize / spacing << " spacings (at most 11), "
+                                 << *dense.gapSize / floor << " times 1.5 cells");
   const WrapSettings denser = withPointSizes(defaults, box, spaced(cell / 100), false);
-  SW_CHECK(denser.resolution == 120, "a denser cloud: Resolution " << denser.resolution << " (at most 1.5 times 80)");
+  SW_CHECK(denser.resolution == 120,
+    "a denser cloud: Resolution " << denser.resolution << " (at most 1.5 times 80)");
   const WrapSettings between = withPointSizes(defaults, box, spaced(2 * cell / 8), false);
   const double cells = *between.gapSize / cellOf(between);
   SW_CHECK(between.resolution > 90 && between.resolution < 120 && cells > 2.45 && cells < 2.7,
-    "a gap of 2 cells: Resolution " << between.resolution << " (90 to 120), the gap " << cells << " cells (2.5)");
+    "a gap of 2 cells: Resolution " << between.resolution << " (90 to 120), the gap " << cells
+                                    << " cells (2.5)");
   WrapSettings given = defaults;
   given.gapSize = 0.01;
   const WrapSettings kept = withPointSizes(given, box, spaced(cell / 100), false);
   SW_CHECK(kept.resolution == defaults.resolution && *kept.gapSize == 0.01,
-    "a given Gap Size: Resolution " << kept.resolution << " and the gap " << *kept.gapSize << " kept");
+    "a given Gap Size: Resolution " << kept.resolution << " and the gap " << *kept.gapSize
+                                    << " kept");
 }
 
-// A noisy cloud's automatic Target Edge Length may be coarser than a clean one's: 16 times its noise,
-// between diagonal / 50 and diagonal / 30 (its fitted surface holds no finer detail than the noise
-// leaves). 20,000 points on a unit sphere, clean (diagonal / 50, as 10 spacings exceed it) and with
-// noise of 0.25% of the box's diagonal, as the benchmark's noisy clouds (about diagonal / 30).
+// A noisy cloud's automatic Target Edge Length may be coarser than a clean one's: 16 times its
+// noise, between diagonal / 50 and diagonal / 30 (its fitted surface holds no finer detail than the
+// noise leaves). 20,000 points on a unit sphere, clean (diagonal / 50, as 10 spacings exceed it)
+// and with noise of 0.25% of the box's diagonal, as the benchmark's noisy clouds (about diagonal /
+// 30).
 void noisyPointLength()
 {
   for (const double sigma : { 0.0, 0.0025 * 2 * std::sqrt(3.0) })
@@ -163,24 +177,26 @@ void noisyPointLength()
     const std::vector<Vec3> points = testing::spherePoints(20000, sigma, sigma > 0 ? 4 : 3);
     const PointCloud cloud = measureCloud(PointList(points.begin(), points.end()));
     const Box box = Box::around(points);
-    const double divisor = box.diagonal() / *withPointSizes(WrapSettings(), box, cloud, false).targetEdgeLength;
-    std::cout << "sphere, noise " << sigma << ": spacing " << cloud.spacing << ", noise " << cloud.noise()
-              << ", Target Edge Length diagonal / " << divisor << std::endl;
+    const double divisor =
+      box.diagonal() / *withPointSizes(WrapSettings(), box, cloud, false).targetEdgeLength;
+    std::cout << "sphere, noise " << sigma << ": spacing " << cloud.spacing << ", noise "
+              << cloud.noise() << ", Target Edge Length diagonal / " << divisor << std::endl;
     SW_CHECK(sigma > 0 ? divisor >= 30 * (1 - 1e-9) && divisor < 35 : std::abs(divisor - 50) < 1e-6,
       "sphere, noise " << sigma << ": Target Edge Length diagonal / " << divisor
                        << (sigma > 0 ? " (30 to 35)" : " (50)"));
   }
 }
 
-// A sparser clean cloud whose 8 spacings span under 2.5 cells gets a finer field; with noise it does
-// not (the noise blurs what the finer field would part). Points on a unit sphere whose 8 spacings
-// span about 2 cells at Resolution 80: 50,000 clean, 100,000 with noise of 0.25% of the diagonal
-// (noise spreads the points apart).
+// A sparser clean cloud whose 8 spacings span under 2.5 cells gets a finer field; with noise it
+// does not (the noise blurs what the finer field would part). Points on a unit sphere whose 8
+// spacings span about 2 cells at Resolution 80: 50,000 clean, 100,000 with noise of 0.25% of the
+// diagonal (noise spreads the points apart).
 void sparseCloudResolution()
 {
   for (const double sigma : { 0.0, 0.0025 * 2 * std::sqrt(3.0) })
   {
-    const std::vector<Vec3> points = testing::spherePoints(sigma > 0 ? 100000 : 50000, sigma, sigma > 0 ? 6 : 5);
+    const std::vector<Vec3> points =
+      testing::spherePoints(sigma > 0 ? 100000 : 50000, sigma, sigma > 0 ? 6 : 5);
     const PointCloud cloud = measureCloud(PointList(points.begin(), points.end()));
     const Box box = Box::around(points);
     const WrapSettings defaults;
@@ -189,13 +205,16 @@ void sparseCloudResolution()
     at80.resolution = defaults.resolution;
     const double cells = *s.gapSize / fieldCellOf(box, s);
     const double unrefined = 8 * cloud.spacing / fieldCellOf(box, at80);
-    std::cout << "sphere of " << points.size() << " points, noise " << sigma << ": Resolution " << s.resolution
-              << ", gap " << *s.gapSize << " = " << cells << " cells, 8 spacings " << unrefined << " cells at 80"
-              << std::endl;
-    SW_CHECK(unrefined > 1.5 && unrefined < 2.4, "the sphere's 8 spacings span " << unrefined << " cells at 80 (1.5 to 2.4)");
-    SW_CHECK(sigma > 0 ? s.resolution == defaults.resolution : s.resolution > defaults.resolution && cells > 2.45,
-      "sphere of " << points.size() << " points, noise " << sigma << ": Resolution " << s.resolution << ", gap "
-                   << cells << (sigma > 0 ? " cells (Resolution 80)" : " cells (finer, 2.5 cells)"));
+    std::cout << "sphere of " << points.size() << " points, noise " << sigma << ": Resolution "
+              << s.resolution << ", gap " << *s.gapSize << " = " << cells << " cells, 8 spacings "
+              << unrefined << " cells at 80" << std::endl;
+    SW_CHECK(unrefined > 1.5 && unrefined < 2.4,
+      "the sphere's 8 spacings span " << unrefined << " cells at 80 (1.5 to 2.4)");
+    SW_CHECK(sigma > 0 ? s.resolution == defaults.resolution
+                       : s.resolution > defaults.resolution && cells > 2.45,
+      "sphere of " << points.size() << " points, noise " << sigma << ": Resolution " << s.resolution
+                   << ", gap " << cells
+                   << (sigma > 0 ? " cells (Resolution 80)" : " cells (finer, 2.5 cells)"));
   }
 }
 

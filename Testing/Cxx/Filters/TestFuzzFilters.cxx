@@ -1,9 +1,10 @@
-// A bounded fuzz run of both filters: random meshes (ids out of range, NaN and infinite points, huge and
-// tiny scales, degenerate and non-manifold triangles, polygons, strips, lines, composites), random
-// property values, random distance fields and starting surfaces, random request times and aborts. The
-// same two filter objects take every case, so state left behind by one case meets the next. Every
-// output must be empty or valid (finite points, ids in range, a full finite field), and every tenth
-// case a good input must still give a good output. A crash or a sanitizer report fails the test.
+// A bounded fuzz run of both filters: random meshes (ids out of range, NaN and infinite points,
+// huge and tiny scales, degenerate and non-manifold triangles, polygons, strips, lines,
+// composites), random property values, random distance fields and starting surfaces, random request
+// times and aborts. The same two filter objects take every case, so state left behind by one case
+// meets the next. Every output must be empty or valid (finite points, ids in range, a full finite
+// field), and every tenth case a good input must still give a good output. A crash or a sanitizer
+// report fails the test.
 //
 // Usage: ShrinkWrapCxxTests TestFuzzFilters [seconds=30] [seed=1] [first case=0]
 // Each case k is made from (seed, k) alone: "case k" in the output replays with first case = k.
@@ -36,14 +37,21 @@ public:
   }
   bool chance(double p) { return std::uniform_real_distribution<double>(0, 1)(this->Engine) < p; }
   int between(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(this->Engine); }
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(this->Engine); }
+  double uniform(double lo, double hi)
+  {
+    return std::uniform_real_distribution<double>(lo, hi)(this->Engine);
+  }
   template <typename T>
   T pick(std::initializer_list<T> values)
   {
     return *(values.begin() + this->between(0, static_cast<int>(values.size()) - 1));
   }
   // A value that is usually sane, sometimes absurd.
-  double value(double sane) { return this->chance(0.95) ? sane : this->pick({ 0.0, -sane, 1e-12, 1e12, 1e300, kNaN, kInf, -kInf }); }
+  double value(double sane)
+  {
+    return this->chance(0.95) ? sane
+                              : this->pick({ 0.0, -sane, 1e-12, 1e12, 1e300, kNaN, kInf, -kInf });
+  }
 
 private:
   std::mt19937_64 Engine;
@@ -67,7 +75,8 @@ vtkSmartPointer<vtkPolyData> randomMesh(Dice& dice)
   {
     return mesh; // empty
   }
-  const double scale = dice.chance(0.8) ? dice.uniform(0.1, 10) : std::pow(10.0, dice.between(-40, 200));
+  const double scale =
+    dice.chance(0.8) ? dice.uniform(0.1, 10) : std::pow(10.0, dice.between(-40, 200));
   const double shift = dice.chance(0.8) ? 0 : std::pow(10.0, dice.between(0, 200));
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -80,8 +89,8 @@ vtkSmartPointer<vtkPolyData> randomMesh(Dice& dice)
       double x[3];
       s->GetPoint(i, x);
       const double jitter = dice.chance(0.3) ? 0.2 : 0;
-      points->InsertNextPoint(scale * (x[0] + dice.uniform(-jitter, jitter + 1e-300)) + shift, scale * x[1],
-        scale * x[2]);
+      points->InsertNextPoint(scale * (x[0] + dice.uniform(-jitter, jitter + 1e-300)) + shift,
+        scale * x[1], scale * x[2]);
     }
     polys->DeepCopy(s->GetPolys());
   }
@@ -90,13 +99,15 @@ vtkSmartPointer<vtkPolyData> randomMesh(Dice& dice)
     const int n = dice.between(1, 40);
     for (int i = 0; i < n; ++i)
     {
-      points->InsertNextPoint(scale * dice.uniform(-1, 1) + shift, scale * dice.uniform(-1, 1), scale * dice.uniform(-1, 1));
+      points->InsertNextPoint(scale * dice.uniform(-1, 1) + shift, scale * dice.uniform(-1, 1),
+        scale * dice.uniform(-1, 1));
     }
   }
   const vtkIdType np = points->GetNumberOfPoints();
   auto id = [&]() -> vtkIdType {
-    return dice.chance(0.01) ? dice.pick<vtkIdType>({ -1, np, np + 1000, std::numeric_limits<int>::max() })
-                             : dice.between(0, static_cast<int>(np) - 1);
+    return dice.chance(0.01)
+      ? dice.pick<vtkIdType>({ -1, np, np + 1000, std::numeric_limits<int>::max() })
+      : dice.between(0, static_cast<int>(np) - 1);
   };
   const int extra = dice.between(0, 30);
   for (int c = 0; c < extra; ++c)
@@ -107,12 +118,14 @@ vtkSmartPointer<vtkPolyData> randomMesh(Dice& dice)
       i = id();
     }
     const int kind = dice.between(0, 9);
-    vtkCellArray* cells = kind < 7 ? polys.Get() : (kind == 7 ? strips.Get() : (kind == 8 ? lines.Get() : verts.Get()));
+    vtkCellArray* cells =
+      kind < 7 ? polys.Get() : (kind == 7 ? strips.Get() : (kind == 8 ? lines.Get() : verts.Get()));
     cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
   }
   if (dice.chance(0.03))
   {
-    points->SetPoint(dice.between(0, static_cast<int>(np) - 1), dice.pick({ kNaN, kInf, -kInf }), 0, 0);
+    points->SetPoint(
+      dice.between(0, static_cast<int>(np) - 1), dice.pick({ kNaN, kInf, -kInf }), 0, 0);
   }
   mesh->SetPoints(points);
   mesh->SetPolys(polys);
@@ -154,8 +167,10 @@ void randomizeDistance(vtkMeshSignedDistance* f, Dice& dice)
   f->SetBoxScale(dice.value(1.1));
   f->SetOffsetFactor(dice.value(1.0));
   f->SetUseExplicitGrid(dice.chance(0.15));
-  f->SetOutputBounds(dice.value(-2), dice.value(2), dice.value(-2), dice.value(2), dice.value(-2), dice.value(2));
-  f->SetOutputDimensions(dice.between(-2, 20), dice.between(-2, 20), dice.chance(0.95) ? dice.between(-2, 20) : 1 << 30);
+  f->SetOutputBounds(
+    dice.value(-2), dice.value(2), dice.value(-2), dice.value(2), dice.value(-2), dice.value(2));
+  f->SetOutputDimensions(
+    dice.between(-2, 20), dice.between(-2, 20), dice.chance(0.95) ? dice.between(-2, 20) : 1 << 30);
   f->SetSweepMethod(dice.between(0, 1));
   f->SetBandLayers(dice.between(-2, 3));
   f->SetComputeSign(dice.chance(0.8));
@@ -164,7 +179,8 @@ void randomizeDistance(vtkMeshSignedDistance* f, Dice& dice)
 void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
 {
   f->SetTimeStep(dice.value(0.015));
-  f->SetNumberOfSteps(dice.chance(0.9) ? dice.between(-2, 12) : dice.pick({ 1000, std::numeric_limits<int>::max() }));
+  f->SetNumberOfSteps(
+    dice.chance(0.9) ? dice.between(-2, 12) : dice.pick({ 1000, std::numeric_limits<int>::max() }));
   f->SetSubdivisionLevel(dice.chance(0.9) ? dice.between(0, 2) : dice.pick({ -1, 3, 9 }));
   f->SetC1(dice.value(1));
   f->SetC2(dice.value(1));
@@ -184,9 +200,11 @@ void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
   f->SetStartOffset(dice.value(3));
   f->SetGapSize(dice.chance(0.5) ? 0 : dice.value(0.2));
   f->SetRemeshing(dice.chance(0.7));
-  // Coarse (a few hundred vertices on the unit sphere): the fuzz runs up to 10,000 steps under ASan.
+  // Coarse (a few hundred vertices on the unit sphere): the fuzz runs up to 10,000 steps under
+  // ASan.
   f->SetTargetEdgeLength(dice.value(0.4));
-  f->SetEdgeLengthRange(dice.chance(0.5) ? 1 : dice.value(0.6), dice.chance(0.5) ? 1 : dice.value(1.6));
+  f->SetEdgeLengthRange(
+    dice.chance(0.5) ? 1 : dice.value(0.6), dice.chance(0.5) ? 1 : dice.value(1.6));
   f->SetInitialRelaxation(dice.between(-1, 12));
   f->SetAutomaticScaling(dice.chance(0.8));
   f->SetSolverTolerance(dice.value(1e-6));
@@ -300,7 +318,9 @@ int TestFuzzFilters(int argc, char* argv[])
 
   const auto start = std::chrono::steady_clock::now();
   int cases = 0, fields = 0, wraps = 0;
-  for (int k = first; std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds; ++k)
+  for (int k = first;
+       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds;
+       ++k)
   {
     Dice dice(seed * 1000003u + static_cast<std::uint64_t>(k));
     std::cout << "case " << k << std::endl; // the last one printed is the one that crashed
@@ -311,7 +331,8 @@ int TestFuzzFilters(int argc, char* argv[])
     distance->SetInputData(target);
     distancePlan = { 0, dice.chance(0.1) ? dice.between(1, 5) : 0 };
     distance->Update();
-    SW_CHECK(validField(distance->GetOutput()), "case " << k << ": Mesh Signed Distance gives a valid or empty field");
+    SW_CHECK(validField(distance->GetOutput()),
+      "case " << k << ": Mesh Signed Distance gives a valid or empty field");
     fields += distance->GetOutput()->GetNumberOfPoints() > 0;
 
     randomizeWrap(wrap, dice);
@@ -324,8 +345,9 @@ int TestFuzzFilters(int argc, char* argv[])
     {
       const double tau = wrap->GetTimeStep();
       // Times past the end, but no more than 20 steps' work when there are thousands.
-      const double t = steps > 20 ? tau * dice.between(-2, 20)
-                                  : dice.pick({ 0.0, tau * dice.between(-3, 15), kNaN, kInf, -kInf, 1e9, -1e300 });
+      const double t = steps > 20
+        ? tau * dice.between(-2, 20)
+        : dice.pick({ 0.0, tau * dice.between(-3, 15), kNaN, kInf, -kInf, 1e9, -1e300 });
       if (steps <= 20 && dice.chance(0.2))
       {
         wrap->Update(); // no time asked: the last step
@@ -334,9 +356,12 @@ int TestFuzzFilters(int argc, char* argv[])
       {
         wrap->UpdateTimeStep(t);
       }
-      SW_CHECK(validWrap(wrap->GetOutputDataObject(0)), "case " << k << ": Shrink Wrap gives a valid or empty surface");
-      wraps += !vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0)).empty() &&
-        vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0))[0]->GetNumberOfPoints() > 0;
+      SW_CHECK(validWrap(wrap->GetOutputDataObject(0)),
+        "case " << k << ": Shrink Wrap gives a valid or empty surface");
+      wraps +=
+        !vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0)).empty() &&
+        vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0))[0]
+            ->GetNumberOfPoints() > 0;
     }
 
     if (k % 10 == 9) // the same filters still work on a good input with sane settings
@@ -383,7 +408,8 @@ int TestFuzzFilters(int argc, char* argv[])
       wrap->SetResolution(24);
       wrap->SetCacheMemoryLimit(512);
       wrap->Update();
-      SW_CHECK(wrap->GetOutput() && wrap->GetOutput()->GetNumberOfPoints() == 162 && validWrap(wrap->GetOutput()),
+      SW_CHECK(wrap->GetOutput() && wrap->GetOutput()->GetNumberOfPoints() == 162 &&
+          validWrap(wrap->GetOutput()),
         "case " << k << ": Shrink Wrap lives on");
     }
   }

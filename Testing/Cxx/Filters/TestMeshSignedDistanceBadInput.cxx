@@ -1,5 +1,6 @@
 // Bad input never crashes and never corrupts: each case gets a clear error or warning and an empty
-// (or valid) output, and the same filter then computes a good input. Run under AddressSanitizer in CI.
+// (or valid) output, and the same filter then computes a good input. Run under AddressSanitizer in
+// CI.
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 
@@ -20,11 +21,13 @@ struct Messages
 void capture(vtkObject*, unsigned long id, void* clientData, void* callData)
 {
   auto* m = static_cast<Messages*>(clientData);
-  (id == vtkCommand::ErrorEvent ? m->errors : m->warnings).push_back(static_cast<const char*>(callData));
+  (id == vtkCommand::ErrorEvent ? m->errors : m->warnings)
+    .push_back(static_cast<const char*>(callData));
 }
 
 vtkSmartPointer<vtkPolyData> mesh(const std::vector<std::array<double, 3>>& points,
-  const std::vector<std::vector<vtkIdType>>& polys, const std::vector<std::vector<vtkIdType>>& lines = {})
+  const std::vector<std::vector<vtkIdType>>& polys,
+  const std::vector<std::vector<vtkIdType>>& lines = {})
 {
   vtkNew<vtkPoints> p;
   for (const auto& x : points)
@@ -47,8 +50,10 @@ vtkSmartPointer<vtkPolyData> mesh(const std::vector<std::array<double, 3>>& poin
   return m;
 }
 
-const std::vector<std::array<double, 3>> kTetPoints = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-const std::vector<std::vector<vtkIdType>> kTet = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } };
+const std::vector<std::array<double, 3>> kTetPoints = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 },
+  { 0, 0, 1 } };
+const std::vector<std::vector<vtkIdType>> kTet = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 },
+  { 1, 2, 3 } };
 
 enum class Expect
 {
@@ -80,7 +85,8 @@ void run(const std::string& name, vtkMeshSignedDistance* filter, vtkPolyData* in
     said += "[error] " + m;
   for (const auto& m : messages.warnings)
     said += "[warning] " + m;
-  std::cout << name << ": " << (said.empty() ? "(nothing said)" : said.substr(said.find("): ") + 3)) << std::endl;
+  std::cout << name << ": " << (said.empty() ? "(nothing said)" : said.substr(said.find("): ") + 3))
+            << std::endl;
 
   vtkImageData* out = filter->GetOutput();
   if (expect == Expect::ErrorAndEmpty)
@@ -99,7 +105,8 @@ void run(const std::string& name, vtkMeshSignedDistance* filter, vtkPolyData* in
     }
     SW_CHECK(finite, name << ": every value finite");
   }
-  SW_CHECK(mustSay.empty() || said.find(mustSay) != std::string::npos, name << ": the message says '" << mustSay << "'");
+  SW_CHECK(mustSay.empty() || said.find(mustSay) != std::string::npos,
+    name << ": the message says '" << mustSay << "'");
 
   // Whatever happened, the same filter computes a good mesh next, with default settings.
   vtkNew<vtkSphereSource> sphere;
@@ -111,7 +118,8 @@ void run(const std::string& name, vtkMeshSignedDistance* filter, vtkPolyData* in
   filter->SetOffsetFactor(1.0);
   filter->UseExplicitGridOff();
   filter->Update();
-  SW_CHECK(filter->GetOutput()->GetNumberOfPoints() == 25 * 25 * 25, name << ": the pipeline lives on");
+  SW_CHECK(
+    filter->GetOutput()->GetNumberOfPoints() == 25 * 25 * 25, name << ": the pipeline lives on");
 }
 } // namespace
 
@@ -124,24 +132,36 @@ int TestMeshSignedDistanceBadInput(int, char*[])
   run("empty polydata", filter, vtkNew<vtkPolyData>(), Expect::ErrorAndEmpty, "no polygons");
   // Without polygons the points are measured (issue #13): a cloud, or the points of lines.
   run("points without cells", filter, mesh(kTetPoints, {}), Expect::ValidOutput, "");
-  run("lines only", filter, mesh(kTetPoints, {}, { { 0, 1 }, { 1, 2, 3 } }), Expect::ValidOutput, "");
-  run("collinear points", filter, mesh({ { 0, 0, 0 }, { 1, 1, 1 }, { 2, 2, 2 } }, {}), Expect::ValidOutput, "");
-  run("coplanar points", filter, mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 } }, {}), Expect::ValidOutput, "");
+  run(
+    "lines only", filter, mesh(kTetPoints, {}, { { 0, 1 }, { 1, 2, 3 } }), Expect::ValidOutput, "");
+  run("collinear points", filter, mesh({ { 0, 0, 0 }, { 1, 1, 1 }, { 2, 2, 2 } }, {}),
+    Expect::ValidOutput, "");
+  run("coplanar points", filter, mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 } }, {}),
+    Expect::ValidOutput, "");
   run("one point", filter, mesh({ { 1, 2, 3 } }, {}), Expect::ErrorAndEmpty, "no extent");
-  run("all points equal", filter, mesh({ { 1, 2, 3 }, { 1, 2, 3 }, { 1, 2, 3 } }, {}), Expect::ErrorAndEmpty, "no extent");
-  run("a NaN point", filter, mesh({ { 0, 0, 0 }, { 1, nan, 0 }, { 0, 1, 0 } }, {}), Expect::ErrorAndEmpty, "NaN");
-  run("lines beside a closed mesh", filter, mesh(kTetPoints, kTet, { { 0, 1 } }), Expect::ValidOutput, "Ignoring 1 lines");
-  run("NaN coordinate", filter, mesh({ { 0, 0, 0 }, { 1, nan, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, kTet),
+  run("all points equal", filter, mesh({ { 1, 2, 3 }, { 1, 2, 3 }, { 1, 2, 3 } }, {}),
+    Expect::ErrorAndEmpty, "no extent");
+  run("a NaN point", filter, mesh({ { 0, 0, 0 }, { 1, nan, 0 }, { 0, 1, 0 } }, {}),
     Expect::ErrorAndEmpty, "NaN");
-  run("infinite coordinate", filter, mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, inf, 0 }, { 0, 0, 1 } }, kTet),
-    Expect::ErrorAndEmpty, "infinite");
+  run("lines beside a closed mesh", filter, mesh(kTetPoints, kTet, { { 0, 1 } }),
+    Expect::ValidOutput, "Ignoring 1 lines");
+  run("NaN coordinate", filter,
+    mesh({ { 0, 0, 0 }, { 1, nan, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, kTet), Expect::ErrorAndEmpty,
+    "NaN");
+  run("infinite coordinate", filter,
+    mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, inf, 0 }, { 0, 0, 1 } }, kTet), Expect::ErrorAndEmpty,
+    "infinite");
   run("all triangles degenerate", filter,
-    mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } }, { { 0, 1, 2 }, { 0, 0, 1 } }), Expect::ErrorAndEmpty, "degenerate");
-  run("point id out of range", filter, mesh(kTetPoints, { { 0, 1, 7 } }), Expect::ErrorAndEmpty, "out of range");
-  run("single triangle (flat box)", filter, mesh(kTetPoints, { { 0, 1, 2 } }), Expect::ValidOutput, "unsigned");
+    mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } }, { { 0, 1, 2 }, { 0, 0, 1 } }),
+    Expect::ErrorAndEmpty, "degenerate");
+  run("point id out of range", filter, mesh(kTetPoints, { { 0, 1, 7 } }), Expect::ErrorAndEmpty,
+    "out of range");
+  run("single triangle (flat box)", filter, mesh(kTetPoints, { { 0, 1, 2 } }), Expect::ValidOutput,
+    "unsigned");
   run("some degenerate and non-manifold triangles", filter,
     mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 2, 0, 0 }, { 1, 1, 1 } },
-      { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 }, { 0, 1, 4 }, { 1, 2, 5 }, { 0, 1, 5 } }),
+      { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 }, { 0, 1, 4 }, { 1, 2, 5 },
+        { 0, 1, 5 } }),
     Expect::ValidOutput, "");
   run("Resolution 0", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "Resolution",
     [](vtkMeshSignedDistance* f) { f->SetResolution(0); });
@@ -151,25 +171,25 @@ int TestMeshSignedDistanceBadInput(int, char*[])
     [](vtkMeshSignedDistance* f) { f->SetCellSize(-0.1); });
   run("BoxScale zero", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "BoxScale",
     [](vtkMeshSignedDistance* f) { f->SetBoxScale(0); });
-  run("OffsetFactor negative", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "OffsetFactor",
-    [](vtkMeshSignedDistance* f) { f->SetOffsetFactor(-1); });
-  run("grid too large for memory", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "would need",
-    [](vtkMeshSignedDistance* f) { f->SetResolution(200000); });
-  run("cell size too small for memory", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "would need",
-    [](vtkMeshSignedDistance* f) { f->SetCellSize(1e-6); });
-  run("explicit grid, inverted bounds", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "bounds",
-    [](vtkMeshSignedDistance* f) {
+  run("OffsetFactor negative", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
+    "OffsetFactor", [](vtkMeshSignedDistance* f) { f->SetOffsetFactor(-1); });
+  run("grid too large for memory", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
+    "would need", [](vtkMeshSignedDistance* f) { f->SetResolution(200000); });
+  run("cell size too small for memory", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
+    "would need", [](vtkMeshSignedDistance* f) { f->SetCellSize(1e-6); });
+  run("explicit grid, inverted bounds", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
+    "bounds", [](vtkMeshSignedDistance* f) {
       f->UseExplicitGridOn();
       f->SetOutputBounds(1, -1, 0, 1, 0, 1);
     });
-  run("explicit grid, one node", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "dimensions",
-    [](vtkMeshSignedDistance* f) {
+  run("explicit grid, one node", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
+    "dimensions", [](vtkMeshSignedDistance* f) {
       f->UseExplicitGridOn();
       f->SetOutputBounds(-1, 1, -1, 1, -1, 1);
       f->SetOutputDimensions(1, 10, 10);
     });
-  run("explicit grid too large for memory", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "would need",
-    [](vtkMeshSignedDistance* f) {
+  run("explicit grid too large for memory", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
+    "would need", [](vtkMeshSignedDistance* f) {
       f->UseExplicitGridOn();
       f->SetOutputBounds(-1, 1, -1, 1, -1, 1);
       f->SetOutputDimensions(100000, 100000, 100000);

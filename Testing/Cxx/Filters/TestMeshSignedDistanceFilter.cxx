@@ -7,14 +7,14 @@
 
 #include <algorithm>
 #include <vtkClipPolyData.h>
-#include <vtkDiskSource.h>
-#include <vtkTriangleFilter.h>
 #include <vtkCommand.h>
 #include <vtkContourFilter.h>
+#include <vtkDiskSource.h>
 #include <vtkPlane.h>
 #include <vtkReverseSense.h>
 #include <vtkSphereSource.h>
 #include <vtkStringArray.h>
+#include <vtkTriangleFilter.h>
 
 namespace
 {
@@ -77,13 +77,15 @@ int TestMeshSignedDistanceFilter(int, char*[])
   filter->Update();
   vtkImageData* image = filter->GetOutput();
 
-  // The grid: 60 cells along the longest axis, equal spacing, bounds 1.1 x 3 = 3.3 times the sphere's.
+  // The grid: 60 cells along the longest axis, equal spacing, bounds 1.1 x 3 = 3.3 times the
+  // sphere's.
   int dims[3];
   double spacing[3], bounds[6];
   image->GetDimensions(dims);
   image->GetSpacing(spacing);
   image->GetBounds(bounds);
-  SW_CHECK(std::max({ dims[0], dims[1], dims[2] }) == 61, "Resolution counts cells along the longest axis");
+  SW_CHECK(std::max({ dims[0], dims[1], dims[2] }) == 61,
+    "Resolution counts cells along the longest axis");
   SW_CHECK(spacing[0] == spacing[1] && spacing[1] == spacing[2], "equal spacing on all axes");
   SW_CHECK(std::abs((bounds[1] - bounds[0]) - 3.3 * 2.0) < 1e-9 * 2.0 + spacing[0],
     "BoxScale 1.1 and OffsetFactor 1 give 3.3 times the mesh extent");
@@ -94,7 +96,8 @@ int TestMeshSignedDistanceFilter(int, char*[])
     placed->Update();
     double b[6];
     placed->GetOutput()->GetBounds(b);
-    SW_CHECK(std::abs((b[1] - b[0]) - 1.43 * 2.0) < 1e-9 * 2.0 + placed->GetOutput()->GetSpacing()[0],
+    SW_CHECK(
+      std::abs((b[1] - b[0]) - 1.43 * 2.0) < 1e-9 * 2.0 + placed->GetOutput()->GetSpacing()[0],
       "by default BoxScale 1.1 and OffsetFactor 0.15 give 1.43 times the mesh extent");
   }
   auto* values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("SignedDistance"));
@@ -106,8 +109,10 @@ int TestMeshSignedDistanceFilter(int, char*[])
 
   // Progress: increasing, reaching 1.
   SW_CHECK(!events.progress.empty() && events.progress.back() == 1.0, "progress ends at 1");
-  SW_CHECK(std::is_sorted(events.progress.begin(), events.progress.end()), "progress never goes back");
-  SW_CHECK(events.progress.size() >= 8, "progress reported through the stages (" << events.progress.size() << ")");
+  SW_CHECK(
+    std::is_sorted(events.progress.begin(), events.progress.end()), "progress never goes back");
+  SW_CHECK(events.progress.size() >= 8,
+    "progress reported through the stages (" << events.progress.size() << ")");
 
   // The zero contour lies on the sphere.
   vtkNew<vtkContourFilter> contour;
@@ -140,10 +145,11 @@ int TestMeshSignedDistanceFilter(int, char*[])
   filter->GetOutput()->GetDimensions(dims);
   filter->GetOutput()->GetBounds(bounds);
   SW_CHECK(dims[0] == 41 && dims[1] == 21 && dims[2] == 16, "explicit dimensions");
-  SW_CHECK(std::abs(bounds[0] + 2) < 1e-12 && std::abs(bounds[1] - 2) < 1e-12 && std::abs(bounds[5] - 1.5) < 1e-12,
+  SW_CHECK(std::abs(bounds[0] + 2) < 1e-12 && std::abs(bounds[1] - 2) < 1e-12 &&
+      std::abs(bounds[5] - 1.5) < 1e-12,
     "explicit bounds");
-  const testing::FieldErrors explicitErrors =
-    testing::compareWithReference(filter->GetOutput(), testing::triangulated(sphere(32)), true, true);
+  const testing::FieldErrors explicitErrors = testing::compareWithReference(
+    filter->GetOutput(), testing::triangulated(sphere(32)), true, true);
   testing::checkAccuracy("explicit grid", explicitErrors, true);
   filter->UseExplicitGridOff();
 
@@ -151,7 +157,8 @@ int TestMeshSignedDistanceFilter(int, char*[])
   filter->SetSweepMethod(vtkMeshSignedDistance::EIKONAL);
   filter->ComputeSignOff();
   filter->Update();
-  values = vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetArray("SignedDistance"));
+  values =
+    vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetArray("SignedDistance"));
   SW_CHECK(values && values->GetRange()[0] >= 0, "ComputeSign off gives an unsigned field");
   SW_CHECK(fieldValue(filter->GetOutput(), "Signed") == 0, "field data Signed = 0 when unsigned");
   filter->SetSweepMethod(vtkMeshSignedDistance::CLOSEST_POINT);
@@ -163,15 +170,18 @@ int TestMeshSignedDistanceFilter(int, char*[])
   filter->SetResolution(80);
   filter->Update();
   SW_CHECK(filter->GetOutput()->GetNumberOfPoints() == 0, "an aborted run leaves an empty output");
-  // The executive reports 1.0 when RequestData returns; before it, the filter stopped at the next check.
+  // The executive reports 1.0 when RequestData returns; before it, the filter stopped at the next
+  // check.
   const auto late = std::count_if(
     events.progress.begin(), events.progress.end(), [](double p) { return p >= 0.5 && p < 1.0; });
-  SW_CHECK(late == 1, "the run stopped at the first check after the abort (" << late << " reports after it)");
+  SW_CHECK(late == 1,
+    "the run stopped at the first check after the abort (" << late << " reports after it)");
   events.abortFraction = 2;
   filter->SetAbortExecute(0);
   filter->Modified();
   filter->Update();
-  SW_CHECK(filter->GetOutput()->GetNumberOfPoints() == 81LL * 81 * 81, "the pipeline runs again after an abort");
+  SW_CHECK(filter->GetOutput()->GetNumberOfPoints() == 81LL * 81 * 81,
+    "the pipeline runs again after an abort");
 
   // A mesh whose triangles face inwards: still negative inside, with a warning.
   vtkNew<vtkReverseSense> reverse;
@@ -182,16 +192,19 @@ int TestMeshSignedDistanceFilter(int, char*[])
   filter->SetInputData(reverse->GetOutput());
   filter->SetResolution(40);
   filter->Update();
-  values = vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetArray("SignedDistance"));
+  values =
+    vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetArray("SignedDistance"));
   SW_CHECK(fieldValue(filter->GetOutput(), "Signed") == 1 && values && values->GetRange()[0] < -0.9,
     "an inside-out mesh still gives negative distances inside");
   SW_CHECK(events.warnings > 0, "and a warning about its orientation");
   testing::checkAccuracy("inside-out sphere",
-    testing::compareWithReference(filter->GetOutput(), testing::triangulated(sphere(32)), true, true), true);
+    testing::compareWithReference(
+      filter->GetOutput(), testing::triangulated(sphere(32)), true, true),
+    true);
 
-  // An open mesh (a sphere with its top cut off): signed by the generalized winding number (issue #11),
-  // said so in DistanceStatus and a warning, every sampled node farther than a cell on the winding
-  // number's side.
+  // An open mesh (a sphere with its top cut off): signed by the generalized winding number (issue
+  // #11), said so in DistanceStatus and a warning, every sampled node farther than a cell on the
+  // winding number's side.
   vtkNew<vtkPlane> plane;
   plane->SetOrigin(0, 0, 0.5);
   plane->SetNormal(0, 0, -1);
@@ -206,15 +219,18 @@ int TestMeshSignedDistanceFilter(int, char*[])
   image = filter->GetOutput();
   SW_CHECK(fieldValue(image, "Signed") == 1, "an open mesh gives a signed field");
   SW_CHECK(events.warnings > 0, "and a warning");
-  auto* status = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("DistanceStatus"));
+  auto* status =
+    vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("DistanceStatus"));
   SW_CHECK(status && status->GetValue(0).find("signed by the generalized winding number") == 0,
     "DistanceStatus says how: " << (status ? status->GetValue(0) : std::string("none")));
   const testing::FieldErrors openErrors =
     testing::compareWithReference(image, testing::triangulated(clip->GetOutput()), true, false);
   testing::checkAccuracy("open sphere", openErrors, false);
-  const testing::SignSample openSigns = testing::sampleSigns(image, testing::triangulated(clip->GetOutput()), 4000);
+  const testing::SignSample openSigns =
+    testing::sampleSigns(image, testing::triangulated(clip->GetOutput()), 4000);
   SW_CHECK(openSigns.disagreeing == 0 && openSigns.far > 1000,
-    "the open sphere's signs agree with its winding number (" << openSigns.disagreeing << " of " << openSigns.far << ")");
+    "the open sphere's signs agree with its winding number (" << openSigns.disagreeing << " of "
+                                                              << openSigns.far << ")");
 
   // A disc encloses nothing: unsigned, flagged, and a warning.
   vtkNew<vtkDiskSource> disc;

@@ -61,25 +61,29 @@ int TestOutOfMemory(int, char*[])
   distance->SetInputData(sphere->GetOutput());
   distance->SetResolution(500);
   std::string said = underLimit(distance, 0.5 * GiB, [&] { distance->Update(); });
-  std::cout << "Mesh Signed Distance under the limit: " << said.substr(said.find("): ") + 3) << std::endl;
+  std::cout << "Mesh Signed Distance under the limit: " << said.substr(said.find("): ") + 3)
+            << std::endl;
   SW_CHECK(said.find("would need 1.02 GiB but only 0.") != std::string::npos &&
       distance->GetOutput()->GetNumberOfPoints() == 0,
     "Mesh Signed Distance: the grid refused against the process's limit, empty output");
   distance->SetResolution(40);
   distance->Update();
-  SW_CHECK(distance->GetOutput()->GetNumberOfPoints() == 41 * 41 * 41, "Mesh Signed Distance lives on");
+  SW_CHECK(
+    distance->GetOutput()->GetNumberOfPoints() == 41 * 41 * 41, "Mesh Signed Distance lives on");
 
   // Subdivision Level 8 (655,362 vertices) within 150 MiB more than now.
   vtkNew<vtkShrinkWrapFilter> wrap;
   wrap->SetInputData(sphere->GetOutput());
   wrap->SetResolution(24);
-  wrap->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE); // a level-8 icosphere is what does not fit
+  wrap->SetStartingShape(
+    vtkShrinkWrapFilter::ICOSPHERE); // a level-8 icosphere is what does not fit
   wrap->SetRemeshing(false);
   wrap->SetSubdivisionLevel(8);
   wrap->SetNumberOfSteps(2);
   said = underLimit(wrap, 0.15 * GiB, [&] { wrap->Update(); });
   std::cout << "Shrink Wrap under the limit: " << said.substr(said.find("): ") + 3) << std::endl;
-  SW_CHECK(!said.empty() && wrap->GetOutput()->GetNumberOfPoints() == 0, "Shrink Wrap: an error, empty output");
+  SW_CHECK(!said.empty() && wrap->GetOutput()->GetNumberOfPoints() == 0,
+    "Shrink Wrap: an error, empty output");
   wrap->SetSubdivisionLevel(2);
   wrap->Update();
   SW_CHECK(wrap->GetOutput()->GetNumberOfPoints() == 162, "Shrink Wrap lives on");

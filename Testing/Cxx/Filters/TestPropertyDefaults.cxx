@@ -14,7 +14,8 @@ namespace
 using Getter = std::function<std::vector<double>()>;
 
 // command -> default_values of every vector property that sets something in the proxy `name`.
-std::map<std::string, std::vector<double>> xmlDefaults(const std::string& xml, const std::string& name)
+std::map<std::string, std::vector<double>> xmlDefaults(
+  const std::string& xml, const std::string& name)
 {
   std::map<std::string, std::vector<double>> defaults;
   const std::size_t begin = xml.find("<SourceProxy name=\"" + name + "\"");
@@ -26,11 +27,13 @@ std::map<std::string, std::vector<double>> xmlDefaults(const std::string& xml, c
   const std::string proxy = xml.substr(begin, end - begin);
   const std::regex tag(R"x(<(Int|Double)VectorProperty\b[^>]*>)x");
   const std::regex command(R"x(command="(\w+)")x"), values(R"x(default_values="([^"]*)")x");
-  for (auto it = std::sregex_iterator(proxy.begin(), proxy.end(), tag); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(proxy.begin(), proxy.end(), tag);
+       it != std::sregex_iterator(); ++it)
   {
     const std::string text = it->str();
     std::smatch c, v;
-    if (std::regex_search(text, c, command) && std::regex_search(text, v, values) && c[1].str().rfind("Set", 0) == 0)
+    if (std::regex_search(text, c, command) && std::regex_search(text, v, values) &&
+      c[1].str().rfind("Set", 0) == 0)
     {
       std::istringstream in(v[1].str());
       std::vector<double> numbers;
@@ -47,8 +50,8 @@ std::map<std::string, std::vector<double>> xmlDefaults(const std::string& xml, c
 void compare(const std::string& proxy, const std::map<std::string, std::vector<double>>& xml,
   const std::map<std::string, Getter>& filter)
 {
-  SW_CHECK(xml.size() == filter.size(), proxy << ": the XML has " << xml.size() << " properties, the test knows "
-                                              << filter.size());
+  SW_CHECK(xml.size() == filter.size(),
+    proxy << ": the XML has " << xml.size() << " properties, the test knows " << filter.size());
   for (const auto& [command, get] : filter)
   {
     const auto found = xml.find(command);
@@ -63,8 +66,9 @@ void compare(const std::string& proxy, const std::map<std::string, std::vector<d
     {
       same = std::abs(value[k] - found->second[k]) <= 1e-12 * std::max(1.0, std::abs(value[k]));
     }
-    SW_CHECK(same, proxy << ": " << command << " defaults to " << found->second[0] << " in the XML and " << value[0]
-                         << " in the filter");
+    SW_CHECK(same,
+      proxy << ": " << command << " defaults to " << found->second[0] << " in the XML and "
+            << value[0] << " in the filter");
   }
 }
 } // namespace
@@ -88,17 +92,17 @@ int TestPropertyDefaults(int argc, char* argv[])
       { "SetOffsetFactor", [&] { return std::vector<double>{ m->GetOffsetFactor() }; } },
       { "SetSweepMethod", [&] { return std::vector<double>{ double(m->GetSweepMethod()) }; } },
       { "SetBandLayers", [&] { return std::vector<double>{ double(m->GetBandLayers()) }; } },
-      { "SetUseExplicitGrid", [&] { return std::vector<double>{ double(m->GetUseExplicitGrid()) }; } },
+      { "SetUseExplicitGrid",
+        [&] { return std::vector<double>{ double(m->GetUseExplicitGrid()) }; } },
       { "SetOutputBounds",
         [&] {
           const double* b = m->GetOutputBounds();
           return std::vector<double>(b, b + 6);
         } },
-      { "SetOutputDimensions",
-        [&] {
-          const int* d = m->GetOutputDimensions();
-          return std::vector<double>(d, d + 3);
-        } } });
+      { "SetOutputDimensions", [&] {
+         const int* d = m->GetOutputDimensions();
+         return std::vector<double>(d, d + 3);
+       } } });
 
   vtkNew<vtkShrinkWrapFilter> w;
   auto one = [](double x) { return std::vector<double>{ x }; };
@@ -120,10 +124,8 @@ int TestPropertyDefaults(int argc, char* argv[])
           return std::vector<double>(r, r + 2);
         } },
       { "SetTangentialRedistribution", [&] { return one(w->GetTangentialRedistribution()); } },
-      { "SetC1", [&] { return one(w->GetC1()); } },
-      { "SetC2", [&] { return one(w->GetC2()); } },
-      { "SetC", [&] { return one(w->GetC()); } },
-      { "SetD", [&] { return one(w->GetD()); } },
+      { "SetC1", [&] { return one(w->GetC1()); } }, { "SetC2", [&] { return one(w->GetC2()); } },
+      { "SetC", [&] { return one(w->GetC()); } }, { "SetD", [&] { return one(w->GetD()); } },
       { "SetOmegaAngle", [&] { return one(w->GetOmegaAngle()); } },
       { "SetOmegaVolume", [&] { return one(w->GetOmegaVolume()); } },
       { "SetDistanceWeighting", [&] { return one(w->GetDistanceWeighting()); } },

@@ -1,8 +1,8 @@
 // Shrink Wrap and Mesh Signed Distance fed what crashed them (issue #8): composite inputs on every
-// port, a starved step cache, corrupt starting surfaces, absurd step counts and request times, short or
-// non-finite distance fields, coordinates too large for the field, aborts. Each gets a correct result
-// or a clear error and an empty output, and the filter computes a good input afterwards. Run under
-// AddressSanitizer and UBSan in CI.
+// port, a starved step cache, corrupt starting surfaces, absurd step counts and request times,
+// short or non-finite distance fields, coordinates too large for the field, aborts. Each gets a
+// correct result or a clear error and an empty output, and the filter computes a good input
+// afterwards. Run under AddressSanitizer and UBSan in CI.
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
@@ -105,11 +105,13 @@ void livesOn(vtkShrinkWrapFilter* wrap, const std::string& name)
   wrap->SetInputConnection(1, nullptr);
   wrap->SetInputConnection(2, nullptr);
   wrap->Update();
-  SW_CHECK(pointsOf(wrap->GetOutputDataObject(0)).size() == 3 * 162, name << ": the pipeline lives on");
+  SW_CHECK(
+    pointsOf(wrap->GetOutputDataObject(0)).size() == 3 * 162, name << ": the pipeline lives on");
 }
 
 // Composite targets: Shrink Wrap wraps them block by block; each block's wrap equals
-// the wrap of that mesh alone. Mesh Signed Distance takes the composite whole: one field of all meshes.
+// the wrap of that mesh alone. Mesh Signed Distance takes the composite whole: one field of all
+// meshes.
 void compositeInputs()
 {
   vtkSmartPointer<vtkPolyData> a = sphere(0), b = sphere(3, 0.5);
@@ -132,8 +134,10 @@ void compositeInputs()
     const Said said = whileSaying(wrap, [&] { wrap->Update(); });
     auto* out = vtkCompositeDataSet::SafeDownCast(wrap->GetOutputDataObject(0));
     const auto leaves = vtkCompositeDataSet::GetDataSets<vtkPolyData>(out);
-    SW_CHECK(said.errors == 0 && leaves.size() == 2, name << " target: a wrap per mesh (" << leaves.size() << ")");
-    SW_CHECK(!leaves.empty() && pointsOf(leaves[0]) == wrapA, name << " target: the first wrap is that of its mesh alone");
+    SW_CHECK(said.errors == 0 && leaves.size() == 2,
+      name << " target: a wrap per mesh (" << leaves.size() << ")");
+    SW_CHECK(!leaves.empty() && pointsOf(leaves[0]) == wrapA,
+      name << " target: the first wrap is that of its mesh alone");
 
     vtkNew<vtkMeshSignedDistance> sdf;
     sdf->SetInputData(input);
@@ -150,7 +154,8 @@ void compositeInputs()
       return field->GetScalarComponentAsDouble(i, j, k, 0);
     };
     SW_CHECK(field->GetNumberOfPoints() > 0 && valueAt(0) < 0 && valueAt(3) < 0,
-      name << " into Mesh Signed Distance: one field, inside both meshes (" << valueAt(0) << ", " << valueAt(3) << ")");
+      name << " into Mesh Signed Distance: one field, inside both meshes (" << valueAt(0) << ", "
+           << valueAt(3) << ")");
 
     // The other choices (issue #14): all blocks wrapped together, one surface, equal to the wrap of
     // the meshes appended into one; a field per block, each equal to its mesh's field alone.
@@ -164,16 +169,20 @@ void compositeInputs()
     together->SetWrapPerBlock(false);
     const Said saidTogether = whileSaying(together, [&] { together->Update(); });
     const std::vector<double> wrapBoth = pointsOf(both->GetOutputDataObject(0));
-    SW_CHECK(saidTogether.errors == 0 && !wrapBoth.empty() && pointsOf(together->GetOutputDataObject(0)) == wrapBoth,
+    SW_CHECK(saidTogether.errors == 0 && !wrapBoth.empty() &&
+        pointsOf(together->GetOutputDataObject(0)) == wrapBoth,
       name << " target, blocks wrapped together: one surface, that of both meshes as one ("
            << together->GetOutputDataObject(0)->GetClassName() << ")");
-    // Back in time: the session's cached step, not a new session (the blocks are appended only to start one).
+    // Back in time: the session's cached step, not a new session (the blocks are appended only to
+    // start one).
     const int computed = together->GetNumberOfComputedSteps();
     together->UpdateTimeStep(2 * together->GetTimeStep());
     both->UpdateTimeStep(2 * both->GetTimeStep());
-    SW_CHECK(together->GetNumberOfComputedSteps() == computed && stepOf(together->GetOutputDataObject(0)) == 2 &&
+    SW_CHECK(together->GetNumberOfComputedSteps() == computed &&
+        stepOf(together->GetOutputDataObject(0)) == 2 &&
         pointsOf(together->GetOutputDataObject(0)) == pointsOf(both->GetOutputDataObject(0)),
-      name << " target, blocks wrapped together: step 2 from the cache equals the appended meshes' step 2");
+      name << " target, blocks wrapped together: step 2 from the cache equals the appended meshes' "
+              "step 2");
     vtkNew<vtkMeshSignedDistance> alone;
     alone->SetInputData(b);
     alone->SetResolution(24);
@@ -190,7 +199,8 @@ void compositeInputs()
     });
     perBlock->AddObserver(vtkCommand::ProgressEvent, onProgress);
     perBlock->Update();
-    SW_CHECK(!progress.empty() && std::is_sorted(progress.begin(), progress.end()) && progress.back() <= 1.0 &&
+    SW_CHECK(!progress.empty() && std::is_sorted(progress.begin(), progress.end()) &&
+        progress.back() <= 1.0 &&
         std::count_if(progress.begin(), progress.end(), [](double p) { return p > 0.5; }) > 0,
       name << " into Mesh Signed Distance, a field per block: one progress bar over both blocks ("
            << progress.size() << " reports)");
@@ -205,10 +215,12 @@ void compositeInputs()
       }
       return out;
     };
-    SW_CHECK(std::string(fields->GetClassName()) == name && images.size() == 2 && !valuesOf(alone->GetOutput()).empty() &&
-        valuesOf(images[1]) == valuesOf(alone->GetOutput()) && images[1]->GetBounds()[0] == alone->GetOutput()->GetBounds()[0],
-      name << " into Mesh Signed Distance, a field per block: " << fields->GetClassName() << " of " << images.size()
-           << " images, the second equal to its mesh's field alone");
+    SW_CHECK(std::string(fields->GetClassName()) == name && images.size() == 2 &&
+        !valuesOf(alone->GetOutput()).empty() &&
+        valuesOf(images[1]) == valuesOf(alone->GetOutput()) &&
+        images[1]->GetBounds()[0] == alone->GetOutput()->GetBounds()[0],
+      name << " into Mesh Signed Distance, a field per block: " << fields->GetClassName() << " of "
+           << images.size() << " images, the second equal to its mesh's field alone");
 
     // A composite where an image or a starting surface belongs: the executive refuses the type (its
     // own error names it), never a crash.
@@ -217,7 +229,8 @@ void compositeInputs()
       auto withPort = wrapOf(a);
       withPort->SetInputData(port, input);
       withPort->Update();
-      SW_CHECK(pointsOf(withPort->GetOutputDataObject(0)).empty(), name << " on port " << port << ": no output");
+      SW_CHECK(pointsOf(withPort->GetOutputDataObject(0)).empty(),
+        name << " on port " << port << ": no output");
       livesOn(withPort, name + " on port " + std::to_string(port));
     }
   }
@@ -244,11 +257,13 @@ void compositeInputs()
   const vtkIdType node = sdf->GetOutput()->FindPoint(inside);
   vtkDataArray* field = sdf->GetOutput()->GetPointData()->GetArray("SignedDistance");
   SW_CHECK(said.errors == 0 && node >= 0 && field && field->GetTuple1(node) < 0,
-    "a block of tetrahedra into Mesh Signed Distance: measured by its outer surface (negative inside)");
+    "a block of tetrahedra into Mesh Signed Distance: measured by its outer surface (negative "
+    "inside)");
   auto wrap = wrapOf(mixed);
   whileSaying(wrap, [&] { wrap->Update(); });
   const auto leaves = vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0));
-  SW_CHECK(!leaves.empty() && pointsOf(leaves[0]) == wrapA, "a block of tetrahedra beside a mesh: the mesh is wrapped");
+  SW_CHECK(!leaves.empty() && pointsOf(leaves[0]) == wrapA,
+    "a block of tetrahedra beside a mesh: the mesh is wrapped");
 }
 
 // A composite target over time (issue #14): every block moves through the steps as its mesh alone
@@ -277,23 +292,28 @@ void compositeTimeSteps()
   }
   wrap->UpdatePiece(1, 2, 0);
   const auto piece = vtkCompositeDataSet::GetDataSets<vtkPolyData>(wrap->GetOutputDataObject(0));
-  SW_CHECK(piece.size() == 2 && piece[0]->GetNumberOfPoints() == 0 && pointsOf(piece[1]) == alone(b, 7),
-    "piece 1 of 2 wraps the smaller block only (the larger goes to piece 0; " << piece.size() << " blocks)");
+  SW_CHECK(
+    piece.size() == 2 && piece[0]->GetNumberOfPoints() == 0 && pointsOf(piece[1]) == alone(b, 7),
+    "piece 1 of 2 wraps the smaller block only (the larger goes to piece 0; " << piece.size()
+                                                                              << " blocks)");
 
   vtkNew<vtkImageData> field;
   field->SetDimensions(4, 4, 4);
   auto withField = wrapOf(blocks);
   withField->SetInputData(1, field);
   const Said said = whileSaying(withField, [&] { withField->Update(); });
-  const auto none = vtkCompositeDataSet::GetDataSets<vtkPolyData>(withField->GetOutputDataObject(0));
+  const auto none =
+    vtkCompositeDataSet::GetDataSets<vtkPolyData>(withField->GetOutputDataObject(0));
   SW_CHECK(said.errors == 1 && said.text.find("block by block") != std::string::npos &&
-      std::all_of(none.begin(), none.end(), [](vtkPolyData* m) { return m->GetNumberOfPoints() == 0; }),
+      std::all_of(
+        none.begin(), none.end(), [](vtkPolyData* m) { return m->GetNumberOfPoints() == 0; }),
     "a distance field beside a composite target: refused, said why (" << said.text << ")");
   livesOn(withField, "composite target with a field");
 }
 
-// Cache Memory Limit below three steps (0, or 1 MiB with a large surface): the thinning stops at step
-// 0, the newest and the one shown. Asked for step 7 after the end, it recomputes step 7 exactly.
+// Cache Memory Limit below three steps (0, or 1 MiB with a large surface): the thinning stops at
+// step 0, the newest and the one shown. Asked for step 7 after the end, it recomputes step 7
+// exactly.
 void starvedCache()
 {
   for (double limit : { 0.0, 1e-9, 1.0 })
@@ -306,7 +326,8 @@ void starvedCache()
     auto fresh = wrapOf(sphere(), 7);
     fresh->SetSubdivisionLevel(5);
     fresh->Update();
-    SW_CHECK(stepOf(wrap->GetOutput()) == 7 && pointsOf(wrap->GetOutput()) == pointsOf(fresh->GetOutput()),
+    SW_CHECK(
+      stepOf(wrap->GetOutput()) == 7 && pointsOf(wrap->GetOutput()) == pointsOf(fresh->GetOutput()),
       "Cache Memory Limit " << limit << " MiB: back to step 7, the same surface as a fresh run");
   }
 }
@@ -320,10 +341,12 @@ void corruptStartingSurfaces()
     std::function<void(std::vector<vtkIdType>&, vtkPoints*)> spoil;
   };
   const std::vector<Case> cases = {
-    { "a triangle naming point 100000", [](std::vector<vtkIdType>& ids, vtkPoints*) { ids[4] = 100000; } },
+    { "a triangle naming point 100000",
+      [](std::vector<vtkIdType>& ids, vtkPoints*) { ids[4] = 100000; } },
     { "a negative point id", [](std::vector<vtkIdType>& ids, vtkPoints*) { ids[5] = -5; } },
     { "a NaN point", [](std::vector<vtkIdType>&, vtkPoints* p) { p->SetPoint(3, kNaN, 0, 0); } },
-    { "an infinite point", [](std::vector<vtkIdType>&, vtkPoints* p) { p->SetPoint(3, 0, kInf, 0); } },
+    { "an infinite point",
+      [](std::vector<vtkIdType>&, vtkPoints* p) { p->SetPoint(3, 0, kInf, 0); } },
   };
   for (const Case& c : cases)
   {
@@ -360,7 +383,8 @@ void absurdStepsAndTimes()
   {
     wrap->SetNumberOfSteps(steps);
     wrap->UpdateInformation();
-    const int n = wrap->GetOutputInformation(0)->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    const int n =
+      wrap->GetOutputInformation(0)->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
     SW_CHECK(n == (steps < 0 ? 1 : vtkShrinkWrapFilter::kMaxSteps + 1),
       "NumberOfSteps " << steps << ": " << n << " time steps advertised");
   }
@@ -368,16 +392,19 @@ void absurdStepsAndTimes()
   for (double t : { 5e7, 1e9, kInf, 1e300, kNaN })
   {
     wrap->UpdateTimeStep(t);
-    SW_CHECK(stepOf(wrap->GetOutput()) == 5, "time " << t << ": the last step (" << stepOf(wrap->GetOutput()) << ")");
+    SW_CHECK(stepOf(wrap->GetOutput()) == 5,
+      "time " << t << ": the last step (" << stepOf(wrap->GetOutput()) << ")");
   }
   for (double t : { -1.0, -kInf, -1e300 })
   {
     wrap->UpdateTimeStep(t);
-    SW_CHECK(stepOf(wrap->GetOutput()) == 0, "time " << t << ": step 0 (" << stepOf(wrap->GetOutput()) << ")");
+    SW_CHECK(stepOf(wrap->GetOutput()) == 0,
+      "time " << t << ": step 0 (" << stepOf(wrap->GetOutput()) << ")");
   }
 }
 
-// Sizes that would make no wrap or an absurd one: a clear error, an empty output, and the pipeline lives on.
+// Sizes that would make no wrap or an absurd one: a clear error, an empty output, and the pipeline
+// lives on.
 void absurdSizes()
 {
   auto wrap = wrapOf(sphere());
@@ -385,8 +412,16 @@ void absurdSizes()
   wrap->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
   const std::pair<std::string, std::function<void()>> cases[] = {
     { "Target Edge Length 1e-9", [&] { wrap->SetTargetEdgeLength(1e-9); } },
-    { "Gap Size 1e6", [&] { wrap->SetTargetEdgeLength(0); wrap->SetGapSize(1e6); } },
-    { "Edge Length Range 0 1", [&] { wrap->SetGapSize(0); wrap->SetEdgeLengthRange(0, 1); } },
+    { "Gap Size 1e6",
+      [&] {
+        wrap->SetTargetEdgeLength(0);
+        wrap->SetGapSize(1e6);
+      } },
+    { "Edge Length Range 0 1",
+      [&] {
+        wrap->SetGapSize(0);
+        wrap->SetEdgeLengthRange(0, 1);
+      } },
     { "Edge Length Range 1 NaN", [&] { wrap->SetEdgeLengthRange(1, kNaN); } },
     { "Edge Length Range 2 1", [&] { wrap->SetEdgeLengthRange(2, 1); } },
   };
@@ -395,12 +430,14 @@ void absurdSizes()
     c.second();
     const Said said = whileSaying(wrap, [&] { wrap->Update(); });
     std::cout << c.first << ": " << said.text.substr(said.text.find("): ") + 3) << std::endl;
-    SW_CHECK(said.errors > 0 && wrap->GetOutput()->GetNumberOfPoints() == 0, c.first << ": an error, empty output");
+    SW_CHECK(said.errors > 0 && wrap->GetOutput()->GetNumberOfPoints() == 0,
+      c.first << ": an error, empty output");
   }
   wrap->SetGapSize(0);
   wrap->SetEdgeLengthRange(1, 1);
   wrap->Update();
-  SW_CHECK(wrap->GetOutput()->GetNumberOfPoints() > 0 && stepOf(wrap->GetOutput()) == 5, "then the defaults wrap");
+  SW_CHECK(wrap->GetOutput()->GetNumberOfPoints() > 0 && stepOf(wrap->GetOutput()) == 5,
+    "then the defaults wrap");
 }
 
 void badDistanceFields()
@@ -416,19 +453,26 @@ void badDistanceFields()
     std::function<void(vtkImageData*, vtkFloatArray*)> spoil;
   };
   const std::vector<Case> cases = {
-    { "shorter than the image", [](vtkImageData*, vtkFloatArray* a) { a->SetNumberOfTuples(a->GetNumberOfTuples() / 3); } },
+    { "shorter than the image",
+      [](vtkImageData*, vtkFloatArray* a) { a->SetNumberOfTuples(a->GetNumberOfTuples() / 3); } },
     { "empty", [](vtkImageData*, vtkFloatArray* a) { a->SetNumberOfTuples(0); } },
-    { "with a NaN", [](vtkImageData*, vtkFloatArray* a) { a->SetValue(a->GetNumberOfTuples() / 2, static_cast<float>(kNaN)); } },
-    { "with an infinity", [](vtkImageData*, vtkFloatArray* a) { a->SetValue(0, static_cast<float>(kInf)); } },
-    { "with no outside (all negative)", [](vtkImageData*, vtkFloatArray* a) {
-       for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-       {
-         a->SetValue(i, -1.0f - std::abs(a->GetValue(i)));
-       }
-     } },
-    { "rotated (a direction matrix)", [](vtkImageData* image, vtkFloatArray*) {
-       image->SetDirectionMatrix(0, -1, 0, 1, 0, 0, 0, 0, 1);
-     } },
+    { "with a NaN",
+      [](vtkImageData*, vtkFloatArray* a) {
+        a->SetValue(a->GetNumberOfTuples() / 2, static_cast<float>(kNaN));
+      } },
+    { "with an infinity",
+      [](vtkImageData*, vtkFloatArray* a) { a->SetValue(0, static_cast<float>(kInf)); } },
+    { "with no outside (all negative)",
+      [](vtkImageData*, vtkFloatArray* a) {
+        for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+        {
+          a->SetValue(i, -1.0f - std::abs(a->GetValue(i)));
+        }
+      } },
+    { "rotated (a direction matrix)",
+      [](vtkImageData* image, vtkFloatArray*) {
+        image->SetDirectionMatrix(0, -1, 0, 1, 0, 0, 0, 0, 1);
+      } },
   };
   for (const Case& c : cases)
   {
@@ -438,7 +482,8 @@ void badDistanceFields()
     auto wrap = wrapOf(sphere());
     wrap->SetInputData(1, field);
     const Said said = whileSaying(wrap, [&] { wrap->Update(); });
-    std::cout << "DistanceField " << c.name << ": " << said.text.substr(said.text.find("): ") + 3) << std::endl;
+    std::cout << "DistanceField " << c.name << ": " << said.text.substr(said.text.find("): ") + 3)
+              << std::endl;
     SW_CHECK(said.errors > 0 && wrap->GetOutput()->GetNumberOfPoints() == 0,
       "a DistanceField " << c.name << ": an error and an empty output");
     livesOn(wrap, c.name);
@@ -497,12 +542,13 @@ void coordinatesTooLarge()
     sdf->SetResolution(24);
     sdf->SetOffsetFactor(offset);
     const Said said = whileSaying(sdf, [&] { sdf->Update(); });
-    SW_CHECK(said.errors > 0 && sdf->GetOutput()->GetNumberOfPoints() == 0, "Offset Factor " << offset << ": refused");
+    SW_CHECK(said.errors > 0 && sdf->GetOutput()->GetNumberOfPoints() == 0,
+      "Offset Factor " << offset << ": refused");
   }
 }
 
-// An abort ends that run only: Mesh Signed Distance computes again after a change; Shrink Wrap does not
-// run again by itself, and resumes from its cache when another time is asked for.
+// An abort ends that run only: Mesh Signed Distance computes again after a change; Shrink Wrap does
+// not run again by itself, and resumes from its cache when another time is asked for.
 void aborts()
 {
   // Aborted once, as a user would (the executive's closing progress event must not abort again).
@@ -524,10 +570,12 @@ void aborts()
   sdf->SetResolution(24);
   sdf->AddObserver(vtkCommand::ProgressEvent, onProgress);
   whileSaying(sdf, [&] { sdf->Update(); });
-  SW_CHECK(sdf->GetOutput()->GetNumberOfPoints() == 0, "Mesh Signed Distance aborted: an empty output");
+  SW_CHECK(
+    sdf->GetOutput()->GetNumberOfPoints() == 0, "Mesh Signed Distance aborted: an empty output");
   sdf->SetResolution(20);
   sdf->Update();
-  SW_CHECK(sdf->GetOutput()->GetNumberOfPoints() == 21 * 21 * 21, "after a change it computes again");
+  SW_CHECK(
+    sdf->GetOutput()->GetNumberOfPoints() == 21 * 21 * 21, "after a change it computes again");
 
   auto wrap = wrapOf(sphere(), 30);
   count = { 0, 10 };
@@ -538,17 +586,22 @@ void aborts()
     "Shrink Wrap aborted after " << aborted << " steps: an empty output");
   wrap->UpdateTimeStep(30 * 0.015);
   wrap->Update();
-  SW_CHECK(wrap->GetNumberOfComputedSteps() == aborted && wrap->GetOutput()->GetNumberOfPoints() == 0,
-    "the same request again (a render) does not run the rest (" << wrap->GetNumberOfComputedSteps() << " steps)");
+  SW_CHECK(
+    wrap->GetNumberOfComputedSteps() == aborted && wrap->GetOutput()->GetNumberOfPoints() == 0,
+    "the same request again (a render) does not run the rest (" << wrap->GetNumberOfComputedSteps()
+                                                                << " steps)");
   wrap->UpdateTimeStep((aborted - 1) * 0.015);
   SW_CHECK(stepOf(wrap->GetOutput()) == aborted - 1 && wrap->GetNumberOfComputedSteps() == aborted,
-    "a step before the abort comes from the cache (" << wrap->GetNumberOfComputedSteps() << " computed)");
+    "a step before the abort comes from the cache (" << wrap->GetNumberOfComputedSteps()
+                                                     << " computed)");
   wrap->UpdateTimeStep(25 * 0.015);
   SW_CHECK(stepOf(wrap->GetOutput()) == 25 && wrap->GetNumberOfComputedSteps() == 25,
-    "a later one resumes from the cached steps (" << wrap->GetNumberOfComputedSteps() << " computed)");
+    "a later one resumes from the cached steps (" << wrap->GetNumberOfComputedSteps()
+                                                  << " computed)");
   wrap->SetC(1.5);
   wrap->UpdateTimeStep(30 * 0.015);
-  SW_CHECK(stepOf(wrap->GetOutput()) == 30 && wrap->GetNumberOfComputedSteps() == 30, "a change runs normally");
+  SW_CHECK(stepOf(wrap->GetOutput()) == 30 && wrap->GetNumberOfComputedSteps() == 30,
+    "a change runs normally");
 }
 } // namespace
 

@@ -1,13 +1,13 @@
 // vtkShrinkWrapFilter through a VTK pipeline: time steps, the step cache, the output's arrays, a
 // closed one-piece result, the DistanceField and InitialSurface ports, bad input, and a surface
 // split between steps against the same surface given as InitialSurface.
+#include "Distance/SignedDistance.h"
 #include "Remeshing/EdgeSplits.h"
 #include "Surface/Icosphere.h"
-#include "Distance/SignedDistance.h"
 #include "Surface/SurfaceMesh.h"
+#include "TestUtilities.h"
 #include "Wrap/AutomaticSizes.h"
 #include "Wrap/Wrap.h"
-#include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
 
@@ -56,7 +56,8 @@ std::vector<double> pointsOf(vtkPolyData* mesh)
   return p;
 }
 
-// The surface: its points and its triangles' point ids (edge flips change the latter from step to step).
+// The surface: its points and its triangles' point ids (edge flips change the latter from step to
+// step).
 std::vector<double> surfaceOf(vtkPolyData* mesh)
 {
   std::vector<double> s = pointsOf(mesh);
@@ -104,7 +105,8 @@ void lastStep(vtkShrinkWrapFilter* wrap, vtkPolyData* box)
   vtkInformation* info = wrap->GetOutputInformation(0);
   const int n = info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   SW_CHECK(n == 61, "TIME_STEPS has N_t + 1 entries (" << n << ")");
-  SW_CHECK(info->Get(vtkStreamingDemandDrivenPipeline::TIME_RANGE())[1] == 60 * 0.015, "TIME_RANGE ends at N_t tau");
+  SW_CHECK(info->Get(vtkStreamingDemandDrivenPipeline::TIME_RANGE())[1] == 60 * 0.015,
+    "TIME_RANGE ends at N_t tau");
 
   // No time asked: the last step.
   wrap->Update();
@@ -125,7 +127,8 @@ void lastStep(vtkShrinkWrapFilter* wrap, vtkPolyData* box)
   pieces->SetExtractionModeToAllRegions();
   pieces->Update();
   SW_CHECK(pieces->GetNumberOfExtractedRegions() == 1, "one component");
-  for (const char* name : { "Distance", "AdvectionAlignment", "MeanCurvature", "CoVolume", "TangentialVelocity" })
+  for (const char* name :
+    { "Distance", "AdvectionAlignment", "MeanCurvature", "CoVolume", "TangentialVelocity" })
   {
     SW_CHECK(out->GetPointData()->GetArray(name) &&
         out->GetPointData()->GetArray(name)->GetNumberOfTuples() == out->GetNumberOfPoints(),
@@ -147,7 +150,8 @@ void lastStep(vtkShrinkWrapFilter* wrap, vtkPolyData* box)
   }
   std::sort(d.begin(), d.end());
   const double h = testing::fieldCell(out);
-  std::printf("after 60 steps: median |d| = %.3f h, 90th percentile %.3f h\n", d[d.size() / 2] / h, d[d.size() * 9 / 10] / h);
+  std::printf("after 60 steps: median |d| = %.3f h, 90th percentile %.3f h\n", d[d.size() / 2] / h,
+    d[d.size() * 9 / 10] / h);
   SW_CHECK(d[d.size() / 2] < 2 * h, "the surface approaches the target");
 }
 
@@ -164,7 +168,8 @@ std::vector<double> stepsAndCache(vtkShrinkWrapFilter* wrap, vtkPolyData* box)
   fresh->SetResolution(64);
   fresh->SetNumberOfSteps(30);
   fresh->Update();
-  SW_CHECK(surfaceOf(fresh->GetOutput()) == middle, "the same surface as a fresh run stopped at step 30");
+  SW_CHECK(
+    surfaceOf(fresh->GetOutput()) == middle, "the same surface as a fresh run stopped at step 30");
 
   wrap->UpdateTimeStep(17.4 * 0.015);
   SW_CHECK(stepOf(wrap->GetOutput()) == 17, "times snap to the nearest step");
@@ -172,13 +177,15 @@ std::vector<double> stepsAndCache(vtkShrinkWrapFilter* wrap, vtkPolyData* box)
   // A parameter change drops the cache.
   wrap->SetC(2.0);
   wrap->UpdateTimeStep(10 * 0.015);
-  SW_CHECK(wrap->GetNumberOfComputedSteps() == 10, "changing C drops the cache (" << wrap->GetNumberOfComputedSteps() << ")");
+  SW_CHECK(wrap->GetNumberOfComputedSteps() == 10,
+    "changing C drops the cache (" << wrap->GetNumberOfComputedSteps() << ")");
   wrap->SetC(1.0);
 
   // A parameter change drops the cache.
   wrap->SetC(2.0);
   wrap->UpdateTimeStep(10 * 0.015);
-  SW_CHECK(wrap->GetNumberOfComputedSteps() == 10, "changing C drops the cache (" << wrap->GetNumberOfComputedSteps() << ")");
+  SW_CHECK(wrap->GetNumberOfComputedSteps() == 10,
+    "changing C drops the cache (" << wrap->GetNumberOfComputedSteps() << ")");
   wrap->SetC(1.0);
   return middle;
 }
@@ -202,15 +209,20 @@ void cacheWithFlips()
   const auto lastTriangles = testing::triangulated(thin->GetOutput()).triangles;
   const vtkIdType lastCount = thin->GetOutput()->GetNumberOfPoints();
   thin->UpdateTimeStep(0);
-  SW_CHECK(testing::triangulated(thin->GetOutput()).triangles != lastTriangles, "edges flipped during the evolution");
-  // Remeshing (the default) changes the vertex count too: the cache keeps each step's own triangles.
-  SW_CHECK(thin->GetOutput()->GetNumberOfPoints() != lastCount, "the vertex count changed during the evolution ("
+  SW_CHECK(testing::triangulated(thin->GetOutput()).triangles != lastTriangles,
+    "edges flipped during the evolution");
+  // Remeshing (the default) changes the vertex count too: the cache keeps each step's own
+  // triangles.
+  SW_CHECK(thin->GetOutput()->GetNumberOfPoints() != lastCount,
+    "the vertex count changed during the evolution ("
       << thin->GetOutput()->GetNumberOfPoints() << " at step 0, " << lastCount << " at step 100)");
   thin->UpdateTimeStep(93 * 0.015);
   const int recomputed = thin->GetNumberOfComputedSteps() - 100;
   std::printf("step 93 with a 0.5 MiB cache: %d steps recomputed\n", recomputed);
-  SW_CHECK(recomputed > 0 && recomputed < 93, "a dropped step resumes from a kept one (" << recomputed << " steps)");
-  SW_CHECK(stepOf(thin->GetOutput()) == 93 && surfaceOf(thin->GetOutput()) == surfaceOf(wrapOf(93, 512)->GetOutput()),
+  SW_CHECK(recomputed > 0 && recomputed < 93,
+    "a dropped step resumes from a kept one (" << recomputed << " steps)");
+  SW_CHECK(stepOf(thin->GetOutput()) == 93 &&
+      surfaceOf(thin->GetOutput()) == surfaceOf(wrapOf(93, 512)->GetOutput()),
     "and gives the same surface as a fresh run");
 }
 
@@ -249,27 +261,31 @@ void editsAndAbortsWhileRunning(vtkPolyData* box)
       "a property set during the run: the run ends");
     const std::vector<double> withOldValue = surfaceOf(running->GetOutput());
     running->UpdateTimeStep(40 * 0.015);
-    SW_CHECK(running->GetNumberOfComputedSteps() == 40 && surfaceOf(running->GetOutput()) != withOldValue,
+    SW_CHECK(
+      running->GetNumberOfComputedSteps() == 40 && surfaceOf(running->GetOutput()) != withOldValue,
       "the same request runs again, from step 0, with the new value");
     plan = { 0, 0, 15 };
     running->SetOmegaAngle(0.5);
     running->UpdateTimeStep(40 * 0.015);
-    SW_CHECK(running->GetOutput()->GetNumberOfPoints() == 0 && running->GetNumberOfComputedSteps() < 40,
+    SW_CHECK(
+      running->GetOutput()->GetNumberOfPoints() == 0 && running->GetNumberOfComputedSteps() < 40,
       "an abort: an empty output");
     const int before = running->GetNumberOfComputedSteps();
     running->UpdateTimeStep(40 * 0.015);
-    SW_CHECK(running->GetOutput()->GetNumberOfPoints() == 0 && running->GetNumberOfComputedSteps() == before,
+    SW_CHECK(running->GetOutput()->GetNumberOfPoints() == 0 &&
+        running->GetNumberOfComputedSteps() == before,
       "the same request after an abort does not run again by itself");
     running->UpdateTimeStep(39 * 0.015);
-    SW_CHECK(stepOf(running->GetOutput()) == 39 && running->GetNumberOfComputedSteps() == 39 && before < 39,
+    SW_CHECK(stepOf(running->GetOutput()) == 39 && running->GetNumberOfComputedSteps() == 39 &&
+        before < 39,
       "another time resumes from step " << before);
   }
 }
 
 void distanceFieldPort(vtkPolyData* box, const std::vector<double>& middle)
 {
-  // The DistanceField port: the same field from Mesh Signed Distance (on the lattice the filter places
-  // for the offset start) gives the same wrap.
+  // The DistanceField port: the same field from Mesh Signed Distance (on the lattice the filter
+  // places for the offset start) gives the same wrap.
   vtkNew<vtkMeshSignedDistance> sdf;
   sdf->SetInputData(box);
   sdf->SetResolution(64);
@@ -283,7 +299,8 @@ void distanceFieldPort(vtkPolyData* box, const std::vector<double>& middle)
   withField->SetDistanceFieldConnection(sdf->GetOutputPort());
   withField->SetNumberOfSteps(30);
   withField->Update();
-  SW_CHECK(surfaceOf(withField->GetOutput()) == middle, "a DistanceField input gives the same wrap");
+  SW_CHECK(
+    surfaceOf(withField->GetOutput()) == middle, "a DistanceField input gives the same wrap");
 }
 
 // Bad input: an error and an empty output, or a warning; never a crash. Then the InitialSurface
@@ -292,39 +309,47 @@ void badInputAndStarts(vtkPolyData* box)
 {
   // Bad input: an error and an empty output, or a warning; never a crash.
   vtkNew<vtkShrinkWrapFilter> bad;
-  bad->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE); // the paper's scheme: 642 vertices throughout
+  bad->SetStartingShape(
+    vtkShrinkWrapFilter::ICOSPHERE); // the paper's scheme: 642 vertices throughout
   bad->SetRemeshing(false);
   vtkNew<vtkPolyData> empty;
   bad->SetInputData(empty);
-  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
+  SW_CHECK(
+    errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
     "a target without polygons: error, empty output");
   vtkNew<vtkPolyData> nanBox;
   nanBox->DeepCopy(box);
   nanBox->GetPoints()->SetPoint(3, std::nan(""), 0, 0);
   bad->SetInputData(nanBox);
-  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
+  SW_CHECK(
+    errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
     "NaN coordinates: error, empty output");
   bad->SetInputData(box);
   bad->SetResolution(32);
   bad->SetTimeStep(0);
-  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0, "tau = 0: error");
+  SW_CHECK(
+    errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
+    "tau = 0: error");
   bad->SetTimeStep(-1);
   SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0, "tau < 0: error");
   bad->SetTimeStep(0.015);
   bad->SetNumberOfSteps(0);
   bad->Update();
-  SW_CHECK(stepOf(bad->GetOutput()) == 0 && bad->GetOutput()->GetNumberOfPoints() == 642, "N_t = 0: the starting surface");
+  SW_CHECK(stepOf(bad->GetOutput()) == 0 && bad->GetOutput()->GetNumberOfPoints() == 642,
+    "N_t = 0: the starting surface");
   bad->SetNumberOfSteps(5);
   vtkNew<vtkImageData> noArray;
   noArray->SetDimensions(4, 4, 4);
   bad->SetInputData(1, noArray);
-  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0, "a DistanceField without SignedDistance: error");
+  SW_CHECK(
+    errorsWhile(bad, [&] { bad->Update(); }) > 0, "a DistanceField without SignedDistance: error");
   vtkNew<vtkMeshSignedDistance> tight;
   tight->SetInputData(box);
   tight->SetResolution(16);
   tight->SetOffsetFactor(0);
   bad->SetDistanceFieldConnection(tight->GetOutputPort());
-  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0, "a field that does not contain the start: error");
+  SW_CHECK(
+    errorsWhile(bad, [&] { bad->Update(); }) > 0, "a field that does not contain the start: error");
   bad->SetInputConnection(1, nullptr);
   vtkNew<vtkSphereSource> sphere;
   sphere->SetRadius(2.0);
@@ -334,14 +359,17 @@ void badInputAndStarts(vtkPolyData* box)
   open->SetInputConnection(sphere->GetOutputPort());
   open->SetClipFunction(plane);
   bad->SetInitialSurfaceConnection(open->GetOutputPort());
-  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
+  SW_CHECK(
+    errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
     "an open initial surface: error");
   sphere->SetRadius(1.0); // inside the field, around the target
   bad->SetInitialSurfaceConnection(sphere->GetOutputPort());
   bad->Update();
-  SW_CHECK(stepOf(bad->GetOutput()) == 5 && statusOf(bad->GetOutput()) == "ok", "a closed initial surface wraps");
+  SW_CHECK(stepOf(bad->GetOutput()) == 5 && statusOf(bad->GetOutput()) == "ok",
+    "a closed initial surface wraps");
 
-  // The same sphere facing inwards is turned outwards: with D > 0 (not symmetric in N) it wraps the same.
+  // The same sphere facing inwards is turned outwards: with D > 0 (not symmetric in N) it wraps the
+  // same.
   bad->SetD(0.5);
   bad->Update();
   const std::vector<double> outwards = pointsOf(bad->GetOutput());
@@ -355,15 +383,18 @@ void badInputAndStarts(vtkPolyData* box)
   {
     largest = std::max(largest, std::abs(turned[i] - outwards[i]));
   }
-  SW_CHECK(largest < 1e-9, "an inward-facing initial surface wraps like the outward one (" << largest << ")");
+  SW_CHECK(largest < 1e-9,
+    "an inward-facing initial surface wraps like the outward one (" << largest << ")");
 
-  // The offset start asked to reach beyond the field: an error and an empty output; a sane one wraps.
+  // The offset start asked to reach beyond the field: an error and an empty output; a sane one
+  // wraps.
   bad->SetInitialSurfaceConnection(nullptr);
   bad->SetD(0);
   bad->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
   bad->SetStartOffset(1000);
   bad->SetGapSize(1000); // the offset is at most 0.4 of the gap
-  SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
+  SW_CHECK(
+    errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
     "an offset surface beyond the distance field: error");
   bad->SetStartOffset(3);
   bad->SetGapSize(0);
@@ -372,9 +403,9 @@ void badInputAndStarts(vtkPolyData* box)
     "then a sane offset wraps");
 }
 
-// Issue #9: a surface split edge by edge in the core, given as InitialSurface with Initial Relaxation 0,
-// evolves as the core evolves the unsplit surface split between steps (TestEvolver shows the same on
-// the core alone; here the filter's way in is the reference).
+// Issue #9: a surface split edge by edge in the core, given as InitialSurface with Initial
+// Relaxation 0, evolves as the core evolves the unsplit surface split between steps (TestEvolver
+// shows the same on the core alone; here the filter's way in is the reference).
 void splitSurfaceAsInitialSurface(vtkPolyData* box)
 {
   using namespace shrinkwrap;
@@ -426,7 +457,8 @@ void splitSurfaceAsInitialSurface(vtkPolyData* box)
     largest = std::max(largest, (p - x[i]).norm());
   }
   std::printf("split between steps against the split surface as InitialSurface, %d steps: largest "
-              "difference %.3g (target size 2)\n", steps, largest);
+              "difference %.3g (target size 2)\n",
+    steps, largest);
   SW_CHECK(largest < 1e-8, "the filter's InitialSurface path equals the edit");
 }
 

@@ -91,7 +91,8 @@ vtkSmartPointer<vtkPolyData> twoComponents()
   return append->GetOutput();
 }
 
-void check(const std::string& name, vtkPolyData* mesh, int resolution, int sweep, double offsetFactor = 1.0)
+void check(
+  const std::string& name, vtkPolyData* mesh, int resolution, int sweep, double offsetFactor = 1.0)
 {
   vtkNew<vtkMeshSignedDistance> filter;
   filter->SetInputData(mesh);
@@ -103,8 +104,8 @@ void check(const std::string& name, vtkPolyData* mesh, int resolution, int sweep
   SW_CHECK(image->GetFieldData()->GetArray("Signed") &&
       image->GetFieldData()->GetArray("Signed")->GetTuple1(0) == 1,
     name << ": a closed mesh gives a signed field");
-  const testing::FieldErrors errors =
-    testing::compareWithReference(image, testing::triangulated(mesh), /*brute=*/true, /*checkSign=*/true);
+  const testing::FieldErrors errors = testing::compareWithReference(
+    image, testing::triangulated(mesh), /*brute=*/true, /*checkSign=*/true);
   if (sweep == vtkMeshSignedDistance::CLOSEST_POINT)
   {
     testing::checkAccuracy(name, errors, true);
@@ -131,7 +132,8 @@ int TestSignedDistanceAccuracy(int, char*[])
   check("torus (seams), tight box", torus(), 40, vtkMeshSignedDistance::EIKONAL, 0.1);
   check("two components", twoComponents(), 48, vtkMeshSignedDistance::CLOSEST_POINT);
   vtkSmartPointer<vtkPolyData> stripped = strips();
-  SW_CHECK(stripped->GetNumberOfStrips() > 0 && stripped->GetNumberOfPolys() == 0, "the stripped sphere has strips only");
+  SW_CHECK(stripped->GetNumberOfStrips() > 0 && stripped->GetNumberOfPolys() == 0,
+    "the stripped sphere has strips only");
   check("sphere as triangle strips", stripped, 48, vtkMeshSignedDistance::CLOSEST_POINT);
   check("hexagonal prism (n-gons)", hexagonalPrism(), 48, vtkMeshSignedDistance::CLOSEST_POINT);
   check("torus", torus(), 40, vtkMeshSignedDistance::EIKONAL);

@@ -1,40 +1,42 @@
-// A contour of the distance field as the starting surface (the paper's Section 5: "start the evolution
-// by generating a contour surface of distance function d ... after tangentially relaxing triangle
-// vertices", so that the holes of a target of higher genus stay open):
+// A contour of the distance field as the starting surface (the paper's Section 5: "start the
+// evolution by generating a contour surface of distance function d ... after tangentially relaxing
+// triangle vertices", so that the holes of a target of higher genus stay open):
 // - relaxTangentially turns a marching-cubes contour's slivers into good triangles, keeps it closed
 //   and keeps its vertices near the level set;
 // - the filter wraps a torus from a contour, keeping the hole (Euler characteristic 0) where the
 //   icosphere closes it over (2), and starts from the relaxed contour;
-// - the Offset Surface start (the default) does the same by itself, and closes the hole over when it is
+// - the Offset Surface start (the default) does the same by itself, and closes the hole over when
+// it is
 //   narrower than the Gap Size; with remeshing on, it begins coarsened to the Target Edge Length;
-// - asked for fewer joins, a contour is taken of the grid with the shallower corner raised where the
-//   case table joins the corners below the value on an ambiguous face that the trilinear interpolant
-//   keeps apart (as many blobs as at half the spacing, the grid's number of triangles), not where the
-//   raise would change the interpolant's topology, also where the join takes two faces (each raise
-//   alone undoes nothing), and the grid is left alone elsewhere
+// - asked for fewer joins, a contour is taken of the grid with the shallower corner raised where
+// the
+//   case table joins the corners below the value on an ambiguous face that the trilinear
+//   interpolant keeps apart (as many blobs as at half the spacing, the grid's number of triangles),
+//   not where the raise would change the interpolant's topology, also where the join takes two
+//   faces (each raise alone undoes nothing), and the grid is left alone elsewhere
 //   (ContourTopology.h);
 // - the core's triangle counts per case are those of VTK's marching-cubes table, which the filters'
 //   contour uses;
 // - where the offset start joins two parts across a slit the field keeps open (a handle), a lower
 //   offset without that handle is taken.
-#include "Surface/Components.h"
 #include "Distance/ContourTopology.h"
-#include "Surface/Icosphere.h"
-#include "Remeshing/Relaxation.h"
-#include "Surface/SelfIntersections.h"
 #include "Evolution/StartingSurface.h"
+#include "Remeshing/Relaxation.h"
+#include "Surface/Components.h"
+#include "Surface/Icosphere.h"
+#include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceGeometry.h"
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
 
 #include <vtkAppendPolyData.h>
-#include <vtkMarchingCubesTriangleCases.h>
+#include <vtkCellData.h>
 #include <vtkContourFilter.h>
+#include <vtkFieldData.h>
+#include <vtkMarchingCubesTriangleCases.h>
 #include <vtkPolyDataConnectivityFilter.h>
 #include <vtkSphereSource.h>
-#include <vtkCellData.h>
-#include <vtkFieldData.h>
 #include <vtkStringArray.h>
 
 #include <algorithm>
@@ -59,7 +61,8 @@ vtkSmartPointer<vtkPolyData> torus(int nu = 96, int nv = 32)
     for (int j = 0; j < nv; ++j)
     {
       const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
-      points->InsertNextPoint((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+      points->InsertNextPoint(
+        (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
     }
   }
   vtkNew<vtkCellArray> triangles;
@@ -92,12 +95,12 @@ std::string statusOf(vtkPolyData* mesh)
   return status ? status->GetValue(0) : std::string();
 }
 
-
 // The level set d = 0.1 of the torus, sampled on a 0.05 grid, by marching cubes.
 vtkSmartPointer<vtkPolyData> torusContour(double level, double h)
 {
   vtkNew<vtkImageData> grid;
-  const int n[3] = { static_cast<int>(2 * (R + r + 0.3) / h) + 1, n[0], static_cast<int>(2 * (r + 0.3) / h) + 1 };
+  const int n[3] = { static_cast<int>(2 * (R + r + 0.3) / h) + 1, n[0],
+    static_cast<int>(2 * (r + 0.3) / h) + 1 };
   grid->SetDimensions(n[0], n[1], n[2]);
   grid->SetSpacing(h, h, h);
   grid->SetOrigin(-(n[0] - 1) * h / 2, -(n[1] - 1) * h / 2, -(n[2] - 1) * h / 2);
@@ -135,9 +138,9 @@ void relaxesAContour()
   {
     drift = std::max(drift, std::abs(torusDistance(p) - level));
   }
-  std::cout << "contour of " << s.points.size() << " vertices: smallest angle " << before * 180 / M_PI
-            << " -> " << after * 180 / M_PI << " degrees; largest drift off the level set " << drift / h
-            << " h" << std::endl;
+  std::cout << "contour of " << s.points.size() << " vertices: smallest angle "
+            << before * 180 / M_PI << " -> " << after * 180 / M_PI
+            << " degrees; largest drift off the level set " << drift / h << " h" << std::endl;
   SW_CHECK(before < 1 * M_PI / 180, "marching cubes leaves slivers");
   SW_CHECK(after > 15 * M_PI / 180, "relaxed: no triangle angle below 15 degrees");
   SW_CHECK(drift < 0.1 * h, "the relaxed vertices stay within 0.1 h of the level set");
@@ -160,7 +163,8 @@ void wrapsATorusFromAContour()
   const double h = field->GetOutput()->GetSpacing()[0];
   vtkNew<vtkContourFilter> contour;
   contour->SetInputConnection(field->GetOutputPort());
-  contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
+  contour->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
   contour->SetValue(0, 3 * h);
 
   vtkNew<vtkShrinkWrapFilter> wrap;
@@ -190,9 +194,11 @@ void wrapsATorusFromAContour()
   sphere->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE);
   sphere->SetRemeshing(false);
   sphere->Update();
-  SW_CHECK(eulerCharacteristic(sphere->GetOutput()) == 2, "from the icosphere the hole is spanned over");
+  SW_CHECK(
+    eulerCharacteristic(sphere->GetOutput()) == 2, "from the icosphere the hole is spanned over");
 
-  // Step 0 is the relaxed contour; with InitialRelaxation 0, the contour as given (with its slivers).
+  // Step 0 is the relaxed contour; with InitialRelaxation 0, the contour as given (with its
+  // slivers).
   const auto smallestAngleAtStart = [&wrap] {
     wrap->UpdateTimeStep(0);
     vtkDataArray* angles = wrap->GetOutput()->GetCellData()->GetArray("MinAngle");
@@ -201,13 +207,15 @@ void wrapsATorusFromAContour()
   const double relaxed = smallestAngleAtStart();
   wrap->SetInitialRelaxation(0);
   const double given = smallestAngleAtStart();
-  std::cout << "smallest angle at step 0: " << given << " degrees as given, " << relaxed << " relaxed" << std::endl;
-  SW_CHECK(relaxed > 15 && given >= 0 && given < 5, "the filter relaxes the InitialSurface before it evolves");
+  std::cout << "smallest angle at step 0: " << given << " degrees as given, " << relaxed
+            << " relaxed" << std::endl;
+  SW_CHECK(relaxed > 15 && given >= 0 && given < 5,
+    "the filter relaxes the InitialSurface before it evolves");
 }
 
-// The Offset Surface start (the default) keeps the torus's hole open; a slot narrower than the Gap Size
-// is bridged, a wider one is not. (A closing by a ball never bridges a ring's hole: balls from both
-// sides cover its middle whatever their size.)
+// The Offset Surface start (the default) keeps the torus's hole open; a slot narrower than the Gap
+// Size is bridged, a wider one is not. (A closing by a ball never bridges a ring's hole: balls from
+// both sides cover its middle whatever their size.)
 void wrapsATorusFromItsOffset()
 {
   vtkSmartPointer<vtkPolyData> target = torus();
@@ -221,12 +229,14 @@ void wrapsATorusFromItsOffset()
   {
     largest = std::max(largest, std::abs(distance->GetTuple1(i)));
   }
-  std::cout << "torus from its offset surface: " << statusOf(out) << ", " << out->GetNumberOfPoints()
-            << " vertices, Euler characteristic " << eulerCharacteristic(out) << ", largest |d| at a vertex "
-            << largest << " (tube radius " << r << ")" << std::endl;
+  std::cout << "torus from its offset surface: " << statusOf(out) << ", "
+            << out->GetNumberOfPoints() << " vertices, Euler characteristic "
+            << eulerCharacteristic(out) << ", largest |d| at a vertex " << largest
+            << " (tube radius " << r << ")" << std::endl;
   SW_CHECK(statusOf(out) == "ok", "200 steps from the offset surface");
   // 0.03 r is a fraction of a cell of the filter's field (Resolution 80 over 1.25 times the torus).
-  SW_CHECK(eulerCharacteristic(out) == 0 && largest < 0.03 * r, "the hole stays open, the wrap on the torus");
+  SW_CHECK(eulerCharacteristic(out) == 0 && largest < 0.03 * r,
+    "the hole stays open, the wrap on the torus");
 
   // Two spheres of radius 1 with a slot of 0.3 between them.
   vtkNew<vtkSphereSource> left, right;
@@ -253,17 +263,19 @@ void wrapsATorusFromItsOffset()
     pieces->SetExtractionModeToAllRegions();
     pieces->Update();
     const int count = pieces->GetNumberOfExtractedRegions();
-    std::cout << "two spheres 0.3 apart, Gap Size " << gap << ": " << statusOf(spheres->GetOutput()) << ", "
-              << count << " piece(s), Euler characteristic " << eulerCharacteristic(spheres->GetOutput()) << std::endl;
+    std::cout << "two spheres 0.3 apart, Gap Size " << gap << ": " << statusOf(spheres->GetOutput())
+              << ", " << count << " piece(s), Euler characteristic "
+              << eulerCharacteristic(spheres->GetOutput()) << std::endl;
     SW_CHECK(statusOf(spheres->GetOutput()) == "ok", "the two spheres wrap");
-    const std::string expected = gap < 0.3 ? "a slot wider than the Gap Size stays open" : "a slot narrower than the Gap Size is bridged";
+    const std::string expected = gap < 0.3 ? "a slot wider than the Gap Size stays open"
+                                           : "a slot narrower than the Gap Size is bridged";
     SW_CHECK(count == (gap < 0.3 ? 2 : 1), expected);
   }
 }
 
-// The offset start is a contour with a vertex every fraction of a cell; with remeshing on, the evolution
-// begins from it coarsened to the Target Edge Length (checked against crossings), not at the grid's
-// resolution.
+// The offset start is a contour with a vertex every fraction of a cell; with remeshing on, the
+// evolution begins from it coarsened to the Target Edge Length (checked against crossings), not at
+// the grid's resolution.
 void coarsensTheOffsetStart()
 {
   vtkSmartPointer<vtkPolyData> target = torus();
@@ -287,13 +299,14 @@ void coarsensTheOffsetStart()
     }
     const double mean = edges / (3.0 * s.triangles.size());
     const long long crossing = shrinkwrap::findSelfIntersections(s.points, s.triangles).pairs;
-    std::cout << "offset start of the torus at L = " << L << ": " << statusOf(start) << ", " << s.points.size()
-              << " vertices, mean edge " << mean << ", Euler characteristic " << eulerCharacteristic(start) << ", "
-              << crossing << " crossing pairs" << std::endl;
+    std::cout << "offset start of the torus at L = " << L << ": " << statusOf(start) << ", "
+              << s.points.size() << " vertices, mean edge " << mean << ", Euler characteristic "
+              << eulerCharacteristic(start) << ", " << crossing << " crossing pairs" << std::endl;
     SW_CHECK(statusOf(start) == "ok" && eulerCharacteristic(start) == 0 && crossing == 0,
       "the coarsened start is a closed torus that does not cross itself");
     SW_CHECK(mean > 0.7 * L && mean < 1.2 * L, "its edges are about L long");
-    SW_CHECK(previous == 0 || 2.5 * s.points.size() < previous, "twice L: about a quarter of the vertices");
+    SW_CHECK(previous == 0 || 2.5 * s.points.size() < previous,
+      "twice L: about a quarter of the vertices");
     previous = static_cast<int>(s.points.size());
   }
 }
@@ -343,17 +356,21 @@ void countsAsVTKsCaseTable()
 void followsTheInterpolantsTopology()
 {
   using shrinkwrap::contourEulerCharacteristic;
-  // -1 and +2: the face's bilinear saddle is +0.5, so the interpolant keeps the two nodes below 0 apart
-  // (two closed blobs, 4) where the table joins them (one, 2).
+  // -1 and +2: the face's bilinear saddle is +0.5, so the interpolant keeps the two nodes below 0
+  // apart (two closed blobs, 4) where the table joins them (one, 2).
   const shrinkwrap::DistanceGrid apart = ambiguousFace(-1, 2);
-  SW_CHECK(contourEulerCharacteristic(apart, 0).grid == 2, "the table joins the corners below: one blob");
-  SW_CHECK(contourEulerCharacteristic(apart, 0).halfSpacing == 4, "at half the spacing they are apart: two blobs");
-  const shrinkwrap::TriangleSoup split = shrinkwrap::contourWithFewerJoins(apart, 0, shrinkwrap::convert::contour);
+  SW_CHECK(
+    contourEulerCharacteristic(apart, 0).grid == 2, "the table joins the corners below: one blob");
+  SW_CHECK(contourEulerCharacteristic(apart, 0).halfSpacing == 4,
+    "at half the spacing they are apart: two blobs");
+  const shrinkwrap::TriangleSoup split =
+    shrinkwrap::contourWithFewerJoins(apart, 0, shrinkwrap::convert::contour);
   const shrinkwrap::TriangleSoup table = shrinkwrap::convert::contour(apart, 0);
   SW_CHECK(eulerOf(split) == 4, "the contour is the two blobs, not one (" << eulerOf(split) << ")");
   SW_CHECK(eulerOf(table) == 2, "unless asked for: the table's one blob");
   SW_CHECK(split.triangles.size() <= table.triangles.size(),
-    "from the grid, not at half the spacing: " << split.triangles.size() << " triangles (the table's " << table.triangles.size() << ")");
+    "from the grid, not at half the spacing: "
+      << split.triangles.size() << " triangles (the table's " << table.triangles.size() << ")");
   // Which corner is raised: the shallower of the two below (-0.5 against -1), and only that node.
   const shrinkwrap::DistanceGrid uneven = [] {
     shrinkwrap::DistanceGrid g = ambiguousFace(-1, 2);
@@ -374,7 +391,8 @@ void followsTheInterpolantsTopology()
   // node, raising it would delete that blob, which the interpolant has.
   const shrinkwrap::DistanceGrid lone = [&uneven] {
     std::vector<float> v = uneven.values();
-    for (const auto& c : { std::array<int, 3>{ 4, 3, 1 }, std::array<int, 3>{ 3, 4, 1 }, std::array<int, 3>{ 4, 4, 1 } })
+    for (const auto& c : { std::array<int, 3>{ 4, 3, 1 }, std::array<int, 3>{ 3, 4, 1 },
+           std::array<int, 3>{ 4, 4, 1 } })
     {
       v[uneven.lattice().index(c[0], c[1], c[2])] = 2;
     }
@@ -383,8 +401,9 @@ void followsTheInterpolantsTopology()
   SW_CHECK(contourEulerCharacteristic(lone, 0).halfSpacing == 4 &&
       shrinkwrap::withFacesSeparated(lone, 0).values() == lone.values(),
     "a lone node below is kept: raising it would delete a blob of the interpolant");
-  // Two blocks two layers thick meet along an edge, through two ambiguous faces: neither raise alone
-  // undoes the join (the other face still makes it), both together do (the hand's thumb took six).
+  // Two blocks two layers thick meet along an edge, through two ambiguous faces: neither raise
+  // alone undoes the join (the other face still makes it), both together do (the hand's thumb took
+  // six).
   const shrinkwrap::DistanceGrid edge = [] {
     shrinkwrap::GridLattice lattice;
     lattice.dims = { 7, 7, 4 };
@@ -399,19 +418,26 @@ void followsTheInterpolantsTopology()
     return shrinkwrap::DistanceGrid(lattice, std::move(v));
   }();
   const shrinkwrap::ContourEuler edgeEuler = contourEulerCharacteristic(edge, 0);
-  const shrinkwrap::ContourEuler edgeSeparated = contourEulerCharacteristic(shrinkwrap::withFacesSeparated(edge, 0), 0);
-  SW_CHECK(edgeEuler.grid == 2 && edgeEuler.halfSpacing == 4 && edgeSeparated.grid == 4 && edgeSeparated.halfSpacing == 4,
-    "blocks meeting along an edge: one blob, two at half the spacing; separated, two (" << edgeEuler.grid << ", "
-      << edgeEuler.halfSpacing << " -> " << edgeSeparated.grid << ", " << edgeSeparated.halfSpacing << ")");
+  const shrinkwrap::ContourEuler edgeSeparated =
+    contourEulerCharacteristic(shrinkwrap::withFacesSeparated(edge, 0), 0);
+  SW_CHECK(edgeEuler.grid == 2 && edgeEuler.halfSpacing == 4 && edgeSeparated.grid == 4 &&
+      edgeSeparated.halfSpacing == 4,
+    "blocks meeting along an edge: one blob, two at half the spacing; separated, two ("
+      << edgeEuler.grid << ", " << edgeEuler.halfSpacing << " -> " << edgeSeparated.grid << ", "
+      << edgeSeparated.halfSpacing << ")");
   // -2 and +1: the saddle is -0.5, the interpolant joins them too; the grid's own contour is kept.
   const shrinkwrap::DistanceGrid joined = ambiguousFace(-2, 1);
-  SW_CHECK(contourEulerCharacteristic(joined, 0).halfSpacing == 2 && contourEulerCharacteristic(joined, 0).grid == 2,
+  SW_CHECK(contourEulerCharacteristic(joined, 0).halfSpacing == 2 &&
+      contourEulerCharacteristic(joined, 0).grid == 2,
     "both join the corners below");
-  SW_CHECK(shrinkwrap::withFacesSeparated(joined, 0).values() == joined.values(), "no corner raised");
-  const shrinkwrap::TriangleSoup one = shrinkwrap::contourWithFewerJoins(joined, 0, shrinkwrap::convert::contour);
+  SW_CHECK(
+    shrinkwrap::withFacesSeparated(joined, 0).values() == joined.values(), "no corner raised");
+  const shrinkwrap::TriangleSoup one =
+    shrinkwrap::contourWithFewerJoins(joined, 0, shrinkwrap::convert::contour);
   const std::size_t finer = shrinkwrap::convert::contour(joined.refined(), 0).triangles.size();
   SW_CHECK(eulerOf(one) == 2 && one.triangles.size() < finer,
-    "the grid's own contour: one blob, " << one.triangles.size() << " triangles (at half the spacing " << finer << ")");
+    "the grid's own contour: one blob, " << one.triangles.size()
+                                         << " triangles (at half the spacing " << finer << ")");
   // The counts agree with the contours marching cubes builds, on a torus's field at a few levels.
   const double h = 0.1;
   shrinkwrap::GridLattice lattice;
@@ -427,21 +453,25 @@ void followsTheInterpolantsTopology()
   for (const double level : { 0.0, 0.1, 0.15 })
   {
     const shrinkwrap::ContourEuler euler = contourEulerCharacteristic(field, level);
-    SW_CHECK(euler.grid == eulerOf(shrinkwrap::convert::contour(field, level)) && euler.halfSpacing == 0 &&
+    SW_CHECK(euler.grid == eulerOf(shrinkwrap::convert::contour(field, level)) &&
+        euler.halfSpacing == 0 &&
         euler.halfSpacing == eulerOf(shrinkwrap::convert::contour(field.refined(), level)),
-      "a torus's contour at " << level << ": the count is the contour's, 0 (" << euler.grid << ", " << euler.halfSpacing
-                                << "; built " << eulerOf(shrinkwrap::convert::contour(field, level)) << ", "
-                                << eulerOf(shrinkwrap::convert::contour(field.refined(), level)) << ")");
+      "a torus's contour at " << level << ": the count is the contour's, 0 (" << euler.grid << ", "
+                              << euler.halfSpacing << "; built "
+                              << eulerOf(shrinkwrap::convert::contour(field, level)) << ", "
+                              << eulerOf(shrinkwrap::convert::contour(field.refined(), level))
+                              << ")");
   }
 }
 
-// A ring cut open (a tube of radius 0.2 round a circle of radius 1, cut by a slit of 1.8 cells whose
-// caps lie `slit` apart), sampled on a grid of spacing h; with `speck`, a blob at its centre that a
-// contour half a cell out leaves as a speck.
+// A ring cut open (a tube of radius 0.2 round a circle of radius 1, cut by a slit of 1.8 cells
+// whose caps lie `slit` apart), sampled on a grid of spacing h; with `speck`, a blob at its centre
+// that a contour half a cell out leaves as a speck.
 shrinkwrap::DistanceGrid slitRing(double h, bool speck)
 {
   const double tube = 0.2, slit = 1.8 * h;
-  // The caps' centres lie slit + 2 tube apart on the circle: half that angle each side of the x axis.
+  // The caps' centres lie slit + 2 tube apart on the circle: half that angle each side of the x
+  // axis.
   const double half = std::asin(0.5 * (slit + 2 * tube));
   shrinkwrap::GridLattice lattice;
   lattice.spacing = Vec3::Constant(h);
@@ -459,16 +489,18 @@ shrinkwrap::DistanceGrid slitRing(double h, bool speck)
     }
     if (speck)
     {
-      d = std::min(d, p.norm() - 0.2 * h); // on a node: a cell out it spans 2.4 cells, half a cell out 1.4
+      d = std::min(
+        d, p.norm() - 0.2 * h); // on a node: a cell out it spans 2.4 cells, half a cell out 1.4
     }
     values[n] = static_cast<float>(d);
   }
   return shrinkwrap::DistanceGrid(lattice, std::move(values));
 }
 
-// The offset start at a cell joins the ring's caps across the slit -- a handle the ring has not; the
-// start takes the highest offset below it (to half a cell) with fewer handles (StartingSurface.cxx,
-// fewestHandles), and the specks of the contour it takes are counted where they are left out.
+// The offset start at a cell joins the ring's caps across the slit -- a handle the ring has not;
+// the start takes the highest offset below it (to half a cell) with fewer handles
+// (StartingSurface.cxx, fewestHandles), and the specks of the contour it takes are counted where
+// they are left out.
 void startsWithoutTheSlitsBridge()
 {
   const double h = 0.05;
@@ -477,19 +509,21 @@ void startsWithoutTheSlitsBridge()
   {
     const shrinkwrap::DistanceGrid field = slitRing(h, speck);
     const std::string ring = speck ? "the ring with a speck: " : "the ring: ";
-    SW_CHECK(shrinkwrap::handleCount(shrinkwrap::contourWithFewerJoins(field, h, contour)) == 1, ring << "the contour a cell out joins the caps: one handle");
-    const std::vector<shrinkwrap::ContourEuler> counts = shrinkwrap::contourEulerCharacteristics(field, { h, 0.5 * h });
+    SW_CHECK(shrinkwrap::handleCount(shrinkwrap::contourWithFewerJoins(field, h, contour)) == 1,
+      ring << "the contour a cell out joins the caps: one handle");
+    const std::vector<shrinkwrap::ContourEuler> counts =
+      shrinkwrap::contourEulerCharacteristics(field, { h, 0.5 * h });
     const long long blob = speck ? 2 : 0; // a sphere's Euler characteristic
     SW_CHECK(counts.size() == 2 && counts[0].grid == 0 + blob && counts[1].grid == 2 + blob,
-      ring << "Euler characteristics in one pass: " << blob << " a cell out (a handle), " << 2 + blob
-           << " half a cell out");
+      ring << "Euler characteristics in one pass: " << blob << " a cell out (a handle), "
+           << 2 + blob << " half a cell out");
     shrinkwrap::StartSettings settings;
     settings.offset = 1;
     settings.relaxation = 0;
     shrinkwrap::SurfaceMesh start;
     int specks = 0;
-    const shrinkwrap::Status status = shrinkwrap::startingSurface(
-      field, field.lattice().bounds(), nullptr, settings, shrinkwrap::FlipSettings(), contour, start, specks);
+    const shrinkwrap::Status status = shrinkwrap::startingSurface(field, field.lattice().bounds(),
+      nullptr, settings, shrinkwrap::FlipSettings(), contour, start, specks);
     shrinkwrap::TriangleSoup surface{ start.points(), start.triangles() };
     double nearest = INFINITY; // the start's distance from the ring, at its vertices
     for (const Vec3& p : surface.points)
@@ -497,11 +531,12 @@ void startsWithoutTheSlitsBridge()
       nearest = std::min(nearest, field.sample(p).value);
     }
     SW_CHECK(status && shrinkwrap::handleCount(surface) == 0 && nearest > 0.4 * h,
-      ring << "the start keeps the slit open: " << shrinkwrap::handleCount(surface) << " handles, at least "
-           << nearest / h << " cells from the ring");
-    // The lower offset taken, its speck is left out where the caller hears of it: one sphere is left
-    // (V - F / 2 is 2 per sphere).
-    const long long euler = static_cast<long long>(surface.points.size()) - static_cast<long long>(surface.triangles.size()) / 2;
+      ring << "the start keeps the slit open: " << shrinkwrap::handleCount(surface)
+           << " handles, at least " << nearest / h << " cells from the ring");
+    // The lower offset taken, its speck is left out where the caller hears of it: one sphere is
+    // left (V - F / 2 is 2 per sphere).
+    const long long euler = static_cast<long long>(surface.points.size()) -
+      static_cast<long long>(surface.triangles.size()) / 2;
     SW_CHECK(specks == (speck ? 1 : 0) && euler == 2,
       ring << specks << " speck(s) left out, Euler characteristic " << euler << " left");
   }

@@ -1,7 +1,7 @@
 // Shrink Wrap through the core alone, without the filter or its pipeline (Wrap.h: the target made,
-// planned, its fields, start and session, and the steps), gives the filter's surface bit for bit: on
-// a mesh, on its points, from the icosphere, and on a given distance field. The contour handed to
-// the core is the filters' (marching cubes, VTKConversions.h), as the filter hands it.
+// planned, its fields, start and session, and the steps), gives the filter's surface bit for bit:
+// on a mesh, on its points, from the icosphere, and on a given distance field. The contour handed
+// to the core is the filters' (marching cubes, VTKConversions.h), as the filter hands it.
 #include "TestUtilities.h"
 #include "vtkInputGeometry.h"
 #include "vtkMeshSignedDistance.h"
@@ -35,8 +35,8 @@ vtkSmartPointer<vtkPolyData> roundedBox()
 }
 
 // The filter's wrap and the core's, of `target` with the same settings.
-void same(const char* what, vtkPolyData* target, const std::function<void(vtkShrinkWrapFilter*)>& set,
-  vtkImageData* field = nullptr)
+void same(const char* what, vtkPolyData* target,
+  const std::function<void(vtkShrinkWrapFilter*)>& set, vtkImageData* field = nullptr)
 {
   vtkNew<vtkShrinkWrapFilter> filter;
   filter->SetInputData(target);
@@ -56,9 +56,8 @@ void same(const char* what, vtkPolyData* target, const std::function<void(vtkShr
   convert::SoupCounts counts;
   const bool points = properties->GetInputGeometry() == vtkInputGeometry::POINTS;
   WrapTarget core;
-  const Status made = points
-    ? makeTarget({}, convert::pointsOf<PointList>(target), core)
-    : makeTarget(convert::soupOf({ target }, counts), {}, core);
+  const Status made = points ? makeTarget({}, convert::pointsOf<PointList>(target), core)
+                             : makeTarget(convert::soupOf({ target }, counts), {}, core);
   if (field)
   {
     DistanceGrid grid;
@@ -81,7 +80,8 @@ int TestWrapInCore(int, char*[])
 {
   const vtkSmartPointer<vtkPolyData> box = roundedBox();
   same("a mesh at the defaults", box, [](vtkShrinkWrapFilter*) {});
-  same("its points", box, [](vtkShrinkWrapFilter* f) { f->SetInputGeometry(vtkInputGeometry::POINTS); });
+  same("its points", box,
+    [](vtkShrinkWrapFilter* f) { f->SetInputGeometry(vtkInputGeometry::POINTS); });
   same("from the icosphere", box, [](vtkShrinkWrapFilter* f) {
     f->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE);
     f->SetNumberOfSteps(60);
@@ -90,6 +90,7 @@ int TestWrapInCore(int, char*[])
   distance->SetInputData(box);
   distance->SetResolution(64);
   distance->Update();
-  same("on Mesh Signed Distance's field", box, [](vtkShrinkWrapFilter*) {}, distance->GetOutput());
+  same(
+    "on Mesh Signed Distance's field", box, [](vtkShrinkWrapFilter*) {}, distance->GetOutput());
   return testing::finish("TestWrapInCore");
 }

@@ -12,6 +12,7 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -219,6 +220,7 @@ std::uint64_t contentDigest(vtkDataObject* data)
       double bounds[6];
       leaf->GetBounds(bounds);
       digest.add(bounds, sizeof(bounds));
+      digest.add(leaf->GetPointData()->GetScalars()); // a field's values
     }
     if (auto* mesh = vtkPolyData::SafeDownCast(leaf))
     {
@@ -392,22 +394,6 @@ void askWholeInputs(vtkInformationVector** inputVector, int ports, bool anyTime)
       }
     }
   }
-}
-
-vtkMTimeType newestModification(vtkAlgorithm* filter, int ports)
-{
-  vtkMTimeType newest = filter->GetMTime();
-  for (int port = 0; port < ports; ++port)
-  {
-    for (int c = 0; c < filter->GetNumberOfInputConnections(port); ++c)
-    {
-      if (vtkDataObject* data = filter->GetInputDataObject(port, c))
-      {
-        newest = std::max(newest, data->GetMTime());
-      }
-    }
-  }
-  return newest;
 }
 
 vtkCompositeDataSet* compositeOf(vtkInformationVector* port)

@@ -49,7 +49,8 @@ private:
   vtkMultiProcessController* Controller;
 };
 
-// A digest of a dataset's or composite's geometry (points, cells, grid): equal data, equal digest.
+// A digest of a dataset's or composite's geometry (points, cells; a grid and its scalars): equal
+// data, equal digest.
 std::uint64_t contentDigest(vtkDataObject* data);
 
 // The digest of each rank's input, the same list on every rank. Collective over `controller`; one
@@ -101,9 +102,6 @@ std::vector<int> piecesOfLeaves(vtkCompositeDataSet* composite,
 // Asks a filter's inputs on its first `ports` ports for all of their data (piece 0 of 1, no ghost
 // levels), and with `anyTime` at the time they have (no time asked for).
 void askWholeInputs(vtkInformationVector** inputVector, int ports, bool anyTime);
-
-// The newest modification of `filter` and of its inputs' data on its first `ports` ports.
-vtkMTimeType newestModification(vtkAlgorithm* filter, int ports);
 
 // The first composite among a port's inputs, if any.
 vtkCompositeDataSet* compositeOf(vtkInformationVector* port);

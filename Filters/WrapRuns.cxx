@@ -7,6 +7,7 @@
 #include "Wrap/AutomaticSizes.h"
 #include "Wrap/Wrap.h"
 
+#include <vtkAlgorithm.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
@@ -136,6 +137,31 @@ std::vector<int> piecesOfBlocks(
     cost[b] = length > 0 && std::isfinite(vertices) ? std::max(1.0, vertices) : 1.0;
   }
   return shareOut(cost, pieces);
+}
+
+vtkMTimeType WrapRuns::keyOf(vtkAlgorithm* filter, int ports)
+{
+  std::vector<InputDigest> digests;
+  std::uint64_t key = filter->GetMTime();
+  for (int port = 0; port < ports; ++port)
+  {
+    for (int c = 0; c < filter->GetNumberOfInputConnections(port); ++c)
+    {
+      vtkDataObject* data = filter->GetInputDataObject(port, c);
+      if (!data)
+      {
+        continue;
+      }
+      const auto known = std::find_if(this->Digests.begin(), this->Digests.end(),
+        [&](const InputDigest& d) { return d.data == data && d.time == data->GetMTime(); });
+      digests.push_back(known != this->Digests.end()
+          ? *known
+          : InputDigest{ data, data->GetMTime(), contentDigest(data) });
+      key = key * 0x100000001b3ull ^ digests.back().digest; // FNV-1a's prime: one 64-bit key
+    }
+  }
+  this->Digests = std::move(digests);
+  return static_cast<vtkMTimeType>(key);
 }
 
 void WrapRuns::keepBlocksFor(vtkMTimeType key)

@@ -12,11 +12,13 @@
 
 #include <vtkType.h>
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
 #include <vector>
 
+class vtkAlgorithm;
 class vtkDataObject;
 class vtkDataSet;
 class vtkInformationVector;
@@ -66,6 +68,11 @@ public:
     vtkMTimeType key = 0;
     double seconds = 0; // computing: fields, start and steps
   };
+  // The key of a filter's properties and inputs: its modification time and what its inputs on its
+  // first `ports` ports hold (their content: an input that runs again to the same data keeps the
+  // runs), read again only where an input's modification time changed.
+  vtkMTimeType keyOf(vtkAlgorithm* filter, int ports);
+
   // The run of a slot: 0 the whole target, 1 + flat index a block of a composite.
   Run& run(unsigned int slot) { return this->Runs[slot]; }
   // Forgets the blocks' runs and shares when `key` is not the one they were made for.
@@ -121,6 +128,13 @@ private:
     WrapPlan plan;
   } Planned;
 
+  struct InputDigest
+  {
+    const vtkDataObject* data;
+    vtkMTimeType time;
+    std::uint64_t digest;
+  };
+  std::vector<InputDigest> Digests;
   std::map<unsigned int, Run> Runs;
   vtkMTimeType BlocksKey = 0;
   std::vector<int> Shares;

@@ -205,7 +205,7 @@ int vtkShrinkWrapFilter::RequestUpdateExtent(
 
 vtkMTimeType vtkShrinkWrapFilter::SessionKey()
 {
-  return convert::newestModification(this, 3);
+  return this->Runs->keyOf(this, 3);
 }
 
 int vtkShrinkWrapFilter::RequestData(

@@ -1,0 +1,39 @@
+/**
+ * @class   pqShrinkWrapStarter
+ * @brief   What the ParaView client does for a Shrink Wrap created from its menus.
+ *
+ * Created with a mesh and its distance field selected, the field goes to the Distance Field input
+ * (the panel shows it there). After the first Apply the view shows the finished wrap: the
+ * animation goes to the wrap's last step (Play then shows the evolution from its start), and the
+ * wrap is coloured by Distance on a diverging map centred at 0 that spans the shown wrap's range,
+ * with its legend. Scripts (pvpython, the Python shell) keep their own control of time and colour.
+ */
+#ifndef pqShrinkWrapStarter_h
+#define pqShrinkWrapStarter_h
+
+#include <QObject>
+#include <QPointer>
+
+class pqPipelineSource;
+
+class pqShrinkWrapStarter : public QObject
+{
+  Q_OBJECT
+  typedef QObject Superclass;
+
+public:
+  pqShrinkWrapStarter(QObject* parent = nullptr);
+  ~pqShrinkWrapStarter() override = default;
+
+  void onStartup();
+  void onShutdown() {}
+
+private Q_SLOTS:
+  void created(pqPipelineSource* source);
+  void updated(pqPipelineSource* source);
+
+private:
+  Q_DISABLE_COPY(pqShrinkWrapStarter)
+};
+
+#endif

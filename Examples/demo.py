@@ -85,7 +85,7 @@ def shrink_wrap(reader, sdf, out, name, h):
     """Shrink Wrap with its defaults on the field just computed (its box holds the offset start);
     files, picture and report."""
     wrap = ShrinkWrap(Input=reader, DistanceField=sdf)
-    tau, steps = wrap.TimeStep, wrap.NumberOfSteps
+    tau, steps = wrap.TimePerStep, wrap.NumberOfSteps
     start = time.time()
     wrap.UpdatePipeline(steps * tau)
     seconds = time.time() - start

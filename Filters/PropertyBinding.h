@@ -17,6 +17,15 @@ namespace shrinkwrap
 namespace convert
 {
 
+// A property as the panel shows it: its name (the XML's, Python's and the C++ Set/Get's), its label
+// and the unit its documentation states ("" where it has none: a switch, a choice, a count).
+struct PropertyInfo
+{
+  const char* name;
+  const char* label;
+  const char* unit;
+};
+
 template <typename T>
 struct IsOptional : std::false_type
 {
@@ -73,9 +82,9 @@ void printProperty(std::ostream& os, const char* name, const T& value)
 // A bind for BindProperties that prints each property as a line of PrintSelf.
 inline auto propertyPrinter(std::ostream& os, vtkIndent indent)
 {
-  return [&os, indent](const char* name, const auto& property, const auto&) {
+  return [&os, indent](const PropertyInfo& info, const auto& property, const auto&) {
     os << indent;
-    printProperty(os, name, property);
+    printProperty(os, info.name, property);
   };
 }
 

@@ -66,7 +66,8 @@ Status wrapInputs(
   {
     vtkDataObject* data = vtkDataObject::GetData(inputVector[0], c);
     auto* image = vtkImageData::SafeDownCast(data);
-    if (image && !inputs.field && image->GetPointData()->GetArray("SignedDistance"))
+    if (image && image->GetPointData()->GetArray("SignedDistance") &&
+      (!inputs.field || image == inputs.field)) // the field, on Input or on both ports
     {
       inputs.field = image;
       continue;

@@ -55,20 +55,38 @@ struct vtkMeshSignedDistance::FieldSettings
 template <typename Filter, typename Settings, typename Bind>
 void vtkMeshSignedDistance::BindProperties(Filter& f, Settings& s, Bind&& bind)
 {
-  bind("BoxScale", f.BoxScale, s.placement.boxScale);
-  bind("OffsetFactor", f.OffsetFactor, s.placement.offsetFactor);
-  bind("Resolution", f.Resolution, s.placement.resolution);
-  bind("CellSize", f.CellSize, s.placement.cellSize);
-  bind("SweepMethod", f.SweepMethod, s.distance.sweep); // CLOSEST_POINT, EIKONAL
-  bind("BandLayers", f.BandLayers, s.distance.bandLayers);
-  bind("ComputeSign", f.ComputeSign, s.distance.computeSign);
+  using P = convert::PropertyInfo;
+  bind(P{ "Resolution", "Resolution", "cells along the longest side" }, f.Resolution,
+    s.placement.resolution);
+  bind(P{ "CellSize", "Cell Size", "in the input's units" }, f.CellSize, s.placement.cellSize);
+  bind(P{ "BoxScale", "Box Scale", "times the input's bounds" }, f.BoxScale, s.placement.boxScale);
+  bind(P{ "OffsetFactor", "Offset Factor", "times the largest side" }, f.OffsetFactor,
+    s.placement.offsetFactor);
+  bind(P{ "SweepMethod", "Sweep Method", "" }, f.SweepMethod, s.distance.sweep);
+  bind(P{ "BandLayers", "Band Layers", "layers of nodes" }, f.BandLayers, s.distance.bandLayers);
+  bind(P{ "ComputeSign", "Compute Sign", "" }, f.ComputeSign, s.distance.computeSign);
+}
+
+std::vector<convert::PropertyInfo> vtkMeshSignedDistance::DescribeProperties()
+{
+  std::vector<convert::PropertyInfo> described{ { "InputGeometry", "Input Geometry", "" },
+    { "UseExplicitGrid", "Use Explicit Grid", "" },
+    { "OutputBounds", "Output Bounds", "in the input's units" },
+    { "OutputDimensions", "Output Dimensions", "nodes" }, { "FieldPerBlock", "Field Per Block", "" } };
+  const FieldSettings settings;
+  vtkNew<vtkMeshSignedDistance> filter;
+  BindProperties(*filter.Get(), settings,
+    [&](const convert::PropertyInfo& p, const auto&, const auto&) { described.push_back(p); });
+  return described;
 }
 
 vtkMeshSignedDistance::vtkMeshSignedDistance()
 {
   const FieldSettings defaults; // stated once, in the core's settings
   BindProperties(*this, defaults,
-    [](const char*, auto& property, const auto& setting) { convert::assign(property, setting); });
+    [](const convert::PropertyInfo&, auto& property, const auto& setting) {
+      convert::assign(property, setting);
+    });
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
   this->SetProgressText("Mesh Signed Distance");
@@ -345,7 +363,9 @@ vtkMeshSignedDistance::FieldSettings vtkMeshSignedDistance::CoreSettings() const
 {
   FieldSettings settings;
   BindProperties(*this, settings,
-    [](const char*, const auto& property, auto& setting) { convert::assign(setting, property); });
+    [](const convert::PropertyInfo&, const auto& property, auto& setting) {
+      convert::assign(setting, property);
+    });
   return settings;
 }
 
@@ -394,13 +414,13 @@ void vtkMeshSignedDistance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   const auto print = convert::propertyPrinter(os, indent);
-  print("InputGeometry", convert::geometryName(this->InputGeometry), 0);
-  print("UseExplicitGrid", this->UseExplicitGrid, 0);
-  print("OutputBounds", this->OutputBounds, 0);
-  print("OutputDimensions", this->OutputDimensions, 0);
+  print(convert::PropertyInfo{ "InputGeometry", "", "" }, convert::geometryName(this->InputGeometry), 0);
+  print(convert::PropertyInfo{ "UseExplicitGrid", "", "" }, this->UseExplicitGrid, 0);
+  print(convert::PropertyInfo{ "OutputBounds", "", "" }, this->OutputBounds, 0);
+  print(convert::PropertyInfo{ "OutputDimensions", "", "" }, this->OutputDimensions, 0);
   const FieldSettings unused;
   BindProperties(*this, unused, print);
-  print("GridCellSize", this->GridCellSize, 0);
-  print("FieldPerBlock", this->FieldPerBlock, 0);
-  print("Controller", this->Controller, 0);
+  os << indent << "GridCellSize: " << this->GridCellSize << "\n";
+  os << indent << "FieldPerBlock: " << this->FieldPerBlock << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
 }

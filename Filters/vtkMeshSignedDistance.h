@@ -62,6 +62,7 @@ namespace shrinkwrap
 {
 namespace convert
 {
+struct PropertyInfo;
 struct GatheredInput;
 struct MeasuredInput;
 }
@@ -82,6 +83,8 @@ public:
   static vtkMeshSignedDistance* New();
   vtkTypeMacro(vtkMeshSignedDistance, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  /// Every property as the panel shows it (name, label, unit): what the panel's XML must say.
+  static std::vector<shrinkwrap::convert::PropertyInfo> DescribeProperties();
 
   enum SweepMethods
   {

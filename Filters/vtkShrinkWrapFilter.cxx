@@ -64,41 +64,71 @@ vtkShrinkWrapFilter::~vtkShrinkWrapFilter()
 template <typename Filter, typename Settings, typename Bind>
 void vtkShrinkWrapFilter::BindProperties(Filter& f, Settings& s, Bind&& bind)
 {
+  using P = convert::PropertyInfo;
   auto& e = s.evolution;
-  // The run, and eqs. (3) and (4).
-  bind("NumberOfSteps", f.NumberOfSteps, s.steps), bind("TimeStep", f.TimeStep, e.timeStep);
-  bind("C1", f.C1, e.C1), bind("C2", f.C2, e.C2), bind("C", f.C, e.C), bind("D", f.D, e.D);
-  bind("AutomaticScaling", f.AutomaticScaling, s.automaticScaling);
-  bind("SolverTolerance", f.SolverTolerance, e.solverTolerance);
-  // The tangential redistribution (Section 2.3, eq. (10)).
-  bind("TangentialRedistribution", f.TangentialRedistribution, e.redistribution);
-  bind("OmegaAngle", f.OmegaAngle, e.omegaAngle), bind("OmegaVolume", f.OmegaVolume, e.omegaVolume);
-  bind("DistanceWeighting", f.DistanceWeighting, e.distanceWeight), bind("RhoA", f.RhoA, e.rhoA);
-  // The sizes, the field and the cache.
-  bind("GapSize", f.GapSize, s.gapSize), bind("CloseHoles", f.CloseHoles, s.closeHoles);
-  bind("TargetEdgeLength", f.TargetEdgeLength, s.targetEdgeLength);
-  bind("EdgeLengthRange", f.EdgeLengthRange, s.edgeLengthRange);
-  bind("Resolution", f.Resolution, s.resolution);
-  bind("CacheMemoryLimit", f.CacheMemoryLimit, s.cacheMiB);
+  // The three sizes most wraps set, and how the wrap meets holes and blocks.
+  bind(P{ "TargetEdgeLength", "Target Edge Length", "in the target's units" }, f.TargetEdgeLength,
+    s.targetEdgeLength);
+  bind(P{ "GapSize", "Gap Size", "in the target's units" }, f.GapSize, s.gapSize);
+  bind(P{ "NumberOfSteps", "Number Of Steps", "steps" }, f.NumberOfSteps, s.steps);
+  bind(P{ "CloseHoles", "Close Holes", "" }, f.CloseHoles, s.closeHoles);
+  bind(P{ "EdgeLengthRange", "Edge Length Range", "in units of the Target Edge Length" },
+    f.EdgeLengthRange, s.edgeLengthRange);
+  bind(P{ "Remeshing", "Remeshing", "" }, f.Remeshing, s.remeshing);
+  bind(P{ "Resolution", "Resolution", "cells along the longest side" }, f.Resolution, s.resolution);
   // The start.
-  bind("StartingShape", f.StartingShape, s.start.shape),
-    bind("StartOffset", f.StartOffset, s.start.offset);
-  bind("SubdivisionLevel", f.SubdivisionLevel, s.start.subdivision);
-  bind("InitialRelaxation", f.InitialRelaxation, s.start.relaxation);
-  // The connectivity edits and the landing.
-  bind("Remeshing", f.Remeshing, s.remeshing);
-  bind("EdgeFlips", f.EdgeFlips, e.edgeFlips),
-    bind("FlipDihedralLimit", f.FlipDihedralLimit, e.flips.maxDihedral);
-  bind("EdgeCollapses", f.EdgeCollapses, e.edgeCollapses);
-  bind("CoverRims", f.CoverRims, e.rims.cover),
-    bind("CreaseAngle", f.CreaseAngle, e.rims.creaseAngle);
-  bind("FitFacets", f.FitFacets, e.facetFit);
+  bind(P{ "StartingShape", "Starting Shape", "" }, f.StartingShape, s.start.shape);
+  bind(P{ "StartOffsetInCells", "Start Offset In Cells", "in cells of the distance field" },
+    f.StartOffsetInCells, s.start.offset);
+  bind(P{ "SubdivisionLevel", "Subdivision Level", "" }, f.SubdivisionLevel, s.start.subdivision);
+  bind(P{ "InitialRelaxation", "Initial Relaxation", "iterations" }, f.InitialRelaxation,
+    s.start.relaxation);
+  // Eqs. (3)-(5).
+  bind(P{ "TimePerStep", "Time Per Step", "evolution time" }, f.TimePerStep, e.timeStep);
+  bind(P{ "AdvectionSpeed", "Advection Speed", "per unit of evolution time" }, f.AdvectionSpeed, e.C);
+  bind(P{ "ConcavityPush", "Concavity Push", "without unit" }, f.ConcavityPush, e.D);
+  bind(P{ "Smoothing", "Smoothing", "without unit" }, f.Smoothing, e.C1);
+  bind(P{ "SmoothingFalloff", "Smoothing Falloff", "squared scaled units" }, f.SmoothingFalloff,
+    e.C2);
+  bind(P{ "AutomaticScaling", "Automatic Scaling", "" }, f.AutomaticScaling, s.automaticScaling);
+  bind(P{ "SolverTolerance", "Solver Tolerance", "relative residual" }, f.SolverTolerance,
+    e.solverTolerance);
+  // The tangential redistribution (Section 2.3, eq. (10)).
+  bind(P{ "TangentialRedistribution", "Tangential Redistribution", "" },
+    f.TangentialRedistribution, e.redistribution);
+  bind(P{ "AngleWeight", "Angle Weight", "without unit" }, f.AngleWeight, e.omegaAngle);
+  bind(P{ "VolumeWeight", "Volume Weight", "without unit" }, f.VolumeWeight, e.omegaVolume);
+  bind(P{ "DistanceWeighting", "Distance Weighting", "" }, f.DistanceWeighting, e.distanceWeight);
+  bind(P{ "DistanceWeightAmplitude", "Distance Weight Amplitude", "without unit" },
+    f.DistanceWeightAmplitude, e.rhoA);
+  // The connectivity edits, the rims and the landing.
+  bind(P{ "EdgeFlips", "Edge Flips", "" }, f.EdgeFlips, e.edgeFlips);
+  bind(P{ "FlipDihedralLimit", "Flip Dihedral Limit", "degrees" }, f.FlipDihedralLimit,
+    e.flips.maxDihedral);
+  bind(P{ "EdgeCollapses", "Edge Collapses", "" }, f.EdgeCollapses, e.edgeCollapses);
+  bind(P{ "CoverRims", "Cover Rims", "" }, f.CoverRims, e.rims.cover);
+  bind(P{ "CreaseAngle", "Crease Angle", "degrees" }, f.CreaseAngle, e.rims.creaseAngle);
+  bind(P{ "FitFacets", "Fit Facets", "" }, f.FitFacets, e.facetFit);
+  bind(P{ "CacheMemoryMiB", "Cache Memory (MiB)", "MiB" }, f.CacheMemoryMiB, s.cacheMiB);
+}
+
+std::vector<convert::PropertyInfo> vtkShrinkWrapFilter::DescribeProperties()
+{
+  std::vector<convert::PropertyInfo> described{ { "InputGeometry", "Input Geometry", "" },
+    { "WrapPerBlock", "Wrap Per Block", "" } };
+  const WrapSettings settings;
+  vtkNew<vtkShrinkWrapFilter> filter;
+  BindProperties(*filter.Get(), settings,
+    [&](const convert::PropertyInfo& p, const auto&, const auto&) { described.push_back(p); });
+  return described;
 }
 
 void vtkShrinkWrapFilter::SetProperties(const WrapSettings& settings)
 {
   BindProperties(*this, settings,
-    [](const char*, auto& property, const auto& setting) { convert::assign(property, setting); });
+    [](const convert::PropertyInfo&, auto& property, const auto& setting) {
+      convert::assign(property, setting);
+    });
   this->Modified();
 }
 
@@ -106,7 +136,9 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
 {
   WrapSettings settings;
   BindProperties(*this, settings,
-    [](const char*, const auto& property, auto& setting) { convert::assign(setting, property); });
+    [](const convert::PropertyInfo&, const auto& property, auto& setting) {
+      convert::assign(setting, property);
+    });
   return settings;
 }
 
@@ -168,7 +200,7 @@ int vtkShrinkWrapFilter::RequestInformation(
 {
   // Every evolution step is a time step of the output.
   convert::advertiseSteps(
-    outputVector->GetInformationObject(0), this->NumberOfSteps, this->TimeStep);
+    outputVector->GetInformationObject(0), this->NumberOfSteps, this->TimePerStep);
   // ParaView reads information properties after RequestInformation, not after RequestData: the
   // panel's sizes are planned here from the inputs as they stand (0 while the target has not been
   // computed, and for a composite wrapped block by block); RequestData then shows the run's.
@@ -192,7 +224,7 @@ void vtkShrinkWrapFilter::ShowSizes(const WrapSizes& sizes)
 {
   this->FieldCellSize = sizes.cell;
   this->ChosenGapSize = sizes.gap;
-  this->ChosenTargetEdgeLength = sizes.edgeLength.value_or(0); // 0: Remeshing off
+  this->ChosenEdgeLength = sizes.edgeLength.value_or(0); // 0: Remeshing off
 }
 
 int vtkShrinkWrapFilter::RequestUpdateExtent(
@@ -333,7 +365,7 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
       return;
     }
   }
-  const int wanted = convert::stepAsked(outInfo, this->NumberOfSteps, this->TimeStep);
+  const int wanted = convert::stepAsked(outInfo, this->NumberOfSteps, this->TimePerStep);
   const int computed = run.session->computedSteps();
   const bool advanced = this->Advance(*run.session, wanted);
   run.seconds += secondsSince(begin);
@@ -342,7 +374,7 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
   if (advanced)
   {
     const Status written = convert::writeWrap(
-      *run.session, wanted, this->TimeStep, run.seconds, finished, output, notes);
+      *run.session, wanted, this->TimePerStep, run.seconds, finished, output, notes);
     this->ShowSizes(run.session->plan().sizes());
     convert::report(this, "Shrink Wrap", notes);
     if (!written)
@@ -397,5 +429,5 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "FieldCellSize: " << this->FieldCellSize << "\n";
   os << indent << "ChosenGapSize: " << this->ChosenGapSize << "\n";
-  os << indent << "ChosenTargetEdgeLength: " << this->ChosenTargetEdgeLength << "\n";
+  os << indent << "ChosenEdgeLength: " << this->ChosenEdgeLength << "\n";
 }

@@ -48,6 +48,7 @@ namespace shrinkwrap
 {
 namespace convert
 {
+struct PropertyInfo;
 struct GatheredInput;
 struct WrapInputs;
 class WrapRuns;
@@ -67,6 +68,8 @@ public:
   static vtkShrinkWrapFilter* New();
   vtkTypeMacro(vtkShrinkWrapFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  /// Every property as the panel shows it (name, label, unit): what the panel's XML must say.
+  static std::vector<shrinkwrap::convert::PropertyInfo> DescribeProperties();
 
   enum Redistributions
   {
@@ -129,40 +132,43 @@ public:
   /// 0.4 Gap Size) or ICOSPHERE (SubdivisionLevel 0-8, default 3).
   vtkSetClampMacro(StartingShape, int, ICOSPHERE, OFFSET_SURFACE);
   vtkGetMacro(StartingShape, int);
-  vtkSetClampMacro(StartOffset, double, 0.5, 1000.0);
-  vtkGetMacro(StartOffset, double);
+  vtkSetClampMacro(StartOffsetInCells, double, 0.5, 1000.0);
+  vtkGetMacro(StartOffsetInCells, double);
   vtkSetMacro(SubdivisionLevel, int);
   vtkGetMacro(SubdivisionLevel, int);
   /// Tangential relaxation iterations of a contour or given start. Default 10.
   vtkSetClampMacro(InitialRelaxation, int, 0, 1000);
   vtkGetMacro(InitialRelaxation, int);
 
-  /// tau, the time step (not an animation step). Default 0.015.
-  vtkSetMacro(TimeStep, double);
-  vtkGetMacro(TimeStep, double);
-  /// eps(d) = C1 (1 - exp(-d^2 / C2)), eq. (3). Defaults 1, 1.
-  vtkSetMacro(C1, double);
-  vtkGetMacro(C1, double);
-  vtkSetMacro(C2, double);
-  vtkGetMacro(C2, double);
-  /// eta(d) = C d ((-grad d . N) - D sqrt(1 - (grad d . N)^2)), eq. (4). Defaults 12, 0.5.
-  vtkSetMacro(C, double);
-  vtkGetMacro(C, double);
-  vtkSetMacro(D, double);
-  vtkGetMacro(D, double);
-  /// Tangential redistribution (Section 2.3): NONE, ANGLE (default) or VOLUME, with omega_angle
-  /// (0.5), omega_vol (1), and rho(d) = A (1 - exp(-d^2)) of eq. (10) when DistanceWeighting (off).
+  /// Time Per Step: the evolution time a step advances (tau of eq. (5)); step k is at time k tau.
+  /// Default 0.015.
+  vtkSetMacro(TimePerStep, double);
+  vtkGetMacro(TimePerStep, double);
+  /// Smoothing C1 and Smoothing Falloff C2 of eps(d) = C1 (1 - exp(-d^2 / C2)), eq. (3). Defaults 1, 1.
+  vtkSetMacro(Smoothing, double);
+  vtkGetMacro(Smoothing, double);
+  vtkSetMacro(SmoothingFalloff, double);
+  vtkGetMacro(SmoothingFalloff, double);
+  /// Advection Speed C and Concavity Push D of eta(d) = C d ((-grad d . N) - D sqrt(1 - (grad d .
+  /// N)^2)), eq. (4). Defaults 12, 0.5.
+  vtkSetMacro(AdvectionSpeed, double);
+  vtkGetMacro(AdvectionSpeed, double);
+  vtkSetMacro(ConcavityPush, double);
+  vtkGetMacro(ConcavityPush, double);
+  /// Tangential redistribution (Section 2.3): NONE, ANGLE (default) or VOLUME, with the Angle Weight
+  /// omega_angle (0.5), the Volume Weight omega_vol (1), and, with DistanceWeighting (off), rho(d) =
+  /// A (1 - exp(-d^2)) of eq. (10), A the Distance Weight Amplitude (1).
   vtkSetClampMacro(TangentialRedistribution, int, NONE, VOLUME);
   vtkGetMacro(TangentialRedistribution, int);
-  vtkSetMacro(OmegaAngle, double);
-  vtkGetMacro(OmegaAngle, double);
-  vtkSetMacro(OmegaVolume, double);
-  vtkGetMacro(OmegaVolume, double);
+  vtkSetMacro(AngleWeight, double);
+  vtkGetMacro(AngleWeight, double);
+  vtkSetMacro(VolumeWeight, double);
+  vtkGetMacro(VolumeWeight, double);
   vtkSetMacro(DistanceWeighting, bool);
   vtkGetMacro(DistanceWeighting, bool);
   vtkBooleanMacro(DistanceWeighting, bool);
-  vtkSetMacro(RhoA, double);
-  vtkGetMacro(RhoA, double);
+  vtkSetMacro(DistanceWeightAmplitude, double);
+  vtkGetMacro(DistanceWeightAmplitude, double);
   /// phi of Section 2.4. Default on.
   vtkSetMacro(AutomaticScaling, bool);
   vtkGetMacro(AutomaticScaling, bool);
@@ -193,9 +199,9 @@ public:
   vtkGetMacro(FitFacets, bool);
   vtkBooleanMacro(FitFacets, bool);
 
-  /// Memory for cached steps, MiB. Default 512.
-  vtkSetMacro(CacheMemoryLimit, double);
-  vtkGetMacro(CacheMemoryLimit, double);
+  /// Cache Memory (MiB): memory for cached steps. Default 512.
+  vtkSetMacro(CacheMemoryMiB, double);
+  vtkGetMacro(CacheMemoryMiB, double);
   /// Wrap each block of a composite target on its own (default on); off, all blocks as one target.
   vtkSetMacro(WrapPerBlock, bool);
   vtkGetMacro(WrapPerBlock, bool);
@@ -211,7 +217,7 @@ public:
   /// and for a composite wrapped block by block.
   vtkGetMacro(FieldCellSize, double);
   vtkGetMacro(ChosenGapSize, double);
-  vtkGetMacro(ChosenTargetEdgeLength, double);
+  vtkGetMacro(ChosenEdgeLength, double);
   /// Evolution steps computed since the cache was last dropped (over a composite's blocks).
   int GetNumberOfComputedSteps() const;
   /// 1 when a distance field is connected (port 1, or beside the target on port 0).
@@ -248,17 +254,17 @@ protected:
   static void BindProperties(Filter& filter, Settings& settings, Bind&& bind);
 
   int InputGeometry = vtkInputGeometry::AUTOMATIC;
-  double TimeStep;
+  double TimePerStep;
   int NumberOfSteps;
   int SubdivisionLevel;
-  double C1;
-  double C2;
-  double C;
-  double D;
+  double Smoothing;
+  double SmoothingFalloff;
+  double AdvectionSpeed;
+  double ConcavityPush;
   int TangentialRedistribution;
-  double OmegaAngle;
-  double OmegaVolume;
-  double RhoA;
+  double AngleWeight;
+  double VolumeWeight;
+  double DistanceWeightAmplitude;
   bool DistanceWeighting;
   bool EdgeFlips;
   bool EdgeCollapses;
@@ -267,7 +273,7 @@ protected:
   double CreaseAngle;
   double FlipDihedralLimit;
   int StartingShape;
-  double StartOffset;
+  double StartOffsetInCells;
   double GapSize;
   bool CloseHoles;
   bool Remeshing;
@@ -277,7 +283,7 @@ protected:
   bool AutomaticScaling;
   double SolverTolerance;
   int Resolution;
-  double CacheMemoryLimit;
+  double CacheMemoryMiB;
   bool WrapPerBlock = true;
   vtkMultiProcessController* Controller = nullptr;
 
@@ -291,7 +297,7 @@ private:
   vtkTimeStamp RunAgainTime;
   double FieldCellSize = 0; // planned in RequestInformation, the run's in RequestData; as are
   double ChosenGapSize = 0; // these two
-  double ChosenTargetEdgeLength = 0;
+  double ChosenEdgeLength = 0;
   // The converted target, the plan, the runs: everything derived from the inputs and properties.
   std::unique_ptr<shrinkwrap::convert::WrapRuns> Runs;
   // A distributed target as gathered on this rank (convert::wholeInput).

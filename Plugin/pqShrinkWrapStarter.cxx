@@ -15,7 +15,6 @@
 #include "vtkPVDataSetAttributesInformation.h"
 #include "vtkSMPVRepresentationProxy.h"
 #include "vtkSMPropertyHelper.h"
-#include "vtkSMSourceProxy.h"
 
 #include <QTimer>
 #include <QVariant>
@@ -34,39 +33,6 @@ bool isShrinkWrap(pqPipelineSource* source)
 {
   return source && source->getProxy() && source->getProxy()->GetXMLName() &&
     std::strcmp(source->getProxy()->GetXMLName(), "ShrinkWrap") == 0;
-}
-
-// Whether an input proxy's output is a distance field (an image with a SignedDistance array).
-bool isField(vtkSMProxy* proxy)
-{
-  auto* source = vtkSMSourceProxy::SafeDownCast(proxy);
-  vtkPVDataInformation* info = source ? source->GetDataInformation(0) : nullptr;
-  return info && info->GetDataSetType() == VTK_IMAGE_DATA &&
-    info->GetPointDataInformation()->GetArrayInformation("SignedDistance");
-}
-
-// A mesh and its field both on the Input, as the menus connect two selected sources: the field to
-// the Distance Field.
-void wireField(vtkSMProxy* wrap)
-{
-  vtkSMPropertyHelper input(wrap, "Input");
-  vtkSMPropertyHelper field(wrap, "DistanceField");
-  if (input.GetNumberOfElements() != 2 || field.GetAsProxy())
-  {
-    return;
-  }
-  for (unsigned int k = 0; k < 2; ++k)
-  {
-    if (isField(input.GetAsProxy(k)))
-    {
-      vtkSMProxy* mesh = input.GetAsProxy(1 - k);
-      const unsigned int port = input.GetOutputPort(1 - k);
-      field.Set(input.GetAsProxy(k), input.GetOutputPort(k));
-      input.Set(mesh, port);
-      wrap->UpdateVTKObjects();
-      return;
-    }
-  }
 }
 
 // The shown wrap coloured by Distance over its range, with its legend; the target beside it in grey,
@@ -118,7 +84,6 @@ void pqShrinkWrapStarter::created(pqPipelineSource* source)
   {
     return;
   }
-  wireField(source->getProxy());
   source->setProperty(kStage, 1);
   QObject::connect(source, QOverload<pqPipelineSource*>::of(&pqPipelineSource::dataUpdated), this,
     &pqShrinkWrapStarter::updated);

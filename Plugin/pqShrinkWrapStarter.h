@@ -2,11 +2,12 @@
  * @class   pqShrinkWrapStarter
  * @brief   What the ParaView client does for a Shrink Wrap created from its menus.
  *
- * Created with a mesh and its distance field selected, the field goes to the Distance Field input
- * (the panel shows it there). After the first Apply the view shows the finished wrap: the
- * animation goes to the wrap's last step (Play then shows the evolution from its start), and the
- * wrap is coloured by Distance on a diverging map centred at 0 that spans the shown wrap's range,
- * with its legend. Scripts (pvpython, the Python shell) keep their own control of time and colour.
+ * After the first Apply the view shows the finished wrap: the animation goes to the wrap's last
+ * step (Play then shows the evolution from its start), the wrap is coloured by Distance over the
+ * shown wrap's range with its legend, and the target beside it is drawn grey (a mesh by its edges).
+ * A mesh and its distance field selected together both go to Input, where the filter takes the
+ * field as its Distance Field. Scripts (pvpython, the Python shell) keep their own control of time
+ * and colour.
  */
 #ifndef pqShrinkWrapStarter_h
 #define pqShrinkWrapStarter_h

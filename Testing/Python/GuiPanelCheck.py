@@ -62,7 +62,10 @@ elif part == "search":
 else:
     created = FindSource("ShrinkWrap1")
     inputs = [] if created is None else sorted(name_of(p) for p in created.Input)
-    same = created is not None and same_wrap(last_step(created), reference)
+    made = last_step(created) if created is not None else None
+    same = made is not None and same_wrap(made, reference)
     with open(os.path.join(out, "result.txt"), "a") as f:
         f.write("created from the menu with Mesh and Field selected, Input: %s\n"
-                "its wrap equals Change Input's: %s\n" % (", ".join(inputs), same))
+                "its wrap equals Change Input's: %s\nvertices: %d and %d\n"
+                % (", ".join(inputs), same, made.GetNumberOfPoints() if made else 0,
+                   reference.GetNumberOfPoints()))

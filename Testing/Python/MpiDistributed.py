@@ -89,8 +89,8 @@ check(0 < held < whole(mesh).GetNumberOfCells() and worst <= 1e-6 and signs == 0
 
 settings = dict(NumberOfSteps=10, Resolution=40)
 wrap = ShrinkWrap(Input=part, **settings)
-ours = points(local(wrap, 10 * wrap.TimeStep))
-alone = points(whole(ShrinkWrap(Input=mesh, **settings), 10 * wrap.TimeStep))
+ours = points(local(wrap, 10 * wrap.TimePerStep))
+alone = points(whole(ShrinkWrap(Input=mesh, **settings), 10 * wrap.TimePerStep))
 same = ours.shape == alone.shape and len(ours) > 0 and float(np.max(np.abs(ours - alone))) <= 1e-9 * diagonal
 check(same if rank == 0 else len(ours) == 0,
       "a distributed mesh: Shrink Wrap's surface (piece 0) equals the whole mesh's wrap (%d points, %d alone)"
@@ -115,8 +115,8 @@ for k in range(4):
 distributed = ProgrammableSource(OutputDataSetType="vtkMultiblockDataSet", Script=blocks_script.replace("DISTRIBUTED", "True"))
 whole_blocks = ProgrammableSource(OutputDataSetType="vtkMultiblockDataSet", Script=blocks_script.replace("DISTRIBUTED", "False"))
 
-wraps = local(ShrinkWrap(Input=distributed, **settings), 10 * wrap.TimeStep)
-reference = whole(ShrinkWrap(Input=whole_blocks, **settings), 10 * wrap.TimeStep)
+wraps = local(ShrinkWrap(Input=distributed, **settings), 10 * wrap.TimePerStep)
+reference = whole(ShrinkWrap(Input=whole_blocks, **settings), 10 * wrap.TimePerStep)
 here = []
 for k in range(4):
     ours, alone = points(wraps.GetBlock(k)), points(reference.GetBlock(k))
@@ -140,8 +140,8 @@ check(on_one_rank(here) == [1, 1, 1, 1], "Field Per Block: every block's field c
 
 # All blocks wrapped together: one surface, on piece 0.
 together = ShrinkWrap(Input=whole_blocks, WrapPerBlock=0, **settings)
-ours = points(local(together, 10 * wrap.TimeStep))
-alone = points(whole(together, 10 * wrap.TimeStep))
+ours = points(local(together, 10 * wrap.TimePerStep))
+alone = points(whole(together, 10 * wrap.TimePerStep))
 check(isinstance(together.GetClientSideObject().GetOutputDataObject(0), vtkPolyData) and
       ((len(ours) > 0 and np.array_equal(ours, alone)) if rank == 0 else len(ours) == 0),
       "Wrap Per Block off: one surface on piece 0 (%d points)" % len(ours))

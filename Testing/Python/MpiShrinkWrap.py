@@ -15,7 +15,7 @@ LoadPlugin(plugin, ns=globals())
 
 wrap = ShrinkWrap(Input=OpenDataFile(mesh), NumberOfSteps=20, Resolution=48, SubdivisionLevel=3,
                   StartingShape="Icosphere", Remeshing=0)
-wrap.UpdatePipeline(20 * wrap.TimeStep)
+wrap.UpdatePipeline(20 * wrap.TimePerStep)
 local = wrap.GetClientSideObject().GetOutputDataObject(0).GetNumberOfPoints()
 total = wrap.GetDataInformation().GetNumberOfPoints()
 expected_local = 642 if rank == 0 else 0
@@ -27,7 +27,7 @@ blocks = GroupDatasets(Input=[OpenDataFile(mesh)] + [
     Sphere(Center=[3 * k, 0, 0], Radius=0.5 + 0.2 * k, ThetaResolution=24, PhiResolution=24) for k in range(1, 4)])
 settings = dict(NumberOfSteps=10, Resolution=40)
 wrap_blocks = ShrinkWrap(Input=blocks, **settings)
-wrap_blocks.UpdatePipeline(10 * wrap_blocks.TimeStep)
+wrap_blocks.UpdatePipeline(10 * wrap_blocks.TimePerStep)
 mine = wrap_blocks.GetClientSideObject().GetOutputDataObject(0)
 reference = ShrinkWrap(Input=blocks, **settings).GetClientSideObject()
 reference.UpdatePiece(0, 1, 0)  # in this process only: every block

@@ -83,8 +83,8 @@ check(lone.GetClientSideObject().GetNumberOfInputConnections(2) == 0 and fetched
       "Initial Surface set to None: disconnected")
 
 # Cache Memory Limit 1 MiB, Subdivision Level 6, 40 steps: played to the end, then step 7 (SIGFPE before).
-starved = ShrinkWrap(Input=sphere, SubdivisionLevel=6, NumberOfSteps=40, CacheMemoryLimit=1, Resolution=32, StartingShape="Icosphere", Remeshing=0)
-tau = starved.TimeStep
+starved = ShrinkWrap(Input=sphere, SubdivisionLevel=6, NumberOfSteps=40, CacheMemoryMiB=1, Resolution=32, StartingShape="Icosphere", Remeshing=0)
+tau = starved.TimePerStep
 for k in range(41):
     starved.UpdatePipeline(k * tau)
 data = fetched(starved, 7 * tau)

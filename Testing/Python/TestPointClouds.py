@@ -68,7 +68,7 @@ def nearest_point_distance(points, queries):
 
 def wrapped(source):
     wrap = ShrinkWrap(Input=source)
-    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimePerStep)
     return servermanager.Fetch(wrap)
 
 
@@ -216,7 +216,7 @@ shown_cloud.UpdatePipeline()
 planned = ShrinkWrap(Input=shown_cloud)
 planned.UpdatePipelineInformation()
 shown = planned.FieldCellSize
-planned.UpdatePipeline(planned.NumberOfSteps * planned.TimeStep)
+planned.UpdatePipeline(planned.NumberOfSteps * planned.TimePerStep)
 ran = servermanager.Fetch(planned).GetFieldData().GetArray("FieldCellSize").GetValue(0)
 check(shown > 0 and shown == ran, "Field Cell Size of points before the run: %.6g, the run's: %.6g" % (shown, ran))
 
@@ -242,7 +242,7 @@ check(abs(gap - expected_gap) < 1e-9 * gap and abs(length - expected_length) < 1
 planned.GapSize = 0.3
 planned.UpdatePipelineInformation()
 before = planned.ChosenGapSize
-planned.UpdatePipeline(planned.NumberOfSteps * planned.TimeStep)
+planned.UpdatePipeline(planned.NumberOfSteps * planned.TimePerStep)
 check(before == 0.3 and servermanager.Fetch(planned).GetFieldData().GetArray("GapSize").GetValue(0) == 0.3,
       "a Gap Size set by hand is the chosen one (%.6g)" % before)
 
@@ -250,7 +250,7 @@ check(before == 0.3 and servermanager.Fetch(planned).GetFieldData().GetArray("Ga
 # another property changed gives what a new filter gives, and points that change are measured anew
 # (their wrap is a new filter's on them).
 def fetched_points(wrap):
-    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimePerStep)
     return vtk_to_numpy(servermanager.Fetch(wrap).GetPoints().GetData()).astype(float)
 
 
@@ -258,13 +258,13 @@ first, second = sphere_points(2000), 0.7 * sphere_points(2000) + np.array([0.2, 
 changing = cloud(first)
 kept = ShrinkWrap(Input=changing)
 fetched_points(kept)
-kept.C = 10.0
+kept.AdvectionSpeed = 10.0
 again = fetched_points(kept)
-anew = fetched_points(ShrinkWrap(Input=cloud(first), C=10.0))
+anew = fetched_points(ShrinkWrap(Input=cloud(first), AdvectionSpeed=10.0))
 changing.GetClientSideObject().GetOutputDataObject(0).SetPoints(vtk_points(second))
 changing.GetClientSideObject().Modified()
 moved = fetched_points(kept)
-moved_anew = fetched_points(ShrinkWrap(Input=cloud(second), C=10.0))
+moved_anew = fetched_points(ShrinkWrap(Input=cloud(second), AdvectionSpeed=10.0))
 same_after_c = again.shape == anew.shape and np.array_equal(again, anew)
 same_after_points = moved.shape == moved_anew.shape and np.array_equal(moved, moved_anew)
 check(same_after_c and same_after_points,
@@ -341,7 +341,7 @@ for choice in ("Polygons", "Points", "Polygons and Points"):
 # Shrink Wrap, Input Geometry Points: the sphere mesh's points wrap as a cloud (its Distance array is
 # the distance to the nearest point, not to the triangles); Polygons of a cloud: a clear error.
 wrap = ShrinkWrap(Input=producer(sphere), InputGeometry="Points")
-wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimePerStep)
 out = servermanager.Fetch(wrap)
 sphere_points_used = vtk_to_numpy(sphere.GetPoints().GetData()).astype(float)
 if out.GetNumberOfPoints() == 0:
@@ -364,7 +364,7 @@ on_sphere = on_sphere[np.linalg.norm(on_sphere - [1.2, 0, 0], axis=1) > 0.45]  #
 diagonal = np.linalg.norm(np.ptp(np.vstack([on_sphere, ball]), axis=0))
 for choice in ("Polygons and Points", "Polygons"):
     wrap = ShrinkWrap(Input=bulging_source, InputGeometry=choice)
-    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimePerStep)
     out = servermanager.Fetch(wrap)
     if out.GetNumberOfPoints() == 0:
         check(False, "Shrink Wrap, Input Geometry %s: a wrap" % choice)
@@ -412,7 +412,7 @@ for name, coordinates, said in bad:
         said_errors.append(message)
 
     wrap.GetClientSideObject().AddObserver("ErrorEvent", on_error)
-    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimePerStep)
     text = " ".join(said_errors)
     out = servermanager.Fetch(wrap)
     sizes = (wrap.FieldCellSize, wrap.ChosenGapSize, wrap.ChosenEdgeLength)
@@ -420,7 +420,7 @@ for name, coordinates, said in bad:
           "Shrink Wrap of %s: an error that says '%s', an empty output, the panel's sizes finite (%s)"
           % (name, said, sizes))
     wrap.Input = cloud(sphere_points(2000))
-    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimeStep)
+    wrap.UpdatePipeline(wrap.NumberOfSteps * wrap.TimePerStep)
     # Its input was not computed when its information was updated (nothing planned): the panel's
     # sizes are the run's once read again, as the field data holds them.
     good = servermanager.Fetch(wrap)

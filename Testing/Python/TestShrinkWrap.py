@@ -26,7 +26,7 @@ def points(proxy):
 LoadPlugin(plugin, ns=globals())
 reader = OpenDataFile(mesh)
 wrap = ShrinkWrap(Input=reader, NumberOfSteps=40, Resolution=64)
-tau = wrap.TimeStep
+tau = wrap.TimePerStep
 check(len(wrap.TimestepValues) == 41, "TimestepValues has N_t + 1 = 41 entries")
 check(abs(wrap.TimestepValues[-1] - 40 * tau) < 1e-12, "the last time is N_t tau")
 
@@ -46,7 +46,7 @@ fresh = ShrinkWrap(Input=reader, NumberOfSteps=20, Resolution=64)
 fresh.UpdatePipeline()
 check(points(fresh)[0] == middle, "the same points as a fresh run stopped at step 20")
 
-wrap.C = 2.0
+wrap.AdvectionSpeed = 2.0
 wrap.UpdatePipeline(5 * tau)
 check(computed(wrap) == 5, "changing C drops the cache (5 steps computed again)")
 
@@ -60,7 +60,7 @@ progress = []
 def edit_while_running(caller, event):
     progress.append(caller.GetProgress())
     if len(progress) == 10:
-        long_run.OmegaAngle = 0.6
+        long_run.AngleWeight = 0.6
 
 
 tag = algorithm.AddObserver("ProgressEvent", edit_while_running)
@@ -72,7 +72,7 @@ check(computed(long_run) == 60 and algorithm.GetOutputDataObject(0).GetNumberOfP
 long_run.UpdatePipeline(30 * tau)
 check(computed(long_run) == 30, "and the next update starts over with the new ones (%d steps)" % computed(long_run))
 
-long_run.OmegaAngle = 0.5
+long_run.AngleWeight = 0.5
 tag = abort_at(algorithm, 25)
 long_run.UpdatePipeline(60 * tau)
 algorithm.RemoveObserver(tag)

@@ -69,7 +69,7 @@ check(together.shape == apart.shape and np.array_equal(together, apart),
 both.UpdatePropertyInformation()
 check(both.GetProperty("HasDistanceField").GetData() == 1, "... and the panel hides Resolution then")
 
-# One name per property: the panel's label without spaces is the XML name is the Python name.
+# One name per property: the panel's label without spaces and signs is the XML name is the Python name.
 for creator in (MeshSignedDistance, ShrinkWrap):
     proxy = creator(Input=surface)
     names = []
@@ -77,7 +77,7 @@ for creator in (MeshSignedDistance, ShrinkWrap):
         smproperty = proxy.GetProperty(python_name).SMProperty
         xml_name = proxy.SMProxy.GetPropertyName(smproperty)
         label = smproperty.GetXMLLabel()
-        if label.replace(" ", "") != python_name or xml_name != python_name:
+        if "".join(c for c in label if c.isalnum()) != python_name or xml_name != python_name:
             names.append("%s / %s / %s" % (label, xml_name, python_name))
     check(not names, "%s: panel label, XML name and Python name agree (differing: %s)"
           % (proxy.SMProxy.GetXMLLabel(), names or "none"))
@@ -87,10 +87,10 @@ for creator in (MeshSignedDistance, ShrinkWrap):
 # its one name.
 smtrace.start_trace()
 traced_field = MeshSignedDistance(Input=surface)
-traced_wrap = ShrinkWrap(Input=surface, CacheMemoryLimit=100)
+traced_wrap = ShrinkWrap(Input=surface, CacheMemoryMiB=100)
 trace = smtrace.stop_trace()
 check("OutputBounds" not in trace, "a trace of Mesh Signed Distance at its defaults records no Output Bounds")
-check("CacheMemoryLimit = 100" in trace, "a trace records Cache Memory Limit as CacheMemoryLimit")
+check("CacheMemoryMiB = 100" in trace, "a trace records Cache Memory (MiB) as CacheMemoryMiB")
 check(trace.count("MeshSignedDistance(") == 1 and trace.count("ShrinkWrap(") == 1,
       "the trace holds both filters (it is not empty)")
 

@@ -178,18 +178,18 @@ void randomizeDistance(vtkMeshSignedDistance* f, Dice& dice)
 
 void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
 {
-  f->SetTimeStep(dice.value(0.015));
+  f->SetTimePerStep(dice.value(0.015));
   f->SetNumberOfSteps(
     dice.chance(0.9) ? dice.between(-2, 12) : dice.pick({ 1000, std::numeric_limits<int>::max() }));
   f->SetSubdivisionLevel(dice.chance(0.9) ? dice.between(0, 2) : dice.pick({ -1, 3, 9 }));
-  f->SetC1(dice.value(1));
-  f->SetC2(dice.value(1));
-  f->SetC(dice.value(1));
-  f->SetD(dice.chance(0.5) ? 0 : dice.value(0.5));
+  f->SetSmoothing(dice.value(1));
+  f->SetSmoothingFalloff(dice.value(1));
+  f->SetAdvectionSpeed(dice.value(1));
+  f->SetConcavityPush(dice.chance(0.5) ? 0 : dice.value(0.5));
   f->SetTangentialRedistribution(dice.between(-1, 3));
-  f->SetOmegaAngle(dice.value(0.5));
-  f->SetOmegaVolume(dice.value(1));
-  f->SetRhoA(dice.value(1));
+  f->SetAngleWeight(dice.value(0.5));
+  f->SetVolumeWeight(dice.value(1));
+  f->SetDistanceWeightAmplitude(dice.value(1));
   f->SetDistanceWeighting(dice.chance(0.3));
   f->SetEdgeFlips(dice.chance(0.7));
   f->SetEdgeCollapses(dice.chance(0.7));
@@ -197,7 +197,7 @@ void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
   f->SetFitFacets(dice.chance(0.7));
   f->SetFlipDihedralLimit(dice.value(60));
   f->SetStartingShape(dice.between(0, 1));
-  f->SetStartOffset(dice.value(3));
+  f->SetStartOffsetInCells(dice.value(3));
   f->SetGapSize(dice.chance(0.5) ? 0 : dice.value(0.2));
   f->SetRemeshing(dice.chance(0.7));
   // Coarse (a few hundred vertices on the unit sphere): the fuzz runs up to 10,000 steps under
@@ -209,7 +209,7 @@ void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
   f->SetAutomaticScaling(dice.chance(0.8));
   f->SetSolverTolerance(dice.value(1e-6));
   f->SetResolution(dice.chance(0.9) ? dice.between(-1, 32) : 1 << 20);
-  f->SetCacheMemoryLimit(dice.chance(0.7) ? 512 : dice.pick({ 0.0, 1e-9, 0.01, -1.0, kNaN }));
+  f->SetCacheMemoryMiB(dice.chance(0.7) ? 512 : dice.pick({ 0.0, 1e-9, 0.01, -1.0, kNaN }));
 }
 
 // An image for the DistanceField port: a real field, or random values, short arrays, NaNs.
@@ -343,7 +343,7 @@ int TestFuzzFilters(int argc, char* argv[])
     const int steps = wrap->GetNumberOfSteps();
     for (int request = dice.between(1, 3); request > 0; --request)
     {
-      const double tau = wrap->GetTimeStep();
+      const double tau = wrap->GetTimePerStep();
       // Times past the end, but no more than 20 steps' work when there are thousands.
       const double t = steps > 20
         ? tau * dice.between(-2, 20)
@@ -385,17 +385,17 @@ int TestFuzzFilters(int argc, char* argv[])
       wrap->SetInputData(0, sphere());
       wrap->SetInputData(1, nullptr);
       wrap->SetInputData(2, nullptr);
-      wrap->SetTimeStep(0.015);
+      wrap->SetTimePerStep(0.015);
       wrap->SetNumberOfSteps(3);
       wrap->SetSubdivisionLevel(2);
-      wrap->SetC1(1);
-      wrap->SetC2(1);
-      wrap->SetC(1);
-      wrap->SetD(0);
+      wrap->SetSmoothing(1);
+      wrap->SetSmoothingFalloff(1);
+      wrap->SetAdvectionSpeed(1);
+      wrap->SetConcavityPush(0);
       wrap->SetTangentialRedistribution(vtkShrinkWrapFilter::ANGLE);
-      wrap->SetOmegaAngle(0.5);
-      wrap->SetOmegaVolume(1);
-      wrap->SetRhoA(1);
+      wrap->SetAngleWeight(0.5);
+      wrap->SetVolumeWeight(1);
+      wrap->SetDistanceWeightAmplitude(1);
       wrap->SetFlipDihedralLimit(60);
       wrap->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE);
       wrap->SetRemeshing(false); // 162 vertices throughout
@@ -406,7 +406,7 @@ int TestFuzzFilters(int argc, char* argv[])
       wrap->SetAutomaticScaling(true);
       wrap->SetSolverTolerance(1e-6);
       wrap->SetResolution(24);
-      wrap->SetCacheMemoryLimit(512);
+      wrap->SetCacheMemoryMiB(512);
       wrap->Update();
       SW_CHECK(wrap->GetOutput() && wrap->GetOutput()->GetNumberOfPoints() == 162 &&
           validWrap(wrap->GetOutput()),

@@ -1,9 +1,16 @@
-// The panel's defaults (Plugin/ShrinkWrap.xml, which ParaView pushes to a new filter) against the
-// filters' own, which come from the core's settings structs: a default changed in one place only
-// would make the GUI and C++ or pvpython users run different filters.
+// The panel (Plugin/ShrinkWrap.xml, which ParaView pushes to a new filter, and whose documentation is
+// the parameter reference) against the filters: every settable property's default equals the
+// filter's own (which come from the core's settings structs), and its name, label and the unit its
+// documentation states are those the filter describes (DescribeProperties). A default, a label or a
+// unit changed in one place only would make the GUI and C++ or pvpython users read different
+// filters. The Python name is the label without spaces and punctuation (TestUserTerms.py).
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
+
+#include "PropertyBinding.h"
+
+#include <algorithm>
 
 #include <functional>
 #include <map>
@@ -47,6 +54,67 @@ std::map<std::string, std::vector<double>> xmlDefaults(
   return defaults;
 }
 
+// Each settable property's XML element (name, label, command, documentation) of proxy `name`.
+struct XmlProperty
+{
+  std::string name, label, command, documentation;
+};
+std::vector<XmlProperty> xmlProperties(const std::string& xml, const std::string& name)
+{
+  std::vector<XmlProperty> found;
+  const std::size_t begin = xml.find("<SourceProxy name=\"" + name + "\"");
+  const std::size_t end = xml.find("</SourceProxy>", begin);
+  const std::string proxy = begin == std::string::npos ? "" : xml.substr(begin, end - begin);
+  const std::regex element(
+    R"x(<(Int|Double)VectorProperty\b([^>]*)>([\s\S]*?)</(Int|Double)VectorProperty>)x");
+  auto attribute = [](const std::string& tag, const char* key) {
+    std::smatch m;
+    return std::regex_search(tag, m, std::regex(std::string(key) + R"x(="([^"]*)")x")) ? m[1].str()
+                                                                                      : "";
+  };
+  for (auto it = std::sregex_iterator(proxy.begin(), proxy.end(), element);
+       it != std::sregex_iterator(); ++it)
+  {
+    const std::string tag = (*it)[2].str(), body = (*it)[3].str();
+    XmlProperty p{ attribute(tag, "name"), attribute(tag, "label"), attribute(tag, "command"), "" };
+    std::smatch doc;
+    if (std::regex_search(body, doc, std::regex(R"x(<Documentation>([\s\S]*?)</Documentation>)x")))
+    {
+      p.documentation = std::regex_replace(doc[1].str(), std::regex(R"(\s+)"), " ");
+    }
+    if (p.command.rfind("Set", 0) == 0)
+    {
+      found.push_back(p);
+    }
+  }
+  return found;
+}
+
+// Every settable XML property described by the filter alike: name (and Set<name>), label, unit.
+void compareTerms(const std::string& proxy, const std::vector<XmlProperty>& xml,
+  const std::vector<shrinkwrap::convert::PropertyInfo>& described)
+{
+  SW_CHECK(xml.size() == described.size(),
+    proxy << ": the XML has " << xml.size() << " settable properties, the filter describes "
+          << described.size());
+  for (const XmlProperty& p : xml)
+  {
+    const auto d = std::find_if(described.begin(), described.end(),
+      [&](const shrinkwrap::convert::PropertyInfo& info) { return p.name == info.name; });
+    SW_CHECK(d != described.end(), proxy << ": " << p.name << " is described by the filter");
+    if (d == described.end())
+    {
+      continue;
+    }
+    SW_CHECK(p.command == "Set" + p.name, proxy << ": " << p.name << " is set by Set" << p.name
+                                               << ", not " << p.command);
+    SW_CHECK(p.label == d->label,
+      proxy << ": " << p.name << "'s label is '" << p.label << "', the filter's '" << d->label << "'");
+    SW_CHECK(p.documentation.find(d->unit) != std::string::npos,
+      proxy << ": " << p.name << "'s documentation states its unit, " << d->unit);
+  }
+}
+
 void compare(const std::string& proxy, const std::map<std::string, std::vector<double>>& xml,
   const std::map<std::string, Getter>& filter)
 {
@@ -81,6 +149,11 @@ int TestPropertyDefaults(int argc, char* argv[])
   const std::string xml = text.str();
   SW_CHECK(!xml.empty(), "the plugin's XML is readable");
 
+  compareTerms("MeshSignedDistance", xmlProperties(xml, "MeshSignedDistance"),
+    vtkMeshSignedDistance::DescribeProperties());
+  compareTerms(
+    "ShrinkWrap", xmlProperties(xml, "ShrinkWrap"), vtkShrinkWrapFilter::DescribeProperties());
+
   vtkNew<vtkMeshSignedDistance> m;
   compare("MeshSignedDistance", xmlDefaults(xml, "MeshSignedDistance"),
     { { "SetInputGeometry", [&] { return std::vector<double>{ double(m->GetInputGeometry()) }; } },
@@ -108,11 +181,11 @@ int TestPropertyDefaults(int argc, char* argv[])
   auto one = [](double x) { return std::vector<double>{ x }; };
   compare("ShrinkWrap", xmlDefaults(xml, "ShrinkWrap"),
     { { "SetInputGeometry", [&] { return one(w->GetInputGeometry()); } },
-      { "SetTimeStep", [&] { return one(w->GetTimeStep()); } },
+      { "SetTimePerStep", [&] { return one(w->GetTimePerStep()); } },
       { "SetNumberOfSteps", [&] { return one(w->GetNumberOfSteps()); } },
       { "SetStartingShape", [&] { return one(w->GetStartingShape()); } },
       { "SetSubdivisionLevel", [&] { return one(w->GetSubdivisionLevel()); } },
-      { "SetStartOffset", [&] { return one(w->GetStartOffset()); } },
+      { "SetStartOffsetInCells", [&] { return one(w->GetStartOffsetInCells()); } },
       { "SetGapSize", [&] { return one(w->GetGapSize()); } },
       { "SetCloseHoles", [&] { return one(w->GetCloseHoles()); } },
       { "SetWrapPerBlock", [&] { return one(w->GetWrapPerBlock()); } },
@@ -124,12 +197,12 @@ int TestPropertyDefaults(int argc, char* argv[])
           return std::vector<double>(r, r + 2);
         } },
       { "SetTangentialRedistribution", [&] { return one(w->GetTangentialRedistribution()); } },
-      { "SetC1", [&] { return one(w->GetC1()); } }, { "SetC2", [&] { return one(w->GetC2()); } },
-      { "SetC", [&] { return one(w->GetC()); } }, { "SetD", [&] { return one(w->GetD()); } },
-      { "SetOmegaAngle", [&] { return one(w->GetOmegaAngle()); } },
-      { "SetOmegaVolume", [&] { return one(w->GetOmegaVolume()); } },
+      { "SetSmoothing", [&] { return one(w->GetSmoothing()); } }, { "SetSmoothingFalloff", [&] { return one(w->GetSmoothingFalloff()); } },
+      { "SetAdvectionSpeed", [&] { return one(w->GetAdvectionSpeed()); } }, { "SetConcavityPush", [&] { return one(w->GetConcavityPush()); } },
+      { "SetAngleWeight", [&] { return one(w->GetAngleWeight()); } },
+      { "SetVolumeWeight", [&] { return one(w->GetVolumeWeight()); } },
       { "SetDistanceWeighting", [&] { return one(w->GetDistanceWeighting()); } },
-      { "SetRhoA", [&] { return one(w->GetRhoA()); } },
+      { "SetDistanceWeightAmplitude", [&] { return one(w->GetDistanceWeightAmplitude()); } },
       { "SetEdgeFlips", [&] { return one(w->GetEdgeFlips()); } },
       { "SetEdgeCollapses", [&] { return one(w->GetEdgeCollapses()); } },
       { "SetCoverRims", [&] { return one(w->GetCoverRims()); } },
@@ -140,6 +213,6 @@ int TestPropertyDefaults(int argc, char* argv[])
       { "SetAutomaticScaling", [&] { return one(w->GetAutomaticScaling()); } },
       { "SetSolverTolerance", [&] { return one(w->GetSolverTolerance()); } },
       { "SetResolution", [&] { return one(w->GetResolution()); } },
-      { "SetCacheMemoryLimit", [&] { return one(w->GetCacheMemoryLimit()); } } });
+      { "SetCacheMemoryMiB", [&] { return one(w->GetCacheMemoryMiB()); } } });
   return testing::finish("TestPropertyDefaults");
 }

@@ -176,8 +176,8 @@ void compositeInputs()
     // Back in time: the session's cached step, not a new session (the blocks are appended only to
     // start one).
     const int computed = together->GetNumberOfComputedSteps();
-    together->UpdateTimeStep(2 * together->GetTimeStep());
-    both->UpdateTimeStep(2 * both->GetTimeStep());
+    together->UpdateTimeStep(2 * together->GetTimePerStep());
+    both->UpdateTimeStep(2 * both->GetTimePerStep());
     SW_CHECK(together->GetNumberOfComputedSteps() == computed &&
         stepOf(together->GetOutputDataObject(0)) == 2 &&
         pointsOf(together->GetOutputDataObject(0)) == pointsOf(both->GetOutputDataObject(0)),
@@ -272,7 +272,7 @@ void compositeInputs()
 void compositeTimeSteps()
 {
   vtkSmartPointer<vtkPolyData> a = sphere(0), b = sphere(3, 0.5);
-  const double tau = wrapOf(a)->GetTimeStep();
+  const double tau = wrapOf(a)->GetTimePerStep();
   auto alone = [&](vtkPolyData* mesh, int step) {
     auto w = wrapOf(mesh, 10);
     w->UpdateTimeStep(step * tau);
@@ -320,7 +320,7 @@ void starvedCache()
   {
     auto wrap = wrapOf(sphere(), 40);
     wrap->SetSubdivisionLevel(5);
-    wrap->SetCacheMemoryLimit(limit);
+    wrap->SetCacheMemoryMiB(limit);
     wrap->Update();
     wrap->UpdateTimeStep(7 * 0.015);
     auto fresh = wrapOf(sphere(), 7);
@@ -598,7 +598,7 @@ void aborts()
   SW_CHECK(stepOf(wrap->GetOutput()) == 25 && wrap->GetNumberOfComputedSteps() == 25,
     "a later one resumes from the cached steps (" << wrap->GetNumberOfComputedSteps()
                                                   << " computed)");
-  wrap->SetC(1.5);
+  wrap->SetAdvectionSpeed(1.5);
   wrap->UpdateTimeStep(30 * 0.015);
   SW_CHECK(stepOf(wrap->GetOutput()) == 30 && wrap->GetNumberOfComputedSteps() == 30,
     "a change runs normally");

@@ -238,10 +238,10 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
           // 12 over 25 steps suits a remeshed offset start, and leaves these triangles worse).
           w->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE);
           w->SetRemeshing(false);
-          w->SetC(3);
+          w->SetAdvectionSpeed(3);
           w->SetNumberOfSteps(100);
           w->SetSubdivisionLevel(level);
-          w->SetD(D);
+          w->SetConcavityPush(D);
         });
         const std::string label = name + (D > 0 ? " D=0.5" : "");
         report(label, "s=" + std::to_string(level), f);
@@ -415,8 +415,8 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
   // the open elephant): edge collapses keep the run going, with a few vertices fewer than the 642
   // it began with.
   const std::pair<std::string, std::function<void(vtkShrinkWrapFilter*)>> hard[] = {
-    { "armadillo D=1", [](vtkShrinkWrapFilter* w) { w->SetD(1.0); } },
-    { "elephant-with-holes C2=0.1", [](vtkShrinkWrapFilter* w) { w->SetC2(0.1); } },
+    { "armadillo D=1", [](vtkShrinkWrapFilter* w) { w->SetConcavityPush(1.0); } },
+    { "elephant-with-holes C2=0.1", [](vtkShrinkWrapFilter* w) { w->SetSmoothingFalloff(0.1); } },
   };
   for (const auto& entry : hard)
   {
@@ -439,7 +439,7 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
   // thinned cache (1 MiB) is still exactly the step of a fresh run.
   vtkSmartPointer<vtkPolyData> armadillo = testing::readOFF(folder + "/armadillo.off");
   const auto surfaceAt = [&](vtkShrinkWrapFilter* w, int step) {
-    w->UpdateTimeStep(step * w->GetTimeStep());
+    w->UpdateTimeStep(step * w->GetTimePerStep());
     vtkPolyData* out = w->GetOutput();
     std::vector<double> values;
     for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
@@ -459,7 +459,7 @@ int TestShrinkWrapCGALMeshes(int argc, char* argv[])
     w->SetInputData(armadillo);
     w->SetNumberOfSteps(200);
   }
-  thinned->SetCacheMemoryLimit(1);
+  thinned->SetCacheMemoryMiB(1);
   const auto last = surfaceAt(thinned, 200);
   const auto again = surfaceAt(thinned, 150);
   const auto expected = surfaceAt(fresh, 150);

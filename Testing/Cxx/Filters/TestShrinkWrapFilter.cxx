@@ -175,18 +175,18 @@ std::vector<double> stepsAndCache(vtkShrinkWrapFilter* wrap, vtkPolyData* box)
   SW_CHECK(stepOf(wrap->GetOutput()) == 17, "times snap to the nearest step");
 
   // A parameter change drops the cache.
-  wrap->SetC(2.0);
+  wrap->SetAdvectionSpeed(2.0);
   wrap->UpdateTimeStep(10 * 0.015);
   SW_CHECK(wrap->GetNumberOfComputedSteps() == 10,
     "changing C drops the cache (" << wrap->GetNumberOfComputedSteps() << ")");
-  wrap->SetC(1.0);
+  wrap->SetAdvectionSpeed(1.0);
 
   // A parameter change drops the cache.
-  wrap->SetC(2.0);
+  wrap->SetAdvectionSpeed(2.0);
   wrap->UpdateTimeStep(10 * 0.015);
   SW_CHECK(wrap->GetNumberOfComputedSteps() == 10,
     "changing C drops the cache (" << wrap->GetNumberOfComputedSteps() << ")");
-  wrap->SetC(1.0);
+  wrap->SetAdvectionSpeed(1.0);
   return middle;
 }
 
@@ -201,7 +201,7 @@ void cacheWithFlips()
     filter->SetInputData(slender);
     filter->SetResolution(64);
     filter->SetNumberOfSteps(steps);
-    filter->SetCacheMemoryLimit(cacheLimit);
+    filter->SetCacheMemoryMiB(cacheLimit);
     filter->Update();
     return vtkSmartPointer<vtkShrinkWrapFilter>(filter.Get());
   };
@@ -247,7 +247,7 @@ void editsAndAbortsWhileRunning(vtkPolyData* box)
       ++p->events;
       if (p->events == p->editAt)
       {
-        filter->SetOmegaAngle(0.6);
+        filter->SetAngleWeight(0.6);
       }
       if (p->events == p->abortAt)
       {
@@ -265,7 +265,7 @@ void editsAndAbortsWhileRunning(vtkPolyData* box)
       running->GetNumberOfComputedSteps() == 40 && surfaceOf(running->GetOutput()) != withOldValue,
       "the same request runs again, from step 0, with the new value");
     plan = { 0, 0, 15 };
-    running->SetOmegaAngle(0.5);
+    running->SetAngleWeight(0.5);
     running->UpdateTimeStep(40 * 0.015);
     SW_CHECK(
       running->GetOutput()->GetNumberOfPoints() == 0 && running->GetNumberOfComputedSteps() < 40,
@@ -326,13 +326,13 @@ void badInputAndStarts(vtkPolyData* box)
     "NaN coordinates: error, empty output");
   bad->SetInputData(box);
   bad->SetResolution(32);
-  bad->SetTimeStep(0);
+  bad->SetTimePerStep(0);
   SW_CHECK(
     errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
     "tau = 0: error");
-  bad->SetTimeStep(-1);
+  bad->SetTimePerStep(-1);
   SW_CHECK(errorsWhile(bad, [&] { bad->Update(); }) > 0, "tau < 0: error");
-  bad->SetTimeStep(0.015);
+  bad->SetTimePerStep(0.015);
   bad->SetNumberOfSteps(0);
   bad->Update();
   SW_CHECK(stepOf(bad->GetOutput()) == 0 && bad->GetOutput()->GetNumberOfPoints() == 642,
@@ -370,7 +370,7 @@ void badInputAndStarts(vtkPolyData* box)
 
   // The same sphere facing inwards is turned outwards: with D > 0 (not symmetric in N) it wraps the
   // same.
-  bad->SetD(0.5);
+  bad->SetConcavityPush(0.5);
   bad->Update();
   const std::vector<double> outwards = pointsOf(bad->GetOutput());
   vtkNew<vtkReverseSense> inwards;
@@ -389,14 +389,14 @@ void badInputAndStarts(vtkPolyData* box)
   // The offset start asked to reach beyond the field: an error and an empty output; a sane one
   // wraps.
   bad->SetInitialSurfaceConnection(nullptr);
-  bad->SetD(0);
+  bad->SetConcavityPush(0);
   bad->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
-  bad->SetStartOffset(1000);
+  bad->SetStartOffsetInCells(1000);
   bad->SetGapSize(1000); // the offset is at most 0.4 of the gap
   SW_CHECK(
     errorsWhile(bad, [&] { bad->Update(); }) > 0 && bad->GetOutput()->GetNumberOfPoints() == 0,
     "an offset surface beyond the distance field: error");
-  bad->SetStartOffset(3);
+  bad->SetStartOffsetInCells(3);
   bad->SetGapSize(0);
   bad->Update();
   SW_CHECK(statusOf(bad->GetOutput()) == "ok" && bad->GetOutput()->GetNumberOfPoints() > 0,

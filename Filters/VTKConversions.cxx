@@ -434,9 +434,9 @@ Notes addSignStatus(const SignedDistanceResult& result, bool asked, vtkImageData
   output->GetFieldData()->AddArray(isSigned);
   output->GetFieldData()->AddArray(statusArray);
   Notes notes;
-  if (signNeedsWarning(result, asked))
+  if (const auto kind = signNoteKind(result, asked))
   {
-    warn(notes, "The distance field is " + status);
+    notes.push_back({ *kind, "The distance field is " + status });
   }
   return notes;
 }

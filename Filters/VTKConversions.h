@@ -106,7 +106,7 @@ void setTriangles(const std::vector<Vec3>& x, const std::vector<std::array<int, 
   vtkPolyData* output);
 
 // Field data Signed (1 or 0) and DistanceStatus (the sentence of signStatus) of a field; a warning
-// note when the sign is one a user should hear of (signNeedsWarning).
+// note when the sign is one a user should hear of (signNoteKind).
 Notes addSignStatus(const SignedDistanceResult& result, bool asked, vtkImageData* output);
 
 // Notes as a filter's messages: warnings as its warnings, the others in the output messages

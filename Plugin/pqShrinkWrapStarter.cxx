@@ -15,6 +15,7 @@
 #include "vtkPVDataSetAttributesInformation.h"
 #include "vtkSMPVRepresentationProxy.h"
 #include "vtkSMPropertyHelper.h"
+#include "vtkSMSourceProxy.h"
 
 #include <QTimer>
 #include <QVariant>
@@ -35,6 +36,45 @@ bool isShrinkWrap(pqPipelineSource* source)
     std::strcmp(source->getProxy()->GetXMLName(), "ShrinkWrap") == 0;
 }
 
+// Whether an input proxy's output is a distance field (an image with a SignedDistance array).
+bool isField(vtkSMProxy* proxy)
+{
+  auto* source = vtkSMSourceProxy::SafeDownCast(proxy);
+  vtkPVDataInformation* info = source ? source->GetDataInformation(0) : nullptr;
+  return info && info->GetDataSetType() == VTK_IMAGE_DATA &&
+    info->GetPointDataInformation()->GetArrayInformation("SignedDistance");
+}
+
+// A mesh and its field both on the Input, as the menus connect two selected sources: the panel's
+// Distance Field shows the field (the filter skips it on Input then).
+void showField(vtkSMProxy* wrap)
+{
+  vtkSMPropertyHelper input(wrap, "Input");
+  vtkSMPropertyHelper field(wrap, "DistanceField");
+  for (unsigned int k = 0; input.GetNumberOfElements() == 2 && !field.GetAsProxy() && k < 2; ++k)
+  {
+    if (isField(input.GetAsProxy(k)))
+    {
+      field.Set(input.GetAsProxy(k), input.GetOutputPort(k));
+      wrap->UpdateVTKObjects();
+    }
+  }
+}
+
+// The target on the Input: the one that is not a distance field.
+vtkSMProxy* targetOf(vtkSMProxy* wrap)
+{
+  vtkSMPropertyHelper input(wrap, "Input");
+  for (unsigned int k = 0; k < input.GetNumberOfElements(); ++k)
+  {
+    if (!isField(input.GetAsProxy(k)))
+    {
+      return input.GetAsProxy(k);
+    }
+  }
+  return nullptr;
+}
+
 // The shown wrap coloured by Distance over its range, with its legend; the target beside it in grey,
 // a mesh as its edges, so that where it leaves the wrap shows.
 void present(pqPipelineSource* wrap, pqDataRepresentation* representation, pqView* view)
@@ -45,18 +85,13 @@ void present(pqPipelineSource* wrap, pqDataRepresentation* representation, pqVie
     vtkSMPVRepresentationProxy::RescaleTransferFunctionToDataRange(proxy, false, false);
     vtkSMPVRepresentationProxy::SetScalarBarVisibility(proxy, view->getProxy(), true);
   }
-  vtkSMPropertyHelper input(wrap->getProxy(), "Input");
   auto* target = pqApplicationCore::instance()->getServerManagerModel()->findItem<pqPipelineSource*>(
-    input.GetAsProxy(0));
+    targetOf(wrap->getProxy()));
   pqDataRepresentation* shown = target ? target->getRepresentation(view) : nullptr;
   if (shown && shown->isVisible())
   {
     vtkSMProxy* look = shown->getProxy();
-    vtkPVDataInformation* info = shown->getInputDataInformation();
-    if (info && info->GetPolygonCount() > 0) // a cloud's points show as they are
-    {
-      vtkSMPropertyHelper(look, "Representation").Set("Wireframe");
-    }
+    vtkSMPropertyHelper(look, "Representation").Set("Wireframe"); // a cloud's points stay points
     vtkSMPVRepresentationProxy::SetScalarColoring(look, nullptr, 0);
     const double grey[3] = { 0.3, 0.3, 0.3 };
     vtkSMPropertyHelper(look, "AmbientColor").Set(grey, 3);
@@ -84,6 +119,7 @@ void pqShrinkWrapStarter::created(pqPipelineSource* source)
   {
     return;
   }
+  showField(source->getProxy());
   source->setProperty(kStage, 1);
   QObject::connect(source, QOverload<pqPipelineSource*>::of(&pqPipelineSource::dataUpdated), this,
     &pqShrinkWrapStarter::updated);

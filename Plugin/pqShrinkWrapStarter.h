@@ -5,8 +5,8 @@
  * After the first Apply the view shows the finished wrap: the animation goes to the wrap's last
  * step (Play then shows the evolution from its start), the wrap is coloured by Distance over the
  * shown wrap's range with its legend, and the target beside it is drawn grey (a mesh by its edges).
- * A mesh and its distance field selected together both go to Input, where the filter takes the
- * field as its Distance Field. Scripts (pvpython, the Python shell) keep their own control of time
+ * Created with a mesh and its distance field selected (both go to Input), the panel's Distance
+ * Field shows the field. Scripts (pvpython, the Python shell) keep their own control of time
  * and colour.
  */
 #ifndef pqShrinkWrapStarter_h

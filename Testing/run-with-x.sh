@@ -3,7 +3,8 @@
 # server in another container does not leave in our /tmp; with -displayfd the server binds a free
 # display itself. CI twice saw a client fail to connect ("bad X server connection") to a server that
 # had reported ready, so a run whose client could not connect is retried once on a new server, with
-# that server's log shown; any other failure is the command's own.
+# that server's log shown; any other failure is the command's own. With SHRINKWRAP_X_LOG set, the
+# command's output (stdout and stderr) is also kept in that file.
 set -uo pipefail
 dir="$(mktemp -d)"
 server=
@@ -32,6 +33,7 @@ for attempt in 1 2; do
   DISPLAY=":$(head -n1 "$dir/display")" "$@" 2>&1 | tee "$dir/output"
   status=${PIPESTATUS[0]}
   if [ "$status" -eq 0 ] || ! grep -qiE "bad X server connection|cannot open display" "$dir/output"; then
+    [ -n "${SHRINKWRAP_X_LOG:-}" ] && cp "$dir/output" "$SHRINKWRAP_X_LOG"
     exit "$status"
   fi
   echo "run-with-x: attempt $attempt could not connect to Xvfb on :$(head -n1 "$dir/display"); its log:" >&2

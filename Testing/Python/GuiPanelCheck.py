@@ -4,9 +4,7 @@
   the Properties panel as the screen shows it to panel.png (ImageMagick's import; the window is
   1280 x 1024 at the screen's corner); then selects the mesh and the field together;
 - "selection", after Shrink Wrap was created from the menu with both selected: appends what the new
-  filter's Input holds and whether its wrap equals Change Input's;
-- "search", after the menu entry a search for "sdf" finds was applied: appends its label and the
-  size of the field it made."""
+  filter's Input and Distance Field hold and whether its wrap equals Change Input's."""
 import os
 import subprocess
 
@@ -52,20 +50,13 @@ if part == "panel":
     model = vtkSMProxyManager.GetProxyManager().GetActiveSessionProxyManager().GetSelectionModel("ActiveSources")
     model.Select(FindSource("Mesh").SMProxy, vtkSMProxySelectionModel.CLEAR_AND_SELECT)
     model.Select(FindSource("Field").SMProxy, vtkSMProxySelectionModel.SELECT)
-elif part == "search":
-    found = [p for p in GetSources().values() if p.GetXMLName() == "DistanceFieldSDF"]
-    image = found[0].GetClientSideObject().GetOutputDataObject(0) if found else None
-    with open(os.path.join(out, "result.txt"), "a") as f:
-        f.write("menu entry %s made a field: %s\n" % (
-            found[0].GetXMLLabel() if found else "(none)",
-            image is not None and image.GetPointData().GetArray("SignedDistance") is not None))
 else:
     created = FindSource("ShrinkWrap1")
     inputs = [] if created is None else sorted(name_of(p) for p in created.Input)
     made = last_step(created) if created is not None else None
     same = made is not None and same_wrap(made, reference)
     with open(os.path.join(out, "result.txt"), "a") as f:
-        f.write("created from the menu with Mesh and Field selected, Input: %s\n"
+        f.write("created from the menu with Mesh and Field selected, Input: %s, Distance Field: %s\n"
                 "its wrap equals Change Input's: %s\nvertices: %d and %d\n"
-                % (", ".join(inputs), same, made.GetNumberOfPoints() if made else 0,
+                % (", ".join(inputs), name_of(created.DistanceField) if created else "none", same, made.GetNumberOfPoints() if made else 0,
                    reference.GetNumberOfPoints()))

@@ -66,6 +66,9 @@ together = vtk_to_numpy(fetched(both).GetPoints().GetData())
 apart = vtk_to_numpy(fetched(ShrinkWrap(Input=surface, DistanceField=field)).GetPoints().GetData())
 check(together.shape == apart.shape and np.array_equal(together, apart),
       "Input = [mesh, field] gives the wrap of Distance Field = field (%d vertices)" % together.shape[0])
+shown = vtk_to_numpy(fetched(ShrinkWrap(Input=[surface, field], DistanceField=field)).GetPoints().GetData())
+check(shown.shape == apart.shape and np.array_equal(shown, apart),
+      "... and so does the field on both Input and Distance Field, as the GUI's panel shows it")
 both.UpdatePropertyInformation()
 check(both.GetProperty("HasDistanceField").GetData() == 1, "... and the panel hides Resolution then")
 
@@ -115,18 +118,19 @@ check(("%d vertices" % wrap.GetNumberOfPoints()) in text and "25 steps" in text 
       "0 self-intersecting" in text and fd.GetArray("SelfIntersections").GetValue(0) == 0,
       "summary line: " + text)
 
-# Found by the words users search for: ParaView's quick launch keeps the menu entries whose label holds
-# every typed word, so "sdf" and "distance field" need a label with them; that entry is Mesh Signed
-# Distance itself (same properties, same field).
-alias = DistanceFieldSDFMeshSignedDistance(Input=surface, Resolution=48)
-label = alias.SMProxy.GetXMLLabel().lower()
-check(all(all(word in label for word in search.split()) for search in ("sdf", "distance field", "signed distance")),
-      "a menu entry labelled '%s' holds the words of 'sdf', 'distance field' and 'signed distance'"
-      % alias.SMProxy.GetXMLLabel())
-named = MeshSignedDistance(Input=surface, Resolution=48)
-check(alias.ListProperties() == named.ListProperties() and
-      np.array_equal(array(fetched(alias), "SignedDistance"), array(fetched(named), "SignedDistance")),
-      "... and it is Mesh Signed Distance: the same properties and the same field")
+# One filter, one menu entry: ParaView's quick launch keeps the entries whose label holds the typed
+# words, and "signed distance" or "distance" find Mesh Signed Distance, the one entry of its class.
+definitions = servermanager.ProxyManager().SMProxyManager.GetProxyDefinitionManager()
+entries = {}
+walker = definitions.NewSingleGroupIterator("filters")
+walker.InitTraversal()
+while not walker.IsDoneWithTraversal():
+    xml = definitions.GetProxyDefinition("filters", walker.GetProxyName())
+    if xml is not None and xml.GetAttribute("class") in ("vtkMeshSignedDistance", "vtkShrinkWrapFilter"):
+        entries.setdefault(xml.GetAttribute("class"), []).append(xml.GetAttribute("label"))
+    walker.GoToNextItem()
+check(entries == {"vtkMeshSignedDistance": ["Mesh Signed Distance"], "vtkShrinkWrapFilter": ["Shrink Wrap"]},
+      "one menu entry per filter, and a search for 'signed distance' finds it (%s)" % entries)
 
 # The cell sizes the panels show (information properties), known before a run: Mesh Signed Distance's
 # grid, and the field Shrink Wrap moves on (its own or the connected one).

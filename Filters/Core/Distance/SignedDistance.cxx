@@ -103,7 +103,7 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
   }
   else if (!asked)
   {
-    s << "unsigned: ComputeSign is off";
+    s << "unsigned: Compute Sign is off";
   }
   else if (r.signMethod == SignMethod::Votes)
   {
@@ -116,13 +116,18 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
   }
   else if (r.signMethod == SignMethod::WindingNumber)
   {
-    s << "signed by the generalized winding number (inside where it exceeds 1/2): the surface has "
-      << r.boundaryEdges << " rim edges, " << r.nonManifoldEdges << " non-manifold edges and "
-      << r.unconfirmedTriangles
-      << " triangles inside another part or crossing one or near those, so the sign votes "
-      << "disagreed at " << r.signDisagreements << " grid edges; " << r.windingEvaluations
+    s << "signed by the generalized winding number (inside where it exceeds 1/2), as the surface "
+      << "is open or crosses itself: " << r.boundaryEdges << " rim edges, " << r.nonManifoldEdges
+      << " non-manifold edges, " << r.unconfirmedTriangles
+      << " triangles inside another part or crossing one; " << r.windingEvaluations
       << " nodes took their side from the winding number, the others from their closest point";
     turned();
+  }
+  else if (r.signMethod == SignMethod::VotesDisagreed)
+  {
+    s << "unsigned: the surface is open or crosses itself (" << r.boundaryEdges << " rim edges, "
+      << r.nonManifoldEdges << " non-manifold edges), so the sign votes disagreed at "
+      << r.signDisagreements << " grid edges, and no winding number was asked for";
   }
   else
   {
@@ -134,10 +139,21 @@ std::string signStatus(const SignedDistanceResult& r, bool asked)
   return s.str();
 }
 
-bool signNeedsWarning(const SignedDistanceResult& r, bool asked)
+std::optional<Note::Kind> signNoteKind(const SignedDistanceResult& r, bool asked)
 {
-  return asked && r.points == 0 &&
-    (!r.isSigned || r.signMethod == SignMethod::WindingNumber || r.invertedOrientation);
+  if (!asked || r.points > 0)
+  {
+    return std::nullopt;
+  }
+  if (!r.isSigned)
+  {
+    return Note::Warning;
+  }
+  if (r.signMethod == SignMethod::WindingNumber || r.invertedOrientation)
+  {
+    return Note::Info;
+  }
+  return std::nullopt;
 }
 
 int workingBytesPerNode(const SignedDistanceSettings& settings)
@@ -247,7 +263,9 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
     result.signDisagreements = votes.disagreeing;
     result.invertedOrientation = votes.inverted;
     result.isSigned = votes.consistent();
-    result.signMethod = result.isSigned ? SignMethod::Votes : SignMethod::None;
+    result.signMethod = result.isSigned ? SignMethod::Votes
+      : settings.windingNumber          ? SignMethod::None
+                                        : SignMethod::VotesDisagreed;
     if (!result.isSigned && settings.windingNumber && !source.sidesConfirmed().empty() &&
       !signByWinding(source, lattice, band, site, state.data(), progress.stage(0.85, 0.98), result))
     {

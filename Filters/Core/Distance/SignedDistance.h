@@ -2,6 +2,7 @@
 #ifndef ShrinkWrap_SignedDistance_h
 #define ShrinkWrap_SignedDistance_h
 
+#include "Common/Notes.h"
 #include "Common/Progress.h"
 #include "Common/Status.h"
 #include "Common/TriangleSoup.h"
@@ -12,6 +13,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace shrinkwrap
@@ -38,10 +40,12 @@ struct SignedDistanceSettings
 
 enum class SignMethod
 {
-  None,         // unsigned: not asked for, or the surface encloses nothing
-  Votes,        // every region's votes agreed (a closed surface that does not cross itself)
-  WindingNumber // the votes disagreed: sides in doubt by the generalized winding number
-                // (WindingSign.h)
+  None,           // unsigned: not asked for, or the surface encloses nothing
+  Votes,          // every region's votes agreed (a closed surface that does not cross itself)
+  WindingNumber,  // the votes disagreed: sides in doubt by the generalized winding number
+                  // (WindingSign.h)
+  VotesDisagreed  // unsigned: the votes disagreed (open or crossing) and no winding number was
+                  // asked for (SignedDistanceSettings::windingNumber false)
 };
 
 struct SignedDistanceResult
@@ -67,9 +71,10 @@ struct SignedDistanceResult
 // What a field's sign rests on, in words for a user: closed or not, crossing itself or not, how the
 // sign was decided (or why there is none). `asked`: whether a sign was asked for.
 std::string signStatus(const SignedDistanceResult& result, bool asked);
-// Whether signStatus describes something a user should hear of as a warning: no sign although one
-// was asked for, a sign from the winding number (open or crossing), or triangles facing inwards.
-bool signNeedsWarning(const SignedDistanceResult& result, bool asked);
+// How a user should hear of signStatus: a warning when there is no sign although one was asked for
+// (and there were polygons to sign), a fact when the winding number or the geometry decided it
+// (an open or crossing surface, triangles facing inwards); nothing for a closed surface's sign.
+std::optional<Note::Kind> signNoteKind(const SignedDistanceResult& result, bool asked);
 
 // Bytes per grid node the computation needs besides the output values and the mesh.
 int workingBytesPerNode(const SignedDistanceSettings& settings);

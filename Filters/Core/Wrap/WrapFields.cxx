@@ -5,6 +5,7 @@
 #include "Evolution/GapClosing.h"
 
 #include <algorithm>
+#include <string>
 
 namespace shrinkwrap
 {
@@ -35,6 +36,20 @@ Status givenGrid(const DistanceGrid& given, Notes& notes, DistanceGrid& grid, bo
   return {};
 }
 
+// What an open or self-crossing target gives with Close Holes off, in one sentence.
+std::string openTarget(const SignedDistanceResult& result)
+{
+  if (result.boundaryEdges > 0)
+  {
+    return "The target is open (" + std::to_string(result.boundaryEdges) +
+      " rim edges) and Close Holes is off: holes wider than the Gap Size stay open, and the wrap "
+      "goes into them and wraps open sheets from both sides (Close Holes on closes them)";
+  }
+  return "The target crosses or overlaps itself (" + std::to_string(result.nonManifoldEdges) +
+    " non-manifold edges) and Close Holes is off: the wrap moves on its unsigned distance (Close "
+    "Holes on signs it by the winding number)";
+}
+
 // The target's field computed on the plan's lattice, and the target as a distance source.
 Status computedGrid(const TriangleSoup& soup, const WrapPlan& plan, const Progress& progress,
   Notes& notes, DistanceGrid& grid, bool& isSigned, std::shared_ptr<const TriangleSource>& exact)
@@ -53,11 +68,15 @@ Status computedGrid(const TriangleSoup& soup, const WrapPlan& plan, const Progre
     return Status::failure("aborted");
   }
   isSigned = result.isSigned;
-  if (signNeedsWarning(result, true))
+  if (result.signMethod == SignMethod::VotesDisagreed)
   {
-    warn(notes,
+    inform(notes, openTarget(result));
+  }
+  else if (const auto kind = signNoteKind(result, true))
+  {
+    notes.push_back({ *kind,
       "The target's distance field is " + signStatus(result, true) +
-        (result.isSigned ? "" : kUnsignedEffect));
+        (result.isSigned ? "" : kUnsignedEffect) });
   }
   return {};
 }

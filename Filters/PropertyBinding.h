@@ -5,6 +5,8 @@
 #ifndef ShrinkWrap_PropertyBinding_h
 #define ShrinkWrap_PropertyBinding_h
 
+#include "Common/Status.h"
+
 #include <vtkIndent.h>
 
 #include <algorithm>
@@ -17,14 +19,45 @@ namespace shrinkwrap
 namespace convert
 {
 
-// A property as the panel shows it: its name (the XML's, Python's and the C++ Set/Get's), its label
-// and the unit its documentation states ("" where it has none: a switch, a choice, a count).
+// No upper limit (a size in the target's units): the panel's range has no max.
+constexpr double kNoLimit = 1e30;
+
+// A property as the panel shows it: its name (the XML's, Python's and the C++ Set/Get's), its label,
+// the unit its documentation states ("" where it has none: a switch, a choice, a count), the range
+// the panel allows (every component of a pair or triple; a switch 0 to 1, a choice its first to
+// last entry), and what 0 means where it means something else than a size of 0.
 struct PropertyInfo
 {
   const char* name;
   const char* label;
   const char* unit;
+  double min;
+  double max;
+  const char* zero = nullptr; // e.g. "automatic"
 };
+
+// Why `value` is outside the property's range, in the panel's words; ok when it is inside.
+Status checkRange(const PropertyInfo& info, double value);
+
+template <typename T>
+Status checkProperty(const PropertyInfo& info, const T& value)
+{
+  if constexpr (std::is_array_v<T>)
+  {
+    for (const auto& v : value)
+    {
+      if (Status checked = checkRange(info, static_cast<double>(v)); !checked)
+      {
+        return checked;
+      }
+    }
+    return {};
+  }
+  else
+  {
+    return checkRange(info, static_cast<double>(value));
+  }
+}
 
 template <typename T>
 struct IsOptional : std::false_type

@@ -56,28 +56,61 @@ template <typename Filter, typename Settings, typename Bind>
 void vtkMeshSignedDistance::BindProperties(Filter& f, Settings& s, Bind&& bind)
 {
   using P = convert::PropertyInfo;
-  bind(P{ "Resolution", "Resolution", "cells along the longest side" }, f.Resolution,
+  bind(P{ "Resolution", "Resolution", "cells along the longest side", 1, 1024 }, f.Resolution,
     s.placement.resolution);
-  bind(P{ "CellSize", "Cell Size", "in the input's units" }, f.CellSize, s.placement.cellSize);
-  bind(P{ "BoxScale", "Box Scale", "times the input's bounds" }, f.BoxScale, s.placement.boxScale);
-  bind(P{ "OffsetFactor", "Offset Factor", "times the largest side" }, f.OffsetFactor,
+  bind(P{ "CellSize", "Cell Size", "in the input's units", 0, convert::kNoLimit, "Resolution sets it" }, f.CellSize, s.placement.cellSize);
+  bind(P{ "BoxScale", "Box Scale", "times the input's bounds", 1, 10 }, f.BoxScale, s.placement.boxScale);
+  bind(P{ "OffsetFactor", "Offset Factor", "times the largest side", 0, 10 }, f.OffsetFactor,
     s.placement.offsetFactor);
-  bind(P{ "SweepMethod", "Sweep Method", "" }, f.SweepMethod, s.distance.sweep);
-  bind(P{ "BandLayers", "Band Layers", "layers of nodes" }, f.BandLayers, s.distance.bandLayers);
-  bind(P{ "ComputeSign", "Compute Sign", "" }, f.ComputeSign, s.distance.computeSign);
+  bind(P{ "SweepMethod", "Sweep Method", "", CLOSEST_POINT, EIKONAL }, f.SweepMethod, s.distance.sweep);
+  bind(P{ "BandLayers", "Band Layers", "layers of nodes", 0, 16 }, f.BandLayers, s.distance.bandLayers);
+  bind(P{ "ComputeSign", "Compute Sign", "", 0, 1 }, f.ComputeSign, s.distance.computeSign);
+}
+
+namespace
+{
+// The properties that stand for no core setting.
+const convert::PropertyInfo kInputGeometry{ "InputGeometry", "Input Geometry", "",
+  vtkInputGeometry::AUTOMATIC, vtkInputGeometry::POLYGONS_AND_POINTS };
+const convert::PropertyInfo kUseExplicitGrid{ "UseExplicitGrid", "Use Explicit Grid", "", 0, 1 };
+const convert::PropertyInfo kOutputBounds{ "OutputBounds", "Output Bounds", "in the input's units",
+  -convert::kNoLimit, convert::kNoLimit };
+const convert::PropertyInfo kOutputDimensions{ "OutputDimensions", "Output Dimensions", "nodes", 2,
+  convert::kNoLimit };
+const convert::PropertyInfo kFieldPerBlock{ "FieldPerBlock", "Field Per Block", "", 0, 1 };
 }
 
 std::vector<convert::PropertyInfo> vtkMeshSignedDistance::DescribeProperties()
 {
-  std::vector<convert::PropertyInfo> described{ { "InputGeometry", "Input Geometry", "" },
-    { "UseExplicitGrid", "Use Explicit Grid", "" },
-    { "OutputBounds", "Output Bounds", "in the input's units" },
-    { "OutputDimensions", "Output Dimensions", "nodes" }, { "FieldPerBlock", "Field Per Block", "" } };
+  std::vector<convert::PropertyInfo> described{ kInputGeometry, kUseExplicitGrid, kOutputBounds,
+    kOutputDimensions, kFieldPerBlock };
   const FieldSettings settings;
   vtkNew<vtkMeshSignedDistance> filter;
   BindProperties(*filter.Get(), settings,
     [&](const convert::PropertyInfo& p, const auto&, const auto&) { described.push_back(p); });
   return described;
+}
+
+shrinkwrap::Status vtkMeshSignedDistance::CheckProperties() const
+{
+  shrinkwrap::Status status = convert::checkProperty(kInputGeometry, this->InputGeometry);
+  if (status && this->UseExplicitGrid)
+  {
+    status = convert::checkProperty(kOutputBounds, this->OutputBounds);
+  }
+  if (status && this->UseExplicitGrid)
+  {
+    status = convert::checkProperty(kOutputDimensions, this->OutputDimensions);
+  }
+  const FieldSettings unused;
+  BindProperties(*this, unused,
+    [&](const convert::PropertyInfo& info, const auto& property, const auto&) {
+      if (status)
+      {
+        status = convert::checkProperty(info, property);
+      }
+    });
+  return status;
 }
 
 vtkMeshSignedDistance::vtkMeshSignedDistance()
@@ -144,6 +177,10 @@ int vtkMeshSignedDistance::RequestInformation(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
   this->GridCellSize = 0;
+  if (!this->CheckProperties())
+  {
+    return 1; // RequestData says why
+  }
   if (vtkCompositeDataSet::SafeDownCast(outInfo->Get(vtkDataObject::DATA_OBJECT())))
   {
     return 1; // a field per block: a grid of its own for each
@@ -210,6 +247,12 @@ int vtkMeshSignedDistance::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (const shrinkwrap::Status checked = this->CheckProperties(); !checked)
+  {
+    vtkDataObject::SafeDownCast(outInfo->Get(vtkDataObject::DATA_OBJECT()))->Initialize();
+    vtkErrorMacro("Cannot compute the field: " << checked.message() << ".");
+    return 1;
+  }
   if (auto* blocks = vtkCompositeDataSet::SafeDownCast(outInfo->Get(vtkDataObject::DATA_OBJECT())))
   {
     this->ExecuteBlocks(vtkCompositeDataSet::GetData(inputVector[0], 0), outInfo, blocks);

@@ -20,7 +20,9 @@
  *
  * Output: vtkImageData with the point array "SignedDistance" (float). Field data: "Signed" (1 when
  * the field is signed, 0 when it is unsigned) and "DistanceStatus" (a sentence saying why). A mesh
- * with holes through which the outside reaches the inside gives an unsigned field and a warning.
+ * with holes through which the outside reaches the inside is signed by its generalized winding
+ * number (inside where it exceeds 1/2); a sheet that encloses nothing stays unsigned, with a
+ * warning.
  * With FieldPerBlock and a composite input: a composite of the same kind with such an image per
  * block.
  *
@@ -83,7 +85,7 @@ public:
   static vtkMeshSignedDistance* New();
   vtkTypeMacro(vtkMeshSignedDistance, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-  /// Every property as the panel shows it (name, label, unit): what the panel's XML must say.
+  /// Every property as the panel shows it (name, label, unit, range): what the panel's XML must say.
   static std::vector<shrinkwrap::convert::PropertyInfo> DescribeProperties();
 
   enum SweepMethods
@@ -97,8 +99,7 @@ public:
    * What of the input the distances are measured to: AUTOMATIC (default), POLYGONS, POINTS or
    * POLYGONS_AND_POINTS (vtkInputGeometry). A field from points is unsigned: points have no inside.
    */
-  vtkSetClampMacro(
-    InputGeometry, int, vtkInputGeometry::AUTOMATIC, vtkInputGeometry::POLYGONS_AND_POINTS);
+  vtkSetMacro(InputGeometry, int);
   vtkGetMacro(InputGeometry, int);
   ///@}
 
@@ -161,7 +162,7 @@ public:
   /**
    * How the far field is filled: CLOSEST_POINT (default) or EIKONAL (the paper's scheme).
    */
-  vtkSetClampMacro(SweepMethod, int, CLOSEST_POINT, EIKONAL);
+  vtkSetMacro(SweepMethod, int);
   vtkGetMacro(SweepMethod, int);
   ///@}
 
@@ -170,7 +171,7 @@ public:
    * Extra layers of nodes with exact distances around the nodes of the cells the surface touches.
    * Default 1.
    */
-  vtkSetClampMacro(BandLayers, int, 0, 16);
+  vtkSetMacro(BandLayers, int);
   vtkGetMacro(BandLayers, int);
   ///@}
 
@@ -209,6 +210,8 @@ public:
 protected:
   vtkMeshSignedDistance();
   ~vtkMeshSignedDistance() override;
+  /// Why a property is outside the panel's range, naming its label and the range; ok when none is.
+  shrinkwrap::Status CheckProperties() const;
 
   // The pipeline's passes (ProcessRequest also makes the output object), then the ports.
   vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,

@@ -67,60 +67,81 @@ void vtkShrinkWrapFilter::BindProperties(Filter& f, Settings& s, Bind&& bind)
   using P = convert::PropertyInfo;
   auto& e = s.evolution;
   // The three sizes most wraps set, and how the wrap meets holes and blocks.
-  bind(P{ "TargetEdgeLength", "Target Edge Length", "in the target's units" }, f.TargetEdgeLength,
+  bind(P{ "TargetEdgeLength", "Target Edge Length", "in the target's units", 0, convert::kNoLimit, "automatic" }, f.TargetEdgeLength,
     s.targetEdgeLength);
-  bind(P{ "GapSize", "Gap Size", "in the target's units" }, f.GapSize, s.gapSize);
-  bind(P{ "NumberOfSteps", "Number Of Steps", "steps" }, f.NumberOfSteps, s.steps);
-  bind(P{ "CloseHoles", "Close Holes", "" }, f.CloseHoles, s.closeHoles);
-  bind(P{ "EdgeLengthRange", "Edge Length Range", "in units of the Target Edge Length" },
+  bind(P{ "GapSize", "Gap Size", "in the target's units", 0, convert::kNoLimit, "automatic" }, f.GapSize, s.gapSize);
+  bind(P{ "NumberOfSteps", "Number Of Steps", "steps", 0, kMaxSteps }, f.NumberOfSteps, s.steps);
+  bind(P{ "CloseHoles", "Close Holes", "", 0, 1 }, f.CloseHoles, s.closeHoles);
+  bind(P{ "EdgeLengthRange", "Edge Length Range", "in units of the Target Edge Length", WrapSettings::kShortestEdge, WrapSettings::kLongestEdge },
     f.EdgeLengthRange, s.edgeLengthRange);
-  bind(P{ "Remeshing", "Remeshing", "" }, f.Remeshing, s.remeshing);
-  bind(P{ "Resolution", "Resolution", "cells along the longest side" }, f.Resolution, s.resolution);
+  bind(P{ "Remeshing", "Remeshing", "", 0, 1 }, f.Remeshing, s.remeshing);
+  bind(P{ "Resolution", "Resolution", "cells along the longest side", 8, 1024 }, f.Resolution, s.resolution);
   // The start.
-  bind(P{ "StartingShape", "Starting Shape", "" }, f.StartingShape, s.start.shape);
-  bind(P{ "StartOffsetInCells", "Start Offset In Cells", "in cells of the distance field" },
+  bind(P{ "StartingShape", "Starting Shape", "", ICOSPHERE, OFFSET_SURFACE }, f.StartingShape, s.start.shape);
+  bind(P{ "StartOffsetInCells", "Start Offset In Cells", "in cells of the distance field", 0.5, 1000 },
     f.StartOffsetInCells, s.start.offset);
-  bind(P{ "SubdivisionLevel", "Subdivision Level", "" }, f.SubdivisionLevel, s.start.subdivision);
-  bind(P{ "InitialRelaxation", "Initial Relaxation", "iterations" }, f.InitialRelaxation,
+  bind(P{ "SubdivisionLevel", "Subdivision Level", "", 0, 8 }, f.SubdivisionLevel, s.start.subdivision);
+  bind(P{ "InitialRelaxation", "Initial Relaxation", "iterations", 0, 1000 }, f.InitialRelaxation,
     s.start.relaxation);
   // Eqs. (3)-(5).
-  bind(P{ "TimePerStep", "Time Per Step", "evolution time" }, f.TimePerStep, e.timeStep);
-  bind(P{ "AdvectionSpeed", "Advection Speed", "per unit of evolution time" }, f.AdvectionSpeed, e.C);
-  bind(P{ "ConcavityPush", "Concavity Push", "without unit" }, f.ConcavityPush, e.D);
-  bind(P{ "Smoothing", "Smoothing", "without unit" }, f.Smoothing, e.C1);
-  bind(P{ "SmoothingFalloff", "Smoothing Falloff", "squared scaled units" }, f.SmoothingFalloff,
+  bind(P{ "TimePerStep", "Time Per Step", "evolution time", 1e-4, 1 }, f.TimePerStep, e.timeStep);
+  bind(P{ "AdvectionSpeed", "Advection Speed", "per unit of evolution time", 0, 100 }, f.AdvectionSpeed, e.C);
+  bind(P{ "ConcavityPush", "Concavity Push", "without unit", 0, 10 }, f.ConcavityPush, e.D);
+  bind(P{ "Smoothing", "Smoothing", "without unit", 0, 100 }, f.Smoothing, e.C1);
+  bind(P{ "SmoothingFalloff", "Smoothing Falloff", "squared scaled units", 0, 100 }, f.SmoothingFalloff,
     e.C2);
-  bind(P{ "AutomaticScaling", "Automatic Scaling", "" }, f.AutomaticScaling, s.automaticScaling);
-  bind(P{ "SolverTolerance", "Solver Tolerance", "relative residual" }, f.SolverTolerance,
+  bind(P{ "AutomaticScaling", "Automatic Scaling", "", 0, 1 }, f.AutomaticScaling, s.automaticScaling);
+  bind(P{ "SolverTolerance", "Solver Tolerance", "relative residual", 1e-15, 1e-2 }, f.SolverTolerance,
     e.solverTolerance);
   // The tangential redistribution (Section 2.3, eq. (10)).
-  bind(P{ "TangentialRedistribution", "Tangential Redistribution", "" },
+  bind(P{ "TangentialRedistribution", "Tangential Redistribution", "", NONE, VOLUME },
     f.TangentialRedistribution, e.redistribution);
-  bind(P{ "AngleWeight", "Angle Weight", "without unit" }, f.AngleWeight, e.omegaAngle);
-  bind(P{ "VolumeWeight", "Volume Weight", "without unit" }, f.VolumeWeight, e.omegaVolume);
-  bind(P{ "DistanceWeighting", "Distance Weighting", "" }, f.DistanceWeighting, e.distanceWeight);
-  bind(P{ "DistanceWeightAmplitude", "Distance Weight Amplitude", "without unit" },
+  bind(P{ "AngleWeight", "Angle Weight", "without unit", 0, 100 }, f.AngleWeight, e.omegaAngle);
+  bind(P{ "VolumeWeight", "Volume Weight", "without unit", 0, 100 }, f.VolumeWeight, e.omegaVolume);
+  bind(P{ "DistanceWeighting", "Distance Weighting", "", 0, 1 }, f.DistanceWeighting, e.distanceWeight);
+  bind(P{ "DistanceWeightAmplitude", "Distance Weight Amplitude", "without unit", 0, 100 },
     f.DistanceWeightAmplitude, e.rhoA);
   // The connectivity edits, the rims and the landing.
-  bind(P{ "EdgeFlips", "Edge Flips", "" }, f.EdgeFlips, e.edgeFlips);
-  bind(P{ "FlipDihedralLimit", "Flip Dihedral Limit", "degrees" }, f.FlipDihedralLimit,
+  bind(P{ "EdgeFlips", "Edge Flips", "", 0, 1 }, f.EdgeFlips, e.edgeFlips);
+  bind(P{ "FlipDihedralLimit", "Flip Dihedral Limit", "degrees", 0, 180 }, f.FlipDihedralLimit,
     e.flips.maxDihedral);
-  bind(P{ "EdgeCollapses", "Edge Collapses", "" }, f.EdgeCollapses, e.edgeCollapses);
-  bind(P{ "CoverRims", "Cover Rims", "" }, f.CoverRims, e.rims.cover);
-  bind(P{ "CreaseAngle", "Crease Angle", "degrees" }, f.CreaseAngle, e.rims.creaseAngle);
-  bind(P{ "FitFacets", "Fit Facets", "" }, f.FitFacets, e.facetFit);
-  bind(P{ "CacheMemoryMiB", "Cache Memory (MiB)", "MiB" }, f.CacheMemoryMiB, s.cacheMiB);
+  bind(P{ "EdgeCollapses", "Edge Collapses", "", 0, 1 }, f.EdgeCollapses, e.edgeCollapses);
+  bind(P{ "CoverRims", "Cover Rims", "", 0, 1 }, f.CoverRims, e.rims.cover);
+  bind(P{ "CreaseAngle", "Crease Angle", "degrees", 0, 180 }, f.CreaseAngle, e.rims.creaseAngle);
+  bind(P{ "FitFacets", "Fit Facets", "", 0, 1 }, f.FitFacets, e.facetFit);
+  bind(P{ "CacheMemoryMiB", "Cache Memory (MiB)", "MiB", 0, 65536 }, f.CacheMemoryMiB, s.cacheMiB);
+}
+
+namespace
+{
+// The properties that stand for no core setting.
+const convert::PropertyInfo kInputGeometry{ "InputGeometry", "Input Geometry", "",
+  vtkInputGeometry::AUTOMATIC, vtkInputGeometry::POLYGONS_AND_POINTS };
+const convert::PropertyInfo kWrapPerBlock{ "WrapPerBlock", "Wrap Per Block", "", 0, 1 };
 }
 
 std::vector<convert::PropertyInfo> vtkShrinkWrapFilter::DescribeProperties()
 {
-  std::vector<convert::PropertyInfo> described{ { "InputGeometry", "Input Geometry", "" },
-    { "WrapPerBlock", "Wrap Per Block", "" } };
+  std::vector<convert::PropertyInfo> described{ kInputGeometry, kWrapPerBlock };
   const WrapSettings settings;
   vtkNew<vtkShrinkWrapFilter> filter;
   BindProperties(*filter.Get(), settings,
     [&](const convert::PropertyInfo& p, const auto&, const auto&) { described.push_back(p); });
   return described;
+}
+
+Status vtkShrinkWrapFilter::CheckProperties() const
+{
+  Status status = convert::checkProperty(kInputGeometry, this->InputGeometry);
+  const WrapSettings unused;
+  BindProperties(*this, unused,
+    [&](const convert::PropertyInfo& info, const auto& property, const auto&) {
+      if (status)
+      {
+        status = convert::checkProperty(info, property);
+      }
+    });
+  return status;
 }
 
 void vtkShrinkWrapFilter::SetProperties(const WrapSettings& settings)
@@ -198,13 +219,17 @@ int vtkShrinkWrapFilter::ComputePipelineMTime(vtkInformation* request,
 int vtkShrinkWrapFilter::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  this->ShowSizes({});
+  if (!this->CheckProperties())
+  {
+    return 1; // RequestData says why
+  }
   // Every evolution step is a time step of the output.
   convert::advertiseSteps(
     outputVector->GetInformationObject(0), this->NumberOfSteps, this->TimePerStep);
   // ParaView reads information properties after RequestInformation, not after RequestData: the
   // panel's sizes are planned here from the inputs as they stand (0 while the target has not been
   // computed, and for a composite wrapped block by block); RequestData then shows the run's.
-  this->ShowSizes({});
   convert::WrapInputs inputs;
   std::optional<GridLattice> field;
   const bool one = convert::wrapInputs(inputVector, inputs, field).ok();
@@ -246,6 +271,11 @@ int vtkShrinkWrapFilter::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
   output->Initialize();
+  if (const Status checked = this->CheckProperties(); !checked)
+  {
+    vtkErrorMacro(<< "Cannot wrap: " << checked.message() << ".");
+    return 1;
+  }
   vtkCompositeDataSet* blocks = this->WrapPerBlock ? convert::compositeOf(inputVector[0]) : nullptr;
   this->SetProgressShiftScale(0, 1); // (a run that threw may have left a block's share)
   try // memory can run out below any estimate (a process limit, a job's cap)
@@ -265,7 +295,7 @@ int vtkShrinkWrapFilter::RequestData(
     this->Runs->clear(); // a half-made step is not kept; the next update starts over
     if (dynamic_cast<const std::bad_alloc*>(&e))
     {
-      vtkErrorMacro("Out of memory: lower Subdivision Level, Resolution or Cache Memory Limit.");
+      vtkErrorMacro("Out of memory: lower Subdivision Level, Resolution or Cache Memory (MiB).");
     }
     else
     {

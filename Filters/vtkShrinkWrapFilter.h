@@ -56,6 +56,7 @@ class WrapRuns;
 struct GridLattice;
 struct Note;
 class Progress;
+class Status;
 struct WrapPlan;
 struct WrapSettings;
 struct WrapSizes;
@@ -68,7 +69,7 @@ public:
   static vtkShrinkWrapFilter* New();
   vtkTypeMacro(vtkShrinkWrapFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-  /// Every property as the panel shows it (name, label, unit): what the panel's XML must say.
+  /// Every property as the panel shows it (name, label, unit, range): what the panel's XML must say.
   static std::vector<shrinkwrap::convert::PropertyInfo> DescribeProperties();
 
   enum Redistributions
@@ -96,20 +97,19 @@ public:
   }
 
   /// What of the target is wrapped (vtkInputGeometry). Default AUTOMATIC.
-  vtkSetClampMacro(
-    InputGeometry, int, vtkInputGeometry::AUTOMATIC, vtkInputGeometry::POLYGONS_AND_POINTS);
+  vtkSetMacro(InputGeometry, int);
   vtkGetMacro(InputGeometry, int);
 
   /// The three sizes most wraps set, in the target's units; 0: automatic (Chosen* tell the values).
   /// Target Edge Length: the wrap's triangles' edge length L.
-  vtkSetClampMacro(TargetEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(TargetEdgeLength, double);
   vtkGetMacro(TargetEdgeLength, double);
   /// Gap Size: the narrowest gap or hole that stays open; narrower ones are bridged.
-  vtkSetClampMacro(GapSize, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(GapSize, double);
   vtkGetMacro(GapSize, double);
   /// Number Of Steps: evolution steps N_t, at most kMaxSteps. Default 25.
   static constexpr int kMaxSteps = 10000;
-  vtkSetClampMacro(NumberOfSteps, int, 0, kMaxSteps);
+  vtkSetMacro(NumberOfSteps, int);
   vtkGetMacro(NumberOfSteps, int);
 
   /// Close Holes: an open target's holes closed by its generalized winding number. Default off.
@@ -130,14 +130,14 @@ public:
 
   /// The start without an InitialSurface: OFFSET_SURFACE (default; StartOffset cells out, at most
   /// 0.4 Gap Size) or ICOSPHERE (SubdivisionLevel 0-8, default 3).
-  vtkSetClampMacro(StartingShape, int, ICOSPHERE, OFFSET_SURFACE);
+  vtkSetMacro(StartingShape, int);
   vtkGetMacro(StartingShape, int);
-  vtkSetClampMacro(StartOffsetInCells, double, 0.5, 1000.0);
+  vtkSetMacro(StartOffsetInCells, double);
   vtkGetMacro(StartOffsetInCells, double);
   vtkSetMacro(SubdivisionLevel, int);
   vtkGetMacro(SubdivisionLevel, int);
   /// Tangential relaxation iterations of a contour or given start. Default 10.
-  vtkSetClampMacro(InitialRelaxation, int, 0, 1000);
+  vtkSetMacro(InitialRelaxation, int);
   vtkGetMacro(InitialRelaxation, int);
 
   /// Time Per Step: the evolution time a step advances (tau of eq. (5)); step k is at time k tau.
@@ -158,7 +158,7 @@ public:
   /// Tangential redistribution (Section 2.3): NONE, ANGLE (default) or VOLUME, with the Angle Weight
   /// omega_angle (0.5), the Volume Weight omega_vol (1), and, with DistanceWeighting (off), rho(d) =
   /// A (1 - exp(-d^2)) of eq. (10), A the Distance Weight Amplitude (1).
-  vtkSetClampMacro(TangentialRedistribution, int, NONE, VOLUME);
+  vtkSetMacro(TangentialRedistribution, int);
   vtkGetMacro(TangentialRedistribution, int);
   vtkSetMacro(AngleWeight, double);
   vtkGetMacro(AngleWeight, double);
@@ -182,7 +182,7 @@ public:
   vtkSetMacro(EdgeFlips, bool);
   vtkGetMacro(EdgeFlips, bool);
   vtkBooleanMacro(EdgeFlips, bool);
-  vtkSetClampMacro(FlipDihedralLimit, double, 0.0, 180.0);
+  vtkSetMacro(FlipDihedralLimit, double);
   vtkGetMacro(FlipDihedralLimit, double);
   vtkSetMacro(EdgeCollapses, bool);
   vtkGetMacro(EdgeCollapses, bool);
@@ -192,7 +192,7 @@ public:
   vtkSetMacro(CoverRims, bool);
   vtkGetMacro(CoverRims, bool);
   vtkBooleanMacro(CoverRims, bool);
-  vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
+  vtkSetMacro(CreaseAngle, double);
   vtkGetMacro(CreaseAngle, double);
   /// Land the vertices an edge's sagitta off the target so the facets straddle it. Default on.
   vtkSetMacro(FitFacets, bool);
@@ -250,6 +250,8 @@ protected:
   void ExecuteBlocks(vtkCompositeDataSet* blocks, vtkInformationVector** inputVector,
     vtkInformation* outInfo, vtkCompositeDataSet* output);
   void SetProperties(const shrinkwrap::WrapSettings& settings); // the defaults are stated there
+  /// Why a property is outside the panel's range, naming its label and the range; ok when none is.
+  shrinkwrap::Status CheckProperties() const;
   template <typename Filter, typename Settings, typename Bind>
   static void BindProperties(Filter& filter, Settings& settings, Bind&& bind);
 

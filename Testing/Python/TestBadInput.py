@@ -11,7 +11,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 
-from checks import abort_at, check, finish
+from checks import abort_at, check, finish, messages_of
 
 plugin = sys.argv[1]
 
@@ -93,10 +93,13 @@ same = data.GetNumberOfPoints() == fresh.GetNumberOfPoints() and all(
     data.GetPoint(i) == fresh.GetPoint(i) for i in range(0, data.GetNumberOfPoints(), 97))
 check(step_of(data) == 7 and same, "a 1 MiB cache scrubbed back to step 7: the same surface as a fresh run")
 
-# Absurd step counts are bounded; times far past the end show the last step.
+# Absurd step counts are refused with the label and the range; times far past the end show the
+# last step.
 lone.NumberOfSteps = 2 ** 31 - 1
+said = messages_of(lone, lambda: lone.UpdatePipeline())
 lone.UpdatePipelineInformation()
-check(len(lone.TimestepValues) == 10001, "NumberOfSteps 2^31-1: %d time steps advertised" % len(lone.TimestepValues))
+check(len(lone.TimestepValues) == 0 and "Number Of Steps is 2147483647: it must be from 0 to 10000" in said,
+      "Number Of Steps 2^31-1: refused (%s), %d time steps advertised" % (said.strip(), len(lone.TimestepValues)))
 lone.NumberOfSteps = 5
 lone.UpdatePipelineInformation()
 for t in (5e7, 1e9, math.inf, math.nan):

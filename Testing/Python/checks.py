@@ -27,3 +27,24 @@ def abort_at(algorithm, event):
             caller.AbortExecuteOn()
 
     return algorithm.AddObserver("ProgressEvent", on_progress)
+
+
+def messages_of(proxy, run):
+    """What the proxy's filter said while `run()` ran: its error and warning messages, joined."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.vtkCommonCore import VTK_STRING
+
+    said = []
+
+    @calldata_type(VTK_STRING)
+    def on_message(caller, event, message):
+        said.append(message)
+
+    algorithm = proxy.GetClientSideObject()
+    tags = [algorithm.AddObserver(event, on_message) for event in ("ErrorEvent", "WarningEvent")]
+    try:
+        run()
+    finally:
+        for tag in tags:
+            algorithm.RemoveObserver(tag)
+    return " ".join(said)

@@ -26,15 +26,15 @@ Status placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLatt
   }
   if (!(placement.boxScale > 0) || !std::isfinite(placement.boxScale))
   {
-    return Status::failure("BoxScale must be positive");
+    return Status::failure("Box Scale must be positive");
   }
   if (!(placement.offsetFactor >= 0) || !std::isfinite(placement.offsetFactor))
   {
-    return Status::failure("OffsetFactor must be zero or positive");
+    return Status::failure("Offset Factor must be zero or positive");
   }
   if (placement.cellSize < 0 || !std::isfinite(placement.cellSize))
   {
-    return Status::failure("CellSize must be positive (or 0 to use Resolution)");
+    return Status::failure("Cell Size must be positive (or 0 to use Resolution)");
   }
   if (placement.cellSize == 0 && placement.resolution < 1)
   {
@@ -66,7 +66,7 @@ Status placeGrid(const Box& meshBounds, const GridPlacement& placement, GridLatt
   if (!withinCoordinateRange(lattice.bounds()))
   {
     return Status::failure(
-      "the grid would reach beyond coordinates of +-1e30; lower OffsetFactor or BoxScale");
+      "the grid would reach beyond coordinates of +-1e30; lower Offset Factor or Box Scale");
   }
   return {};
 }

@@ -200,7 +200,8 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
   {
     return Status::failure(
       "the target dilated by half the Gap Size is empty or reaches the border of the "
-      "distance field; lower the Gap Size, or enlarge the field");
+      "distance field; lower the Gap Size, or give a Distance Field with more room around the "
+      "target (Offset Factor of Mesh Signed Distance)");
   }
   // The sites: boundary points from the nodes near it, one each; the closest-point passes spread
   // them.

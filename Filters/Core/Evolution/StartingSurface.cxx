@@ -22,8 +22,9 @@ Status offsetSurface(
   if (surface.triangles.empty() || !SurfaceMesh::build(surface.points, surface.triangles, closed))
   {
     return Status::failure(
-      "the contour at Start Offset is empty or reaches the border of the distance "
-      "field; lower it, or enlarge the field");
+      "the contour at Start Offset In Cells is empty or reaches the border of the "
+      "distance field; lower it, or give a Distance Field with more room around the target "
+      "(Offset Factor of Mesh Signed Distance)");
   }
   removeCavities(surface);
   if (surface.triangles.empty())

@@ -34,6 +34,8 @@ constexpr double kNoisyPointLengthDivisor = 30;
 // The offset start's farthest distance from the closed target, in Gap Sizes: beyond half the gap
 // the start merges parts the closing keeps apart.
 constexpr double kMaxStartOffsetPerGap = 0.4;
+// A Target Edge Length that leaves fewer vertices than this (on the target's box) is warned of.
+constexpr double kFewestVertices = 50;
 } // namespace
 
 double gapSizeFor(const WrapSettings& settings, const Box& targetBox)
@@ -56,23 +58,54 @@ double maxStartOffset(double gapSize)
   return kMaxStartOffsetPerGap * gapSize;
 }
 
+namespace
+{
+// Beyond the box scaled by GridPlacement::boxScale, o s on every side (s its longest side) must
+// hold the start's offset, the closing's radius and three cells of room: o s >= (offset + 3) h +
+// gap / 2, with h = s (1 + 2 o) / resolution; so o (1 - 2 c) >= c + gap / (2 s), c below.
+struct FieldRoom
+{
+  double side;  // s, target units
+  double cells; // c = (offset + 3) / resolution
+  double room() const { return 1 - 2 * this->cells; }
+};
+
+FieldRoom fieldRoom(const WrapSettings& settings, const Box& targetBox)
+{
+  return { GridPlacement().boxScale * targetBox.size().maxCoeff(),
+    (settings.start.offset + 3) / std::max(settings.resolution, 1) };
+}
+} // namespace
+
 GridPlacement fieldPlacement(
   const WrapSettings& settings, double gapSize, const Box& targetBox, bool givenStart)
 {
   GridPlacement placement;
   placement.resolution = settings.resolution;
   placement.offsetFactor = kPaperOffsetFactor;
-  // Beyond the box scaled by placement.boxScale, o s on every side (s its longest side) must hold
-  // the start's offset, the closing's radius and three cells of room: o s >= (offset + 3) h + gap /
-  // 2, with h = s (1 + 2 o) / resolution.
-  const double side = placement.boxScale * targetBox.size().maxCoeff();
-  const double cells = (settings.start.offset + 3) / std::max(settings.resolution, 1);
-  const double room = 1 - 2 * cells;
-  if (!givenStart && settings.start.shape == StartShape::OffsetSurface && side > 0 && room > 0)
+  const FieldRoom r = fieldRoom(settings, targetBox);
+  if (!givenStart && settings.start.shape == StartShape::OffsetSurface && r.side > 0 &&
+    r.room() > 0)
   {
-    placement.offsetFactor = std::min((cells + 0.5 * gapSize / side) / room, kPaperOffsetFactor);
+    placement.offsetFactor =
+      std::min((r.cells + 0.5 * gapSize / r.side) / r.room(), kPaperOffsetFactor);
   }
   return placement;
+}
+
+Status checkGapSize(const WrapSettings& settings, double gapSize, const Box& targetBox)
+{
+  const FieldRoom r = fieldRoom(settings, targetBox);
+  const double largest = 2 * r.side * (kPaperOffsetFactor * r.room() - r.cells);
+  if (gapSize > largest)
+  {
+    std::ostringstream message;
+    message << "Gap Size " << gapSize << " does not fit in the distance field around this target "
+            << "(at most " << largest << " here): lower it (0: automatic, "
+            << targetBox.diagonal() / WrapSettings::kGapDivisor << " here)";
+    return Status::failure(message.str());
+  }
+  return {};
 }
 
 namespace
@@ -152,6 +185,38 @@ Status checkEdgeLength(const WrapSettings& settings, double edgeLength, const Bo
     return Status::failure(message.str());
   }
   return {};
+}
+
+Notes sizeWarnings(double gapSize, const std::optional<double>& edgeLength, const Box& targetBox)
+{
+  Notes notes;
+  const double diagonal = targetBox.diagonal();
+  const double automatic = diagonal / WrapSettings::kLengthDivisor;
+  if (edgeLength)
+  {
+    // Equilateral triangles of edge L over the box's surface: more vertices than the wrap has.
+    const double vertices =
+      2 * 2 * targetBox.halfArea() / (std::sqrt(3.0) * *edgeLength * *edgeLength);
+    if (vertices < kFewestVertices)
+    {
+      std::ostringstream message;
+      message << "Target Edge Length " << *edgeLength << " leaves the wrap at most about "
+              << std::max(4.0, std::round(vertices)) << " vertices on this target (its diagonal is "
+              << diagonal << "): too coarse to follow it; lower it (0: automatic, " << automatic
+              << " here)";
+      warn(notes, message.str());
+    }
+  }
+  const double side = targetBox.size().maxCoeff();
+  if (gapSize > 0.5 * side)
+  {
+    std::ostringstream message;
+    message << "Gap Size " << gapSize << " is over half the target's longest side (" << side
+            << "): every gap and hole closes and the wrap is a blob around the whole target; "
+            << "lower it (0: automatic, " << diagonal / WrapSettings::kGapDivisor << " here)";
+    warn(notes, message.str());
+  }
+  return notes;
 }
 
 } // namespace shrinkwrap

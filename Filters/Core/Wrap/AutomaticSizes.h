@@ -6,6 +6,7 @@
 #define ShrinkWrap_AutomaticSizes_h
 
 #include "Common/Box.h"
+#include "Common/Notes.h"
 #include "Distance/GridLattice.h"
 #include "Wrap/PointCloud.h"
 #include "Wrap/WrapSettings.h"
@@ -35,8 +36,13 @@ GridPlacement fieldPlacement(
 WrapSettings withPointSizes(
   WrapSettings settings, const Box& box, const PointCloud& cloud, bool givenStart);
 
+// Why the Gap Size is too large for the field computed around the target, if it is.
+Status checkGapSize(const WrapSettings& settings, double gapSize, const Box& targetBox);
 // Why L would make too many vertices on a target of this box (at most kMaxVertices), if it would.
 Status checkEdgeLength(const WrapSettings& settings, double edgeLength, const Box& targetBox);
+// Warnings for sizes that make a wrap but a useless one: a Target Edge Length that leaves the wrap
+// a handful of vertices, a Gap Size that closes every gap of the target (over half its longest side).
+Notes sizeWarnings(double gapSize, const std::optional<double>& edgeLength, const Box& targetBox);
 
 // The offset start's farthest distance from the closed target, target units.
 double maxStartOffset(double gapSize);

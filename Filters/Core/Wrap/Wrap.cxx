@@ -59,6 +59,7 @@ Status makeTarget(TriangleSoup polygons, PointList points, WrapTarget& target)
 Status startWrap(const WrapTarget& target, const WrapPlan& plan, const Contour& contour,
   const Progress& progress, Notes& notes, std::unique_ptr<WrapSession>& session)
 {
+  notes.insert(notes.end(), plan.notes.begin(), plan.notes.end());
   WrapFields fields;
   Status status = makeWrapFields(target, plan, progress.stage(0, kFieldsShare), notes, fields);
   SurfaceMesh start;

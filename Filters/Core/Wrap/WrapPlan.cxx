@@ -69,6 +69,11 @@ Status planWrap(const WrapTarget& target, const WrapSettings& settings, WrapPlan
   {
     status = checkEdgeLength(plan.settings, *plan.edgeLength, box);
   }
+  if (status && !target.fieldLattice)
+  {
+    status = checkGapSize(plan.settings, plan.gapSize, box);
+  }
+  plan.notes = sizeWarnings(plan.gapSize, plan.edgeLength, box);
   return status ? placeField(target, plan) : status;
 }
 

@@ -5,6 +5,7 @@
 #define ShrinkWrap_WrapPlan_h
 
 #include "Common/Box.h"
+#include "Common/Notes.h"
 #include "Common/Status.h"
 #include "Common/TriangleSoup.h"
 #include "Distance/DistanceGrid.h"
@@ -47,6 +48,7 @@ struct WrapPlan
   bool computesField = true;        // false: the given field
   double gapSize = 0;               // target units
   std::optional<double> edgeLength; // L, target units; none with Remeshing off
+  Notes notes;                      // sizes that make a useless wrap (sizeWarnings)
 
   WrapSizes sizes() const { return { this->lattice.spacing.x(), this->gapSize, this->edgeLength }; }
   // The evolver's settings: settings.evolution, remeshing towards L (adaptive within the range).

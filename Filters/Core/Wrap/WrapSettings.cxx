@@ -16,7 +16,7 @@ bool positiveOrUnset(const std::optional<double>& size)
 Status WrapSettings::validate() const
 {
   if (!(this->evolution.timeStep > 0) || !std::isfinite(this->evolution.timeStep))
-    return Status::failure("Time Step must be positive");
+    return Status::failure("Time Per Step must be positive");
   if (this->start.subdivision < 0 || this->start.subdivision > 8)
     return Status::failure("Subdivision Level must be between 0 and 8");
   if (!positiveOrUnset(this->targetEdgeLength))

@@ -407,6 +407,7 @@ int TestFuzzFilters(int argc, char* argv[])
       wrap->SetSolverTolerance(1e-6);
       wrap->SetResolution(24);
       wrap->SetCacheMemoryMiB(512);
+      wrap->SetStartOffsetInCells(3);
       wrap->Update();
       SW_CHECK(wrap->GetOutput() && wrap->GetOutput()->GetNumberOfPoints() == 162 &&
           validWrap(wrap->GetOutput()),

@@ -167,14 +167,15 @@ int TestMeshSignedDistanceBadInput(int, char*[])
     [](vtkMeshSignedDistance* f) { f->SetResolution(0); });
   run("Resolution negative", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "Resolution",
     [](vtkMeshSignedDistance* f) { f->SetResolution(-10); });
-  run("CellSize negative", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "CellSize",
+  run("CellSize negative", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "Cell Size is -0.1: it must be at least 0",
     [](vtkMeshSignedDistance* f) { f->SetCellSize(-0.1); });
-  run("BoxScale zero", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "BoxScale",
+  run("BoxScale zero", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty, "Box Scale is 0: it must be from 1 to 10",
     [](vtkMeshSignedDistance* f) { f->SetBoxScale(0); });
   run("OffsetFactor negative", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
-    "OffsetFactor", [](vtkMeshSignedDistance* f) { f->SetOffsetFactor(-1); });
-  run("grid too large for memory", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
-    "would need", [](vtkMeshSignedDistance* f) { f->SetResolution(200000); });
+    "Offset Factor is -1: it must be from 0 to 10", [](vtkMeshSignedDistance* f) { f->SetOffsetFactor(-1); });
+  run("Resolution beyond the panel's range", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
+    "Resolution is 200000: it must be from 1 to 1024",
+    [](vtkMeshSignedDistance* f) { f->SetResolution(200000); });
   run("cell size too small for memory", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
     "would need", [](vtkMeshSignedDistance* f) { f->SetCellSize(1e-6); });
   run("explicit grid, inverted bounds", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
@@ -183,7 +184,7 @@ int TestMeshSignedDistanceBadInput(int, char*[])
       f->SetOutputBounds(1, -1, 0, 1, 0, 1);
     });
   run("explicit grid, one node", filter, mesh(kTetPoints, kTet), Expect::ErrorAndEmpty,
-    "dimensions", [](vtkMeshSignedDistance* f) {
+    "Output Dimensions is 1: it must be at least 2", [](vtkMeshSignedDistance* f) {
       f->UseExplicitGridOn();
       f->SetOutputBounds(-1, 1, -1, 1, -1, 1);
       f->SetOutputDimensions(1, 10, 10);

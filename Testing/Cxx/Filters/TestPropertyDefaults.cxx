@@ -1,7 +1,8 @@
 // The panel (Plugin/ShrinkWrap.xml, which ParaView pushes to a new filter, and whose documentation is
 // the parameter reference) against the filters: every settable property's default equals the
-// filter's own (which come from the core's settings structs), and its name, label and the unit its
-// documentation states are those the filter describes (DescribeProperties). A default, a label or a
+// filter's own (which come from the core's settings structs), and its name, label, the unit its
+// documentation states and the range its domain allows are those the filter describes and checks
+// (DescribeProperties, CheckProperties). A default, a label or a
 // unit changed in one place only would make the GUI and C++ or pvpython users read different
 // filters. The Python name is the label without spaces and punctuation (TestUserTerms.py).
 #include "TestUtilities.h"
@@ -15,6 +16,8 @@
 #include <functional>
 #include <map>
 #include <regex>
+#include <tuple>
+#include <utility>
 
 namespace
 {
@@ -58,7 +61,56 @@ std::map<std::string, std::vector<double>> xmlDefaults(
 struct XmlProperty
 {
   std::string name, label, command, documentation;
+  double min = -shrinkwrap::convert::kNoLimit, max = shrinkwrap::convert::kNoLimit; // the domain's
 };
+
+// The smallest and the largest of the numbers in `text` ("0.1 1" -> 0.1, 1).
+std::pair<double, double> extremes(const std::string& text)
+{
+  std::istringstream in(text);
+  std::pair<double, double> range{ shrinkwrap::convert::kNoLimit, -shrinkwrap::convert::kNoLimit };
+  for (double x; in >> x;)
+  {
+    range = { std::min(range.first, x), std::max(range.second, x) };
+  }
+  return range;
+}
+
+// The range the panel allows: a range domain's min and max (none: no limit), a switch 0 to 1, a
+// choice its first to last entry.
+void readRange(const std::string& body, XmlProperty& p)
+{
+  std::smatch m;
+  if (std::regex_search(body, m, std::regex(R"x(<(Int|Double)RangeDomain\b([^>]*)>)x")))
+  {
+    const std::string tag = m[2].str();
+    std::smatch v;
+    if (std::regex_search(tag, v, std::regex(R"x(min="([^"]*)")x")))
+    {
+      p.min = extremes(v[1].str()).first;
+    }
+    if (std::regex_search(tag, v, std::regex(R"x(max="([^"]*)")x")))
+    {
+      p.max = extremes(v[1].str()).second;
+    }
+  }
+  else if (body.find("<BooleanDomain") != std::string::npos)
+  {
+    p.min = 0;
+    p.max = 1;
+  }
+  else if (body.find("<EnumerationDomain") != std::string::npos)
+  {
+    const std::regex entry(R"x(<Entry value="(-?\d+)")x");
+    std::string values;
+    for (auto it = std::sregex_iterator(body.begin(), body.end(), entry);
+         it != std::sregex_iterator(); ++it)
+    {
+      values += (*it)[1].str() + " ";
+    }
+    std::tie(p.min, p.max) = extremes(values);
+  }
+}
 std::vector<XmlProperty> xmlProperties(const std::string& xml, const std::string& name)
 {
   std::vector<XmlProperty> found;
@@ -82,6 +134,7 @@ std::vector<XmlProperty> xmlProperties(const std::string& xml, const std::string
     {
       p.documentation = std::regex_replace(doc[1].str(), std::regex(R"(\s+)"), " ");
     }
+    readRange(body, p);
     if (p.command.rfind("Set", 0) == 0)
     {
       found.push_back(p);
@@ -112,6 +165,10 @@ void compareTerms(const std::string& proxy, const std::vector<XmlProperty>& xml,
       proxy << ": " << p.name << "'s label is '" << p.label << "', the filter's '" << d->label << "'");
     SW_CHECK(p.documentation.find(d->unit) != std::string::npos,
       proxy << ": " << p.name << "'s documentation states its unit, " << d->unit);
+    const double lowest = p.min, highest = p.max; // what the filter refuses is what the panel does
+    SW_CHECK(lowest == d->min && highest == d->max,
+      proxy << ": " << p.name << "'s panel range is " << lowest << " to " << highest
+            << ", the filter's " << d->min << " to " << d->max);
   }
 }
 

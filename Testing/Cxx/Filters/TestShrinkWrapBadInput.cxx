@@ -385,8 +385,13 @@ void absurdStepsAndTimes()
     wrap->UpdateInformation();
     const int n =
       wrap->GetOutputInformation(0)->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-    SW_CHECK(n == (steps < 0 ? 1 : vtkShrinkWrapFilter::kMaxSteps + 1),
-      "NumberOfSteps " << steps << ": " << n << " time steps advertised");
+    const Said said = whileSaying(wrap, [&] { wrap->Update(); });
+    SW_CHECK(n == 0 && said.errors == 1 &&
+        said.text.find("Number Of Steps is " + std::to_string(steps) + ": it must be from 0 to " +
+          std::to_string(vtkShrinkWrapFilter::kMaxSteps)) != std::string::npos &&
+        wrap->GetOutput()->GetNumberOfPoints() == 0,
+      "Number Of Steps " << steps << ": refused with the label and the range, no time steps ("
+                         << n << "), an empty output (" << said.text << ")");
   }
   wrap->SetNumberOfSteps(5);
   for (double t : { 5e7, 1e9, kInf, 1e300, kNaN })
@@ -403,35 +408,56 @@ void absurdStepsAndTimes()
   }
 }
 
-// Sizes that would make no wrap or an absurd one: a clear error, an empty output, and the pipeline
-// lives on.
+// Sizes that would make no wrap: a clear error naming the panel's label, an empty output, and the
+// pipeline lives on. Sizes that make a useless wrap: the wrap, and a warning saying why.
 void absurdSizes()
 {
   auto wrap = wrapOf(sphere());
   wrap->SetRemeshing(true);
   wrap->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
-  const std::pair<std::string, std::function<void()>> cases[] = {
-    { "Target Edge Length 1e-9", [&] { wrap->SetTargetEdgeLength(1e-9); } },
+  struct Case
+  {
+    std::string name;
+    std::function<void()> set;
+    std::string said; // expected in the message
+    bool wraps;       // a warning and a wrap, else an error and no wrap
+  };
+  const Case cases[] = {
+    { "Target Edge Length 1e-9", [&] { wrap->SetTargetEdgeLength(1e-9); },
+      "Target Edge Length 1e-09 would make about", false },
+    { "Target Edge Length -1", [&] { wrap->SetTargetEdgeLength(-1); },
+      "Target Edge Length is -1: it must be at least 0", false },
+    { "Target Edge Length 1e9", [&] { wrap->SetTargetEdgeLength(1e9); },
+      "Target Edge Length 1e+09 leaves the wrap at most about 4 vertices", true },
     { "Gap Size 1e6",
       [&] {
         wrap->SetTargetEdgeLength(0);
         wrap->SetGapSize(1e6);
-      } },
+      },
+      "Gap Size 1e+06 does not fit in the distance field", false },
+    { "Gap Size -1", [&] { wrap->SetGapSize(-1); }, "Gap Size is -1: it must be at least 0", false },
+    { "Gap Size 1.05", [&] { wrap->SetGapSize(1.05); },
+      "Gap Size 1.05 is over half the target's longest side", true },
     { "Edge Length Range 0 1",
       [&] {
         wrap->SetGapSize(0);
         wrap->SetEdgeLengthRange(0, 1);
-      } },
-    { "Edge Length Range 1 NaN", [&] { wrap->SetEdgeLengthRange(1, kNaN); } },
-    { "Edge Length Range 2 1", [&] { wrap->SetEdgeLengthRange(2, 1); } },
+      },
+      "Edge Length Range", false },
+    { "Edge Length Range 1 NaN", [&] { wrap->SetEdgeLengthRange(1, kNaN); }, "Edge Length Range",
+      false },
+    { "Edge Length Range 2 1", [&] { wrap->SetEdgeLengthRange(2, 1); }, "Edge Length Range",
+      false },
   };
   for (const auto& c : cases)
   {
-    c.second();
+    c.set();
     const Said said = whileSaying(wrap, [&] { wrap->Update(); });
-    std::cout << c.first << ": " << said.text.substr(said.text.find("): ") + 3) << std::endl;
-    SW_CHECK(said.errors > 0 && wrap->GetOutput()->GetNumberOfPoints() == 0,
-      c.first << ": an error, empty output");
+    std::cout << c.name << ": " << said.text << std::endl;
+    const bool wrapped = wrap->GetOutput()->GetNumberOfPoints() > 0;
+    SW_CHECK(said.text.find(c.said) != std::string::npos, c.name << ": says \"" << c.said << "\"");
+    SW_CHECK(c.wraps ? (said.errors == 0 && wrapped) : (said.errors > 0 && !wrapped),
+      c.name << (c.wraps ? ": a warning and a wrap" : ": an error, empty output"));
   }
   wrap->SetGapSize(0);
   wrap->SetEdgeLengthRange(1, 1);

@@ -22,10 +22,10 @@ namespace convert
 // No upper limit (a size in the target's units): the panel's range has no max.
 constexpr double kNoLimit = 1e30;
 
-// A property as the panel shows it: its name (the XML's, Python's and the C++ Set/Get's), its label,
-// the unit its documentation states ("" where it has none: a switch, a choice, a count), the range
-// the panel allows (every component of a pair or triple; a switch 0 to 1, a choice its first to
-// last entry), and what 0 means where it means something else than a size of 0.
+// A property as the panel shows it: its name (the XML's, Python's and the C++ Set/Get's), its
+// label, the unit its documentation states ("" where it has none: a switch, a choice, a count), the
+// range the panel allows (every component of a pair or triple; a switch 0 to 1, a choice its first
+// to last entry), and what 0 means where it means something else than a size of 0.
 struct PropertyInfo
 {
   const char* name;

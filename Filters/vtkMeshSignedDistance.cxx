@@ -4,6 +4,7 @@
 #include "Distance/SignedDistance.h"
 #include "Distance/SlabDistance.h"
 #include "FieldRun.h"
+#include "MeshSignedDistanceProperties.h"
 #include "PropertyBinding.h"
 #include "RankInputs.h"
 #include "SlabPieces.h"
@@ -42,44 +43,6 @@
 
 vtkStandardNewMacro(vtkMeshSignedDistance);
 
-namespace convert = shrinkwrap::convert;
-
-// The core's settings that the properties stand for.
-struct vtkMeshSignedDistance::FieldSettings
-{
-  shrinkwrap::GridPlacement placement;
-  shrinkwrap::SignedDistanceSettings distance;
-};
-
-// Every property beside the core setting it stands for (PropertyBinding.h).
-template <typename Filter, typename Settings, typename Bind>
-void vtkMeshSignedDistance::BindProperties(Filter& f, Settings& s, Bind&& bind)
-{
-  using P = convert::PropertyInfo;
-  bind(P{ "Resolution", "Resolution", "cells along the longest side", 1, 1024 }, f.Resolution,
-    s.placement.resolution);
-  bind(P{ "CellSize", "Cell Size", "in the input's units", 0, convert::kNoLimit, "Resolution sets it" }, f.CellSize, s.placement.cellSize);
-  bind(P{ "BoxScale", "Box Scale", "times the input's bounds", 1, 10 }, f.BoxScale, s.placement.boxScale);
-  bind(P{ "OffsetFactor", "Offset Factor", "times the largest side", 0, 10 }, f.OffsetFactor,
-    s.placement.offsetFactor);
-  bind(P{ "SweepMethod", "Sweep Method", "", CLOSEST_POINT, EIKONAL }, f.SweepMethod, s.distance.sweep);
-  bind(P{ "BandLayers", "Band Layers", "layers of nodes", 0, 16 }, f.BandLayers, s.distance.bandLayers);
-  bind(P{ "ComputeSign", "Compute Sign", "", 0, 1 }, f.ComputeSign, s.distance.computeSign);
-}
-
-namespace
-{
-// The properties that stand for no core setting.
-const convert::PropertyInfo kInputGeometry{ "InputGeometry", "Input Geometry", "",
-  vtkInputGeometry::AUTOMATIC, vtkInputGeometry::POLYGONS_AND_POINTS };
-const convert::PropertyInfo kUseExplicitGrid{ "UseExplicitGrid", "Use Explicit Grid", "", 0, 1 };
-const convert::PropertyInfo kOutputBounds{ "OutputBounds", "Output Bounds", "in the input's units",
-  -convert::kNoLimit, convert::kNoLimit };
-const convert::PropertyInfo kOutputDimensions{ "OutputDimensions", "Output Dimensions", "nodes", 2,
-  convert::kNoLimit };
-const convert::PropertyInfo kFieldPerBlock{ "FieldPerBlock", "Field Per Block", "", 0, 1 };
-}
-
 std::vector<convert::PropertyInfo> vtkMeshSignedDistance::DescribeProperties()
 {
   std::vector<convert::PropertyInfo> described{ kInputGeometry, kUseExplicitGrid, kOutputBounds,
@@ -103,8 +66,8 @@ shrinkwrap::Status vtkMeshSignedDistance::CheckProperties() const
     status = convert::checkProperty(kOutputDimensions, this->OutputDimensions);
   }
   const FieldSettings unused;
-  BindProperties(*this, unused,
-    [&](const convert::PropertyInfo& info, const auto& property, const auto&) {
+  BindProperties(
+    *this, unused, [&](const convert::PropertyInfo& info, const auto& property, const auto&) {
       if (status)
       {
         status = convert::checkProperty(info, property);
@@ -116,8 +79,8 @@ shrinkwrap::Status vtkMeshSignedDistance::CheckProperties() const
 vtkMeshSignedDistance::vtkMeshSignedDistance()
 {
   const FieldSettings defaults; // stated once, in the core's settings
-  BindProperties(*this, defaults,
-    [](const convert::PropertyInfo&, auto& property, const auto& setting) {
+  BindProperties(
+    *this, defaults, [](const convert::PropertyInfo&, auto& property, const auto& setting) {
       convert::assign(property, setting);
     });
   this->SetNumberOfInputPorts(1);
@@ -405,8 +368,8 @@ bool vtkMeshSignedDistance::ReadInput(vtkDataObject* data, shrinkwrap::TriangleS
 vtkMeshSignedDistance::FieldSettings vtkMeshSignedDistance::CoreSettings() const
 {
   FieldSettings settings;
-  BindProperties(*this, settings,
-    [](const convert::PropertyInfo&, const auto& property, auto& setting) {
+  BindProperties(
+    *this, settings, [](const convert::PropertyInfo&, const auto& property, auto& setting) {
       convert::assign(setting, property);
     });
   return settings;
@@ -457,7 +420,8 @@ void vtkMeshSignedDistance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   const auto print = convert::propertyPrinter(os, indent);
-  print(convert::PropertyInfo{ "InputGeometry", "", "" }, convert::geometryName(this->InputGeometry), 0);
+  print(convert::PropertyInfo{ "InputGeometry", "", "" },
+    convert::geometryName(this->InputGeometry), 0);
   print(convert::PropertyInfo{ "UseExplicitGrid", "", "" }, this->UseExplicitGrid, 0);
   print(convert::PropertyInfo{ "OutputBounds", "", "" }, this->OutputBounds, 0);
   print(convert::PropertyInfo{ "OutputDimensions", "", "" }, this->OutputDimensions, 0);

@@ -85,7 +85,8 @@ public:
   static vtkMeshSignedDistance* New();
   vtkTypeMacro(vtkMeshSignedDistance, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-  /// Every property as the panel shows it (name, label, unit, range): what the panel's XML must say.
+  /// Every property as the panel shows it (name, label, unit, range): what the panel's XML must
+  /// say.
   static std::vector<shrinkwrap::convert::PropertyInfo> DescribeProperties();
 
   enum SweepMethods

@@ -69,7 +69,8 @@ public:
   static vtkShrinkWrapFilter* New();
   vtkTypeMacro(vtkShrinkWrapFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-  /// Every property as the panel shows it (name, label, unit, range): what the panel's XML must say.
+  /// Every property as the panel shows it (name, label, unit, range): what the panel's XML must
+  /// say.
   static std::vector<shrinkwrap::convert::PropertyInfo> DescribeProperties();
 
   enum Redistributions
@@ -144,7 +145,8 @@ public:
   /// Default 0.015.
   vtkSetMacro(TimePerStep, double);
   vtkGetMacro(TimePerStep, double);
-  /// Smoothing C1 and Smoothing Falloff C2 of eps(d) = C1 (1 - exp(-d^2 / C2)), eq. (3). Defaults 1, 1.
+  /// Smoothing C1 and Smoothing Falloff C2 of eps(d) = C1 (1 - exp(-d^2 / C2)), eq. (3). Defaults
+  /// 1, 1.
   vtkSetMacro(Smoothing, double);
   vtkGetMacro(Smoothing, double);
   vtkSetMacro(SmoothingFalloff, double);
@@ -155,9 +157,9 @@ public:
   vtkGetMacro(AdvectionSpeed, double);
   vtkSetMacro(ConcavityPush, double);
   vtkGetMacro(ConcavityPush, double);
-  /// Tangential redistribution (Section 2.3): NONE, ANGLE (default) or VOLUME, with the Angle Weight
-  /// omega_angle (0.5), the Volume Weight omega_vol (1), and, with DistanceWeighting (off), rho(d) =
-  /// A (1 - exp(-d^2)) of eq. (10), A the Distance Weight Amplitude (1).
+  /// Tangential redistribution (Section 2.3): NONE, ANGLE (default) or VOLUME, with the Angle
+  /// Weight omega_angle (0.5), the Volume Weight omega_vol (1), and, with DistanceWeighting (off),
+  /// rho(d) = A (1 - exp(-d^2)) of eq. (10), A the Distance Weight Amplitude (1).
   vtkSetMacro(TangentialRedistribution, int);
   vtkGetMacro(TangentialRedistribution, int);
   vtkSetMacro(AngleWeight, double);

@@ -35,7 +35,8 @@ int main(int argc, char* argv[])
   writer->SetInputData(surface);
   writer->SetFileName(argv[2]);
   writer->Write();
-  auto* summary = vtkStringArray::SafeDownCast(surface->GetFieldData()->GetAbstractArray("Summary"));
+  auto* summary =
+    vtkStringArray::SafeDownCast(surface->GetFieldData()->GetAbstractArray("Summary"));
   std::cout << "wrote " << argv[2] << ": " << (summary ? summary->GetValue(0) : "no wrap") << "\n";
 
   if (argc > 3)

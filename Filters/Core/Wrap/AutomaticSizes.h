@@ -41,7 +41,8 @@ Status checkGapSize(const WrapSettings& settings, double gapSize, const Box& tar
 // Why L would make too many vertices on a target of this box (at most kMaxVertices), if it would.
 Status checkEdgeLength(const WrapSettings& settings, double edgeLength, const Box& targetBox);
 // Warnings for sizes that make a wrap but a useless one: a Target Edge Length that leaves the wrap
-// a handful of vertices, a Gap Size that closes every gap of the target (over half its longest side).
+// a handful of vertices, a Gap Size that closes every gap of the target (over half its longest
+// side).
 Notes sizeWarnings(double gapSize, const std::optional<double>& edgeLength, const Box& targetBox);
 
 // The offset start's farthest distance from the closed target, target units.

@@ -390,8 +390,8 @@ void absurdStepsAndTimes()
         said.text.find("Number Of Steps is " + std::to_string(steps) + ": it must be from 0 to " +
           std::to_string(vtkShrinkWrapFilter::kMaxSteps)) != std::string::npos &&
         wrap->GetOutput()->GetNumberOfPoints() == 0,
-      "Number Of Steps " << steps << ": refused with the label and the range, no time steps ("
-                         << n << "), an empty output (" << said.text << ")");
+      "Number Of Steps " << steps << ": refused with the label and the range, no time steps (" << n
+                         << "), an empty output (" << said.text << ")");
   }
   wrap->SetNumberOfSteps(5);
   for (double t : { 5e7, 1e9, kInf, 1e300, kNaN })
@@ -435,7 +435,8 @@ void absurdSizes()
         wrap->SetGapSize(1e6);
       },
       "Gap Size 1e+06 does not fit in the distance field", false },
-    { "Gap Size -1", [&] { wrap->SetGapSize(-1); }, "Gap Size is -1: it must be at least 0", false },
+    { "Gap Size -1", [&] { wrap->SetGapSize(-1); }, "Gap Size is -1: it must be at least 0",
+      false },
     { "Gap Size 1.05", [&] { wrap->SetGapSize(1.05); },
       "Gap Size 1.05 is over half the target's longest side", true },
     { "Edge Length Range 0 1",

@@ -17,7 +17,11 @@ Status checkRange(const PropertyInfo& info, double value)
   std::ostringstream s;
   s.precision(12);
   s << info.label << " is " << value << ": it must be ";
-  if (info.max >= kNoLimit)
+  if (info.max >= kNoLimit && info.min <= -kNoLimit)
+  {
+    s << "a finite number";
+  }
+  else if (info.max >= kNoLimit)
   {
     s << "at least " << info.min;
   }

@@ -389,8 +389,12 @@ vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name
 
 TriangleSoup contour(const DistanceGrid& grid, double value)
 {
+  // Flying Edges writes float points: it contours the grid moved to the origin, and the points
+  // move back in double, so that a target far from the origin keeps its cells' precision.
+  vtkSmartPointer<vtkImageData> image = imageOf(grid, "d");
+  image->SetOrigin(0, 0, 0);
   vtkNew<vtkFlyingEdges3D> contour;
-  contour->SetInputData(imageOf(grid, "d"));
+  contour->SetInputData(image);
   contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "d");
   contour->SetValue(0, value);
   contour->ComputeNormalsOff();
@@ -399,6 +403,10 @@ TriangleSoup contour(const DistanceGrid& grid, double value)
   contour->Update();
   TriangleSoup surface;
   surfaceOf(contour->GetOutput(), surface);
+  for (Vec3& p : surface.points)
+  {
+    p += grid.lattice().origin;
+  }
   return surface;
 }
 

@@ -42,6 +42,7 @@ Status writeWrap(const WrapSession& session, int wanted, double timeStep, double
   // The wrap must not pass through itself; if it does at this step, the cells say where.
   const SelfIntersections crossings = findSelfIntersections(surface.points, mesh.triangles());
   addSelfIntersections(crossings, output);
+  const WrapSummary summary = summarize(output, session.plan().sizes(), surface.step, seconds);
   std::string status = "ok";
   if (session.lastGood() >= 0 && wanted > session.lastGood())
   {
@@ -54,14 +55,48 @@ Status writeWrap(const WrapSession& session, int wanted, double timeStep, double
       "The surface of step " + std::to_string(surface.step) + " passes through itself (" +
         std::to_string(crossings.pairs) + " triangle pairs cross; cell array SelfIntersecting)");
   }
+  else if (surface.step == session.plan().settings.steps &&
+    !landed(summary, session.meanMotion(surface.step)))
+  {
+    const std::string why = notLanded(summary, session.meanMotion(surface.step));
+    status = "not landed: " + why;
+    if (finished)
+    {
+      warn(notes,
+        "The wrap has not landed on the target after its " + std::to_string(surface.step) +
+          " steps: " + why +
+          "; raise Number Of Steps, or lower Time Per Step or Advection Speed if it overshoots");
+    }
+  }
   addStepFields(surface.step, surface.step * timeStep, status, output);
-  const WrapSummary summary = summarize(output, session.plan().sizes(), surface.step, seconds);
   addSummary(summary, output);
   if (finished)
   {
     inform(notes, summary.text());
   }
   return {};
+}
+
+bool landed(const WrapSummary& summary, const std::optional<double>& motion)
+{
+  const double cell = summary.sizes.cell;
+  return (motion && *motion < kStillCells) ||
+    (summary.vertices > 0 && cell > 0 && summary.distance[1] <= kLandedCells * cell);
+}
+
+std::string notLanded(const WrapSummary& summary, const std::optional<double>& motion)
+{
+  char text[200];
+  std::snprintf(text, sizeof text,
+    "95%% of its vertices lie within %.3g cells of the target, not within %.3g",
+    summary.distance[1] / summary.sizes.cell, kLandedCells);
+  std::string why = text;
+  if (motion)
+  {
+    std::snprintf(text, sizeof text, ", and its last step still moved it by %.2g cells", *motion);
+    why += text;
+  }
+  return why;
 }
 
 namespace

@@ -11,6 +11,7 @@
 #include "Wrap/WrapSession.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,15 @@ struct WrapSummary
   std::string text() const; // one line: what the output messages show at the end of a run
 };
 WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, double seconds);
+// A wrap has landed when 95% of its vertices lie within kLandedCells cells of the field of the
+// target, or when its last step moved it by under kStillCells cells on average (a membrane over a
+// concavity, a surface between sparse points: where it rests); `motion` from
+// WrapSession::meanMotion (none: not known, judged by the distances alone). The last step of one
+// that has not is reported ("not landed: ..." and a warning).
+constexpr double kLandedCells = 1.5;
+constexpr double kStillCells = 0.02;
+bool landed(const WrapSummary& summary, const std::optional<double>& motion);
+std::string notLanded(const WrapSummary& summary, const std::optional<double>& motion); // why not
 // As field data: DistancePercentiles, DistancePercentilesInCells (3 each), FieldCellSize, GapSize,
 // TargetEdgeLength, SmallAngleShare, ComputeSeconds, Summary (the text).
 void addSummary(const WrapSummary& summary, vtkPolyData* output);

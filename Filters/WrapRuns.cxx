@@ -232,7 +232,7 @@ const WrapPlan* WrapRuns::plan(vtkDataObject* data, const std::optional<GridLatt
 }
 
 bool WrapRuns::start(Run& run, const WrapInputs& inputs, vtkMTimeType key, int inputGeometry,
-  const WrapSettings& settings, Notes& notes, Status& status)
+  const WrapSettings& settings, const Progress& progress, Notes& notes, Status& status)
 {
   run = Run();
   if (!inputs.target)
@@ -253,7 +253,7 @@ bool WrapRuns::start(Run& run, const WrapInputs& inputs, vtkMTimeType key, int i
   }
   if (status)
   {
-    status = startWrap(target, *plan, contour, Progress(), notes, run.session);
+    status = startWrap(target, *plan, contour, progress, notes, run.session);
   }
   run.key = status ? key : 0;
   return status.ok();

@@ -89,9 +89,10 @@ public:
   const Notes& targetNotes() const { return this->Converted.notes; }
 
   // Starts `run` on `inputs` (Wrap.h: the plan, then its fields, start and session); false, with
-  // `status`, when it cannot. Notes: what the user should know.
+  // `status`, when it cannot ("aborted" when `progress` asked to stop). Notes: what the user
+  // should know.
   bool start(Run& run, const WrapInputs& inputs, vtkMTimeType key, int inputGeometry,
-    const WrapSettings& settings, Notes& notes, Status& status);
+    const WrapSettings& settings, const Progress& progress, Notes& notes, Status& status);
 
   // The piece that wraps each block, as `share()` gives it, made once per key and piece count.
   template <typename Share>

@@ -319,16 +319,25 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
   convert::WrapRuns::Run& run = this->Runs->run(slot);
   const auto begin = std::chrono::steady_clock::now();
   Notes notes;
+  // A run started here reports its setup as the first part of the progress, its steps the rest.
+  double stepsFrom = 0;
   if (!run.session || run.key != key)
   {
     Status status;
     bool started = false;
+    stepsFrom = kSetupShare;
     onAllCores([&] {
-      started = this->Runs->start(
-        run, inputs, key, this->InputGeometry, this->CoreSettings(), notes, status);
+      started = this->Runs->start(run, inputs, key, this->InputGeometry, this->CoreSettings(),
+        this->ProgressOf(0, stepsFrom), notes, status);
     });
     convert::report(this, "Shrink Wrap", notes);
     notes.clear();
+    if (!started && this->GetAbortExecute())
+    {
+      this->AbortExecute = 0; // honoured, as an abort during the steps (Advance)
+      vtkWarningMacro("Shrink Wrap was aborted while it set up; the output is empty.");
+      return;
+    }
     if (!started)
     {
       vtkErrorMacro("Cannot wrap: " << status.message() << ".");
@@ -337,7 +346,7 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
   }
   const int wanted = convert::stepAsked(outInfo, this->NumberOfSteps, this->TimePerStep);
   const int computed = run.session->computedSteps();
-  const bool advanced = this->Advance(*run.session, wanted);
+  const bool advanced = this->Advance(*run.session, wanted, stepsFrom);
   run.seconds += secondsSince(begin);
   // The end of a run: the last step, computed now.
   const bool finished = wanted == this->NumberOfSteps && run.session->computedSteps() > computed;
@@ -364,7 +373,7 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
 }
 
 // Computes the missing steps up to `step`; false when the run was aborted.
-bool vtkShrinkWrapFilter::Advance(WrapSession& session, int step)
+bool vtkShrinkWrapFilter::Advance(WrapSession& session, int step, double progressFrom)
 {
   if (this->NumberOfSteps == 0)
   {
@@ -372,7 +381,7 @@ bool vtkShrinkWrapFilter::Advance(WrapSession& session, int step)
   }
   const int computed = session.computedSteps();
   bool finished = false;
-  onAllCores([&] { finished = session.advanceTo(step, this->ProgressOf(0, 1)); });
+  onAllCores([&] { finished = session.advanceTo(step, this->ProgressOf(progressFrom, 1)); });
   // An abort ends this run: the empty output stands until a property, an input or the time asked
   // for changes (then the run resumes from the cache, or starts over).
   if (!finished)

@@ -110,6 +110,8 @@ public:
   vtkGetMacro(GapSize, double);
   /// Number Of Steps: evolution steps N_t, at most kMaxSteps. Default 25.
   static constexpr int kMaxSteps = 10000;
+  /// The share of the progress a run's setup (its fields and start) reports before its steps.
+  static constexpr double kSetupShare = 0.3;
   vtkSetMacro(NumberOfSteps, int);
   vtkGetMacro(NumberOfSteps, int);
 
@@ -315,7 +317,8 @@ private:
     vtkInformation* outInfo, vtkPolyData* output);
   void ShowSizes(const shrinkwrap::WrapSizes& sizes);
   shrinkwrap::Progress ProgressOf(double begin, double end);
-  bool Advance(shrinkwrap::WrapSession& session, int step);
+  // progressFrom: where the steps' progress begins (after a setup's, kSetupShare).
+  bool Advance(shrinkwrap::WrapSession& session, int step, double progressFrom);
 };
 
 #endif

@@ -154,4 +154,56 @@ algorithm.RemoveObserver(tag)
 aborting.Resolution = 20
 check(fetched(aborting).GetNumberOfPoints() == 21 ** 3, "after a change it computes again")
 
+# Every numeric property of both panels, set to NaN, +inf or past its range as a script can set it:
+# an error naming the panel's label and its range, an empty output, no time advertised; the
+# default again wraps.
+def numeric_properties(proxy):
+    """(name, label, minimum, maximum) of every settable number the panel shows with a range."""
+    found = []
+    for name in proxy.ListProperties():
+        prop = proxy.GetProperty(name)
+        smp = prop.SMProperty
+        if smp.GetInformationOnly() or not smp.IsA("vtkSMVectorProperty") or smp.IsA("vtkSMStringVectorProperty"):
+            continue
+        domain = smp.FindDomain("vtkSMBoundsDomain") or smp.FindDomain("vtkSMDoubleRangeDomain") or \
+            smp.FindDomain("vtkSMIntRangeDomain")
+        if domain is None or not (domain.IsA("vtkSMDoubleRangeDomain") or domain.IsA("vtkSMIntRangeDomain")):
+            continue
+        limited = domain.GetMaximumExists(0) and not domain.IsA("vtkSMBoundsDomain")  # bounds: the data's
+        found.append((name, smp.GetXMLLabel(), smp.IsA("vtkSMDoubleVectorProperty"),
+                      domain.GetMaximum(0) if limited else None))
+    return found
+
+
+sphere_target = Sphere(ThetaResolution=16, PhiResolution=16)
+panels = {"Shrink Wrap": ShrinkWrap(Input=sphere_target, NumberOfSteps=3, Resolution=48),
+          "Mesh Signed Distance": MeshSignedDistance(Input=sphere_target, Resolution=24)}
+for panel, proxy in panels.items():
+    described = numeric_properties(proxy)
+    check(len(described) >= (20 if panel == "Shrink Wrap" else 4),
+          "%s: %d numeric properties with a range" % (panel, len(described)))
+    for name, label, is_double, maximum in described:
+        kept = list(proxy.GetProperty(name))
+        explicit = name in ("OutputBounds", "OutputDimensions")  # read with Use Explicit Grid only
+        if explicit:
+            proxy.UseExplicitGrid = 1
+        values = [math.nan, math.inf, -math.inf] if is_double else []
+        if maximum is not None and maximum < 1e29:
+            values.append(maximum * 1000 + 1 if is_double else int(maximum) * 1000 + 1)
+        for value in values:
+            proxy.GetProperty(name).SetData([value] * len(kept))
+            said = messages_of(proxy, lambda: proxy.UpdatePipeline())
+            proxy.UpdatePipelineInformation()
+            times = list(getattr(proxy, "TimestepValues", []) or [])
+            points = proxy.GetDataInformation().GetNumberOfPoints()
+            check("%s is " % label in said and "it must be" in said and points == 0 and
+                  not [t for t in times if not math.isfinite(t)],
+                  "%s: %s = %g refused (%s), empty output, %d times advertised"
+                  % (panel, label, value, said[said.find(label):].split("\n")[0], len(times)))
+        proxy.GetProperty(name).SetData(kept)
+        if explicit:
+            proxy.UseExplicitGrid = 0
+    said = messages_of(proxy, lambda: proxy.UpdatePipeline())
+    check(proxy.GetDataInformation().GetNumberOfPoints() > 0, "%s: the defaults again give an output" % panel)
+
 finish()

@@ -17,13 +17,16 @@ def finish():
     sys.exit(1 if _failures else 0)
 
 
-def abort_at(algorithm, event):
-    """Aborts the algorithm at its event-th progress event, once; returns the observer's tag."""
+def abort_at(algorithm, event, after=0.0):
+    """Aborts the algorithm at its event-th progress event, counting those at a progress of `after` or
+    more (Shrink Wrap's steps come after its setup, from 0.3), once; returns the observer's tag."""
     seen = [0]
 
     def on_progress(caller, _):
-        seen[0] += 1
+        if caller.GetProgress() >= after:
+            seen[0] += 1
         if seen[0] == event:
+            seen[0] += 1
             caller.AbortExecuteOn()
 
     return algorithm.AddObserver("ProgressEvent", on_progress)

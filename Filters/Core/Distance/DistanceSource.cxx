@@ -5,6 +5,7 @@
 #include "Distance/ConsistentOrientation.h"
 #include "Distance/Outline.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace shrinkwrap
@@ -15,6 +16,7 @@ namespace
 TriangleSoup weldedAndOriented(const TriangleSoup& soup, long long& reoriented)
 {
   TriangleSoup welded = weldDuplicatePoints(soup);
+  dropRepeatedTriangles(welded);
   reoriented = orientConsistently(welded);
   return welded;
 }
@@ -44,6 +46,31 @@ SourcePoint nearestOf(const ClosestHit& hit)
     p.element = hit.triangle;
   }
   return p;
+}
+
+bool TriangleSource::facesInward(const DistanceGrid& field) const
+{
+  constexpr int kVotes = 4000;
+  const int n = static_cast<int>(this->Soup.triangles.size());
+  const int stride = std::max(1, n / kVotes);
+  const double h = field.lattice().spacing.maxCoeff();
+  long long outward = 0, inward = 0;
+  for (int t = 0; t < n; t += stride)
+  {
+    const Vec3 normal = unitNormal(this->Soup, t);
+    if (normal.isZero())
+    {
+      continue;
+    }
+    const auto& c = this->Soup.triangles[t];
+    const Vec3 centre =
+      (this->Soup.points[c[0]] + this->Soup.points[c[1]] + this->Soup.points[c[2]]) / 3;
+    const double ahead = field.sample(centre + h * normal).value;
+    const double behind = field.sample(centre - h * normal).value;
+    outward += ahead > behind;
+    inward += ahead < behind;
+  }
+  return inward > outward;
 }
 
 SourcePoint TriangleSource::closestPoint(const Vec3& x, double maxSquaredDistance) const

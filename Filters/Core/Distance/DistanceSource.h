@@ -11,6 +11,7 @@
 #include "Common/Progress.h"
 #include "Common/TriangleSoup.h"
 #include "Distance/AABBTree.h"
+#include "Distance/DistanceGrid.h"
 #include "Distance/GridLattice.h"
 #include "Distance/PseudoNormals.h"
 #include "Distance/WindingNumber.h"
@@ -97,6 +98,9 @@ public:
   const std::vector<char>& sidesConfirmed() const override;
   // Edges of one triangle (welded), and edges of two whose normals differ by more than creaseAngle.
   std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override;
+  // Whether the triangles face into what `field` signs inside: a vote, over up to a few thousand
+  // triangles, of the field's side one cell along each normal against one cell against it.
+  bool facesInward(const DistanceGrid& field) const;
 
 private:
   const WindingNumber& winding() const;

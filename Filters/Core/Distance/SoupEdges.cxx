@@ -39,6 +39,46 @@ TriangleSoup weldDuplicatePoints(const TriangleSoup& soup)
   return welded;
 }
 
+long long dropRepeatedTriangles(TriangleSoup& welded)
+{
+  const int n = static_cast<int>(welded.triangles.size());
+  auto cornersOf = [&](int t) {
+    std::array<int, 3> c = welded.triangles[t];
+    std::sort(c.begin(), c.end());
+    return c;
+  };
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(
+    order.begin(), order.end(), [&](int a, int b) { return cornersOf(a) < cornersOf(b); });
+  std::vector<char> repeated(n, 0);
+  long long dropped = 0;
+  for (int k = 1; k < n; ++k)
+  {
+    const std::array<int, 3> c = cornersOf(order[k]);
+    // Only proper triangles: a segment's repeats mean nothing of sides.
+    if (c[0] != c[1] && c[1] != c[2] && c == cornersOf(order[k - 1]))
+    {
+      repeated[order[k]] = 1;
+      ++dropped;
+    }
+  }
+  if (dropped > 0)
+  {
+    std::vector<std::array<int, 3>> kept;
+    kept.reserve(n - dropped);
+    for (int t = 0; t < n; ++t)
+    {
+      if (!repeated[t])
+      {
+        kept.push_back(welded.triangles[t]);
+      }
+    }
+    welded.triangles.swap(kept);
+  }
+  return dropped;
+}
+
 Vec3 unitNormal(const TriangleSoup& soup, int triangle)
 {
   const auto& tri = soup.triangles[triangle];

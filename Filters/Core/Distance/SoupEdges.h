@@ -15,6 +15,9 @@ namespace shrinkwrap
 // Merge points with bit-identical coordinates. The result is the same surface; only the indices
 // change (a triangle that then repeats an index is kept: as a segment it still has distances).
 TriangleSoup weldDuplicatePoints(const TriangleSoup& soup);
+// Drops every triangle whose three point ids an earlier one has, in either orientation: the back
+// faces of a double-sided mesh, whose winding numbers would cancel the front's. Returns how many.
+long long dropRepeatedTriangles(TriangleSoup& welded);
 
 // A triangle's unit normal, or zero where it is too thin for its normal to mean anything (a needle
 // or a cap, as the slivers at a parametric surface's seams: their cross product is rounding noise).

@@ -41,8 +41,9 @@ DistanceSample TargetDistance::sample(const Vec3& x) const
   }
   else if (this->Signed)
   {
+    const double side = this->Inward ? -p.side : p.side;
     sign = std::abs(far.value) > 0.5 * this->Cell ? (far.value < 0 ? -1.0 : 1.0)
-                                                  : (p.side < 0 ? -1.0 : 1.0);
+                                                  : (side < 0 ? -1.0 : 1.0);
   }
   DistanceSample near;
   near.value = sign * distance;

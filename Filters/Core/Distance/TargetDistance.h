@@ -29,6 +29,9 @@ public:
   DistanceSample sample(const Vec3& x) const;
   // The target itself, where the near field is exact (else null).
   const DistanceSource* exact() const { return this->Exact.get(); }
+  // The target's triangles face inwards (TriangleSource::facesInward): the near field takes the
+  // side opposite their pseudonormals, as the grid's sign does.
+  void setFacesInward(bool inward) { this->Inward = inward; }
 
 private:
   DistanceGrid Grid;
@@ -36,6 +39,7 @@ private:
   double Band = 0; // in the field's units
   double Cell = 1;
   bool Signed = true;
+  bool Inward = false;
 };
 
 } // namespace shrinkwrap

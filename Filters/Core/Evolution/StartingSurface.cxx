@@ -10,6 +10,7 @@
 #include "Surface/SurfaceGeometry.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace shrinkwrap
 {
@@ -112,12 +113,78 @@ Status orientOutwards(SurfaceMesh& mesh)
   return SurfaceMesh::build(points, flipped, mesh);
 }
 
-Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSoup* given,
-  const StartSettings& settings, const FlipSettings& flips, const Contour& contour,
-  SurfaceMesh& mesh, int& specks)
+namespace
+{
+const char* const kAborted = "aborted";
+
+// The offset start coarsened towards `last` in stages from two cells, the length doubling: a
+// contour coarsened at once to several cells crosses itself where its walls lie a few cells apart,
+// and each redo with guards costs three times the collapses. False when progress asked to stop.
+bool coarsenStart(SurfaceMesh& mesh, double h, double last, const Progress& progress)
+{
+  // The evolution's thresholds. Collapses chain over a dozen passes here, so the ones behind a
+  // crossing lie farther from it than a step's do.
+  const RemeshSettings remeshing;
+  const double first = 2 * h > 0 ? std::min(2 * h, last) : last;
+  const int stages = 1 + static_cast<int>(std::ceil(std::log2(std::max(last / first, 1.0))));
+  int stage = 0;
+  for (double length = first;; length = std::min(2 * length, last))
+  {
+    editCheckedOnce(
+      mesh, 4 * length, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
+        CollapseSettings collapses;
+        collapses.avoidCrossings = guarded;
+        collapses.orientDegenerate = true;
+        collapses.guardOnlyIn = only;
+        return collapseShortEdges(
+                 m, remeshing.collapseBelow * length, remeshing.splitAbove * length, collapses) > 0;
+      });
+    if (!progress.report(static_cast<double>(++stage) / stages))
+    {
+      return false;
+    }
+    if (length >= last)
+    {
+      return true;
+    }
+  }
+}
+
+// A contour's slivers would fail the first step (the icosphere needs no relaxation). Where two
+// parts of a contour nearly touch, relaxing can make them cross: then fewer iterations, down to
+// none (a contour never crosses itself; a given surface is taken as it is). False when progress
+// asked to stop.
+bool relaxStart(
+  SurfaceMesh& mesh, int relaxation, const FlipSettings& flips, const Progress& progress)
+{
+  const long long crossing = findSelfIntersections(mesh.points(), mesh.triangles()).pairs;
+  RelaxSettings relax;
+  relax.flips = flips;
+  relax.flips.avoidCrossings = false; // the relaxed surface as a whole is checked below
+  for (int iterations = relaxation; iterations > 0; iterations /= 2)
+  {
+    SurfaceMesh relaxed = mesh;
+    relax.iterations = iterations;
+    relaxTangentially(relaxed, relax);
+    if (findSelfIntersections(relaxed.points(), relaxed.triangles()).pairs <= crossing)
+    {
+      mesh = std::move(relaxed);
+      break;
+    }
+    if (!progress.report(1 - static_cast<double>(iterations) / (2 * relaxation)))
+    {
+      return false;
+    }
+  }
+  return progress.report(1);
+}
+
+// The start's triangles before they are a mesh: the given surface, the offset surface of the
+// field, or the icosphere around the box.
+Status startSoup(const DistanceGrid& field, const Box& targetBox, const TriangleSoup* given,
+  const StartSettings& settings, const Contour& contour, TriangleSoup& start)
 {
   const double h = field.lattice().spacing.maxCoeff();
-  TriangleSoup start;
   if (given)
   {
     start = *given;
@@ -136,6 +203,20 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   {
     start = icosphere(settings.subdivision, targetBox.center(), 0.5 * 1.05 * targetBox.diagonal());
   }
+  return {};
+}
+} // namespace
+
+Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSoup* given,
+  const StartSettings& settings, const FlipSettings& flips, const Contour& contour,
+  SurfaceMesh& mesh, int& specks, const Progress& progress)
+{
+  const double h = field.lattice().spacing.maxCoeff();
+  TriangleSoup start;
+  if (Status made = startSoup(field, targetBox, given, settings, contour, start); !made)
+  {
+    return made;
+  }
   specks = removeSpecks(start, kSpeckCells * h);
   Status status = SurfaceMesh::build(start.points, start.triangles, mesh);
   if (status)
@@ -146,52 +227,19 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   {
     return Status::failure("the starting surface cannot evolve: " + status.message());
   }
-  if (!given && settings.shape == StartShape::OffsetSurface && settings.coarsenTo)
+  if (!progress.report(0.2))
   {
-    // The evolution's thresholds. Collapses chain over a dozen passes here, so the ones behind a
-    // crossing lie farther from it than a step's do. In stages from two cells, the length doubling:
-    // a contour coarsened at once to several cells crosses itself where its walls lie a few cells
-    // apart, and each redo with guards costs three times the collapses.
-    const RemeshSettings remeshing;
-    const double last = *settings.coarsenTo;
-    const double first = 2 * h > 0 ? std::min(2 * h, last) : last;
-    for (double length = first;; length = std::min(2 * length, last))
-    {
-      editCheckedOnce(
-        mesh, 4 * length, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
-          CollapseSettings collapses;
-          collapses.avoidCrossings = guarded;
-          collapses.orientDegenerate = true;
-          collapses.guardOnlyIn = only;
-          return collapseShortEdges(m, remeshing.collapseBelow * length,
-                   remeshing.splitAbove * length, collapses) > 0;
-        });
-      if (length >= last)
-      {
-        break;
-      }
-    }
+    return Status::failure(kAborted);
   }
-  // A contour's slivers would fail the first step (the icosphere needs no relaxation). Where two
-  // parts of a contour nearly touch, relaxing can make them cross: then fewer iterations, down to
-  // none (a contour never crosses itself; a given surface is taken as it is).
-  if (settings.shape != StartShape::Icosphere || given)
+  const bool coarsens = !given && settings.shape == StartShape::OffsetSurface && settings.coarsenTo;
+  if (coarsens && !coarsenStart(mesh, h, *settings.coarsenTo, progress.stage(0.2, 0.7)))
   {
-    const long long crossing = findSelfIntersections(mesh.points(), mesh.triangles()).pairs;
-    RelaxSettings relax;
-    relax.flips = flips;
-    relax.flips.avoidCrossings = false; // the relaxed surface as a whole is checked below
-    for (int iterations = settings.relaxation; iterations > 0; iterations /= 2)
-    {
-      SurfaceMesh relaxed = mesh;
-      relax.iterations = iterations;
-      relaxTangentially(relaxed, relax);
-      if (findSelfIntersections(relaxed.points(), relaxed.triangles()).pairs <= crossing)
-      {
-        mesh = std::move(relaxed);
-        break;
-      }
-    }
+    return Status::failure(kAborted);
+  }
+  const bool relaxes = settings.shape != StartShape::Icosphere || given;
+  if (relaxes && !relaxStart(mesh, settings.relaxation, flips, progress.stage(0.7, 1)))
+  {
+    return Status::failure(kAborted);
   }
   return {};
 }

@@ -4,6 +4,7 @@
 #ifndef ShrinkWrap_StartingSurface_h
 #define ShrinkWrap_StartingSurface_h
 
+#include "Common/Progress.h"
 #include "Common/Status.h"
 #include "Common/TriangleSoup.h"
 #include "Distance/ContourTopology.h"
@@ -52,10 +53,10 @@ Status orientOutwards(SurfaceMesh& mesh);
 // The starting surface, ready to evolve: `given` if not null, else the shape of `settings` (the
 // icosphere around `targetBox`, or the offset surface of `field`, which should be the closing's);
 // specks smaller than two cells of the field removed (counted in `specks`), outward oriented, and a
-// contour or a given surface relaxed with `flips`.
+// contour or a given surface relaxed with `flips`. Fails "aborted" when `progress` asks to stop.
 Status startingSurface(const DistanceGrid& field, const Box& targetBox, const TriangleSoup* given,
   const StartSettings& settings, const FlipSettings& flips, const Contour& contour,
-  SurfaceMesh& mesh, int& specks);
+  SurfaceMesh& mesh, int& specks, const Progress& progress = Progress());
 
 } // namespace shrinkwrap
 

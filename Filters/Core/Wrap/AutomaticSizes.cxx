@@ -34,6 +34,8 @@ constexpr double kNoisyPointLengthDivisor = 30;
 // The offset start's farthest distance from the closed target, in Gap Sizes: beyond half the gap
 // the start merges parts the closing keeps apart.
 constexpr double kMaxStartOffsetPerGap = 0.4;
+// The shortest edge, in cells of the field, that the evolution's steps can carry.
+constexpr double kShortestEdgeInCells = 0.45;
 // A Target Edge Length that leaves fewer vertices than this (on the target's box) is warned of.
 constexpr double kFewestVertices = 50;
 } // namespace
@@ -97,15 +99,27 @@ Status checkGapSize(const WrapSettings& settings, double gapSize, const Box& tar
 {
   const FieldRoom r = fieldRoom(settings, targetBox);
   const double largest = 2 * r.side * (kPaperOffsetFactor * r.room() - r.cells);
-  if (gapSize > largest)
+  if (gapSize <= largest)
   {
-    std::ostringstream message;
-    message << "Gap Size " << gapSize << " does not fit in the distance field around this target "
-            << "(at most " << largest << " here): lower it (0: automatic, "
-            << targetBox.diagonal() / WrapSettings::kGapDivisor << " here)";
-    return Status::failure(message.str());
+    return {};
   }
-  return {};
+  // With o = 1: 1 - 3 c >= gap / (2 s), so the Resolution that holds the gap.
+  const double share = 1 - gapSize / (2 * r.side);
+  std::ostringstream message;
+  if (share >= 0.5)
+  {
+    message << "Resolution " << settings.resolution << " is too coarse for the start ("
+            << settings.start.offset << " cells out, Start Offset In Cells) and the gap closing "
+            << "(Gap Size " << gapSize << ") around this target: raise it to at least "
+            << std::ceil(3 * (settings.start.offset + 3) / share);
+  }
+  else
+  {
+    message << "Gap Size " << gapSize << " does not fit in the distance field around this target "
+            << "(at most " << std::max(largest, 0.0) << " here): lower it (0: automatic, "
+            << targetBox.diagonal() / WrapSettings::kGapDivisor << " here)";
+  }
+  return Status::failure(message.str());
 }
 
 namespace
@@ -185,6 +199,31 @@ Status checkEdgeLength(const WrapSettings& settings, double edgeLength, const Bo
     return Status::failure(message.str());
   }
   return {};
+}
+
+Status checkEdgeOnField(
+  const WrapSettings& settings, double edgeLength, double cell, bool computesField)
+{
+  const double shortest = settings.edgeLengthRange[0] * edgeLength;
+  if (!(shortest < kShortestEdgeInCells * cell))
+  {
+    return {};
+  }
+  std::ostringstream message;
+  message << "Target Edge Length " << edgeLength << " makes edges down to " << shortest / cell
+          << " cells of the distance field (cell " << cell << "), under the "
+          << kShortestEdgeInCells << " its steps can carry: ";
+  if (computesField)
+  {
+    message << "raise Resolution to at least "
+            << std::ceil(settings.resolution * kShortestEdgeInCells * cell / shortest)
+            << ", or raise the Target Edge Length (0: automatic)";
+  }
+  else
+  {
+    message << "give a finer Distance Field, or raise the Target Edge Length (0: automatic)";
+  }
+  return Status::failure(message.str());
 }
 
 Notes sizeWarnings(double gapSize, const std::optional<double>& edgeLength, const Box& targetBox)

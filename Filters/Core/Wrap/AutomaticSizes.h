@@ -36,8 +36,13 @@ GridPlacement fieldPlacement(
 WrapSettings withPointSizes(
   WrapSettings settings, const Box& box, const PointCloud& cloud, bool givenStart);
 
-// Why the Gap Size is too large for the field computed around the target, if it is.
+// Why the field computed around the target cannot hold the start and the gap closing (a Gap Size
+// too large, a Resolution too coarse), if it cannot.
 Status checkGapSize(const WrapSettings& settings, double gapSize, const Box& targetBox);
+// Why the field's cell `cell` cannot carry edges of length L (shorter than kShortestEdgeInCells
+// cells: the steps fail), naming the Resolution that can, if it cannot.
+Status checkEdgeOnField(
+  const WrapSettings& settings, double edgeLength, double cell, bool computesField);
 // Why L would make too many vertices on a target of this box (at most kMaxVertices), if it would.
 Status checkEdgeLength(const WrapSettings& settings, double edgeLength, const Box& targetBox);
 // Warnings for sizes that make a wrap but a useless one: a Target Edge Length that leaves the wrap

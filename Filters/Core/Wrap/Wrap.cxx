@@ -10,15 +10,16 @@ namespace shrinkwrap
 
 namespace
 {
-// The shares of a setup's progress: the field is most of it.
-constexpr double kFieldsShare = 0.8;
+// The shares of a setup's progress: the fields (distance and gap closing), then the start (its
+// contour, coarsening and relaxation), which takes longer the finer the Target Edge Length.
+constexpr double kFieldsShare = 0.5;
 
 Status startOf(const WrapTarget& target, const WrapPlan& plan, const WrapFields& fields,
-  const Contour& contour, Notes& notes, SurfaceMesh& start)
+  const Contour& contour, const Progress& progress, Notes& notes, SurfaceMesh& start)
 {
   int specks = 0;
   const Status status = startingSurface(fields.driving.grid(), plan.targetBox, target.start.get(),
-    plan.start(), plan.settings.evolution.flips, contour, start, specks);
+    plan.start(), plan.settings.evolution.flips, contour, start, specks, progress);
   if (specks > 0)
   {
     warn(notes,
@@ -65,7 +66,7 @@ Status startWrap(const WrapTarget& target, const WrapPlan& plan, const Contour& 
   SurfaceMesh start;
   if (status)
   {
-    status = startOf(target, plan, fields, contour, notes, start);
+    status = startOf(target, plan, fields, contour, progress.stage(kFieldsShare, 1), notes, start);
   }
   if (status)
   {

@@ -98,9 +98,20 @@ Status meshFields(const WrapTarget& target, const WrapPlan& plan, const Progress
   }
   else
   {
-    status = computedGrid(*target.polygons, plan, progress, notes, grid, isSigned, exact);
+    status =
+      computedGrid(*target.polygons, plan, progress.stage(0, 0.8), notes, grid, isSigned, exact);
   }
-  return status ? wrapFields(std::move(grid), isSigned, exact, plan, fields) : status;
+  if (!status)
+  {
+    return status;
+  }
+  // A target whose triangles all face inwards (a reversed file): its near field takes its side
+  // from the grid's sign, not from them.
+  const bool inward = isSigned && exact && exact->facesInward(grid);
+  status = wrapFields(std::move(grid), isSigned, exact, plan, fields);
+  fields.driving.setFacesInward(inward);
+  fields.target.setFacesInward(inward);
+  return !status || progress.report(1) ? status : Status::failure("aborted");
 }
 
 // The unsigned field of the points (and of the polygons beside them, if any).

@@ -74,7 +74,13 @@ Status planWrap(const WrapTarget& target, const WrapSettings& settings, WrapPlan
     status = checkGapSize(plan.settings, plan.gapSize, box);
   }
   plan.notes = sizeWarnings(plan.gapSize, plan.edgeLength, box);
-  return status ? placeField(target, plan) : status;
+  status = status ? placeField(target, plan) : status;
+  if (status && plan.edgeLength)
+  {
+    status = checkEdgeOnField(
+      plan.settings, *plan.edgeLength, plan.lattice.spacing.maxCoeff(), plan.computesField);
+  }
+  return status;
 }
 
 EvolverSettings WrapPlan::evolution() const

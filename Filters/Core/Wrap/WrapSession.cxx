@@ -118,6 +118,39 @@ WrapSession::Surface WrapSession::surface(int k) const
     &found.second };
 }
 
+namespace
+{
+// The volume a closed surface encloses (signed by its orientation) and its area.
+std::pair<double, double> volumeAndArea(
+  const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles)
+{
+  double volume = 0, area = 0;
+  for (const auto& t : triangles)
+  {
+    volume += x[t[0]].dot(x[t[1]].cross(x[t[2]])) / 6;
+    area += 0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm();
+  }
+  return { volume, area };
+}
+} // namespace
+
+std::optional<double> WrapSession::meanMotion(int k) const
+{
+  const Surface now = this->surface(k), before = this->surface(k - 1);
+  const double cell = this->Plan.lattice.spacing.maxCoeff();
+  if (k < 1 || now.step != k || before.step != k - 1 || !(cell > 0))
+  {
+    return std::nullopt;
+  }
+  const auto [v1, a1] = volumeAndArea(now.points, *now.cached->triangles);
+  const auto [v0, a0] = volumeAndArea(before.points, *before.cached->triangles);
+  if (!(a1 > 0))
+  {
+    return std::nullopt;
+  }
+  return std::abs(v1 - v0) / (a1 * cell);
+}
+
 Status WrapSession::edit(const std::function<void(SurfaceMesh&)>& change)
 {
   Evolver& e = *this->Evolving;

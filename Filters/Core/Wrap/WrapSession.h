@@ -10,6 +10,7 @@
 #include "Wrap/WrapPlan.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace shrinkwrap
@@ -40,6 +41,9 @@ public:
     const StepCache::Step* cached = nullptr;
   };
   Surface surface(int k) const;
+  // How far step k moved the surface from step k - 1, on average along its normals (the change of
+  // the enclosed volume over the area), in cells of the field; none unless both steps are cached.
+  std::optional<double> meanMotion(int k) const;
 
   // Edits the evolver's current surface (Evolver::edit); phi follows the new vertex count when the
   // settings scale automatically, the current step is cached anew and later ones are dropped.

@@ -415,6 +415,7 @@ void absurdSizes()
   auto wrap = wrapOf(sphere());
   wrap->SetRemeshing(true);
   wrap->SetStartingShape(vtkShrinkWrapFilter::OFFSET_SURFACE);
+  wrap->SetResolution(48); // cells of 0.09: the automatic L, 0.069, is 0.76 cells
   struct Case
   {
     std::string name;
@@ -429,8 +430,23 @@ void absurdSizes()
       "Target Edge Length is -1: it must be at least 0", false },
     { "Target Edge Length 1e9", [&] { wrap->SetTargetEdgeLength(1e9); },
       "Target Edge Length 1e+09 leaves the wrap at most about 4 vertices", true },
+    // Edges the field cannot carry (its steps fail under about 0.4 cells), a field too coarse
+    // for the start and the gap closing: refused before the run, naming the Resolution that can.
+    { "Target Edge Length 0.005 at Resolution 80",
+      [&] {
+        wrap->SetResolution(80);
+        wrap->SetTargetEdgeLength(0.005);
+      },
+      "under the 0.45 its steps can carry: raise Resolution to at least", false },
+    { "Resolution 12",
+      [&] {
+        wrap->SetResolution(12);
+        wrap->SetTargetEdgeLength(0);
+      },
+      "Resolution 12 is too coarse for the start", false },
     { "Gap Size 1e6",
       [&] {
+        wrap->SetResolution(48);
         wrap->SetTargetEdgeLength(0);
         wrap->SetGapSize(1e6);
       },
@@ -582,12 +598,13 @@ void aborts()
   struct Count
   {
     int events = 0, abortAt = 1;
+    double from = 0; // counts the events from this progress on (Shrink Wrap's steps: kSetupShare)
   } count;
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetClientData(&count);
-  onProgress->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+  onProgress->SetCallback([](vtkObject* caller, unsigned long, void* data, void* amount) {
     auto* c = static_cast<Count*>(data);
-    if (++c->events == c->abortAt)
+    if (*static_cast<double*>(amount) >= c->from && ++c->events == c->abortAt)
     {
       static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
     }
@@ -605,7 +622,7 @@ void aborts()
     sdf->GetOutput()->GetNumberOfPoints() == 21 * 21 * 21, "after a change it computes again");
 
   auto wrap = wrapOf(sphere(), 30);
-  count = { 0, 10 };
+  count = { 0, 10, vtkShrinkWrapFilter::kSetupShare };
   wrap->AddObserver(vtkCommand::ProgressEvent, onProgress);
   whileSaying(wrap, [&] { wrap->UpdateTimeStep(30 * 0.015); });
   const int aborted = wrap->GetNumberOfComputedSteps();

@@ -1,0 +1,272 @@
+// Inputs that used to give a wrong result reported "ok": a target whose triangles all face inwards,
+// a closed mesh written double-sided (every triangle in both orientations), and a run that has
+// not landed, a target far from the origin. Each now wraps right or says why. And a long setup (the
+// field, the gap closing, the start) reports progress and stops at an abort.
+#include "TestUtilities.h"
+#include "vtkMeshSignedDistance.h"
+#include "vtkShrinkWrapFilter.h"
+
+#include <vtkAppendPolyData.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCellLocator.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkGenericCell.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolygon.h>
+#include <vtkReverseSense.h>
+#include <vtkSphereSource.h>
+#include <vtkStringArray.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace testing;
+
+constexpr double kRadius = 0.5;
+
+vtkSmartPointer<vtkPolyData> sphere()
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(kRadius);
+  source->SetThetaResolution(48);
+  source->SetPhiResolution(48);
+  source->Update();
+  return source->GetOutput();
+}
+
+std::string statusOf(vtkPolyData* wrap)
+{
+  auto* a = vtkStringArray::SafeDownCast(wrap->GetFieldData()->GetAbstractArray("Status"));
+  return a ? a->GetValue(0) : "";
+}
+
+// The wrap at its last step, and what the filter warned of.
+vtkSmartPointer<vtkPolyData> wrapped(vtkShrinkWrapFilter* wrap, std::string& warnings)
+{
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&warnings);
+  observer->SetCallback([](vtkObject*, unsigned long, void* said, void* message) {
+    *static_cast<std::string*>(said) += static_cast<const char*>(message);
+  });
+  wrap->AddObserver(vtkCommand::WarningEvent, observer);
+  wrap->AddObserver(vtkCommand::ErrorEvent, observer);
+  wrap->UpdateTimeStep(1e30);
+  wrap->RemoveObserver(observer);
+  return wrap->GetOutput();
+}
+
+// The share of the wrap's vertices inside `outward` (a closed mesh facing out): behind the facet
+// closest to them by more than 1e-6 of its size.
+double insideShare(vtkPolyData* wrap, vtkPolyData* outward)
+{
+  vtkNew<vtkCellLocator> locator;
+  locator->SetDataSet(outward);
+  locator->BuildLocator();
+  int inside = 0;
+  for (vtkIdType i = 0; i < wrap->GetNumberOfPoints(); ++i)
+  {
+    double x[3], c[3], n[3], d2;
+    vtkIdType cell;
+    int sub;
+    wrap->GetPoint(i, x);
+    locator->FindClosestPoint(x, c, cell, sub, d2);
+    vtkCell* facet = outward->GetCell(cell);
+    vtkPolygon::ComputeNormal(facet->GetPoints(), n);
+    inside += (x[0] - c[0]) * n[0] + (x[1] - c[1]) * n[1] + (x[2] - c[2]) * n[2] < -1e-6 * kRadius;
+  }
+  return wrap->GetNumberOfPoints() > 0 ? static_cast<double>(inside) / wrap->GetNumberOfPoints()
+                                       : 1.0;
+}
+
+// A closed sphere with every triangle reversed: the field signs it by its inside all the same, and
+// the wrap lands outside it, as on the sphere itself.
+void inwardFacingTarget()
+{
+  vtkNew<vtkReverseSense> reverse;
+  reverse->SetInputData(sphere());
+  reverse->ReverseCellsOn();
+  reverse->ReverseNormalsOn();
+  reverse->Update();
+  for (const bool reversed : { false, true })
+  {
+    vtkNew<vtkShrinkWrapFilter> wrap;
+    wrap->SetInputData(reversed ? reverse->GetOutput() : sphere().Get());
+    std::string warnings;
+    vtkPolyData* out = wrapped(wrap, warnings);
+    const double inside = insideShare(out, sphere());
+    std::cout << (reversed ? "reversed" : "as given") << ": " << out->GetNumberOfPoints()
+              << " vertices, " << 100 * inside << "% inside the sphere, status " << statusOf(out)
+              << std::endl;
+    SW_CHECK(out->GetNumberOfPoints() > 0 && statusOf(out) == "ok",
+      (reversed ? "reversed" : "as given") << ": a wrap, ok");
+    SW_CHECK(inside < 0.01,
+      (reversed ? "reversed" : "as given")
+        << ": under 1% of the vertices inside the sphere (" << 100 * inside << "%)");
+  }
+}
+
+// Every triangle twice, once each way (as some exporters write closed meshes): the field is signed
+// (inside negative), and the wrap lands as on the mesh written once.
+void doubleSidedTarget()
+{
+  vtkNew<vtkReverseSense> reverse;
+  reverse->SetInputData(sphere());
+  reverse->ReverseCellsOn();
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputData(sphere());
+  both->AddInputConnection(reverse->GetOutputPort());
+  both->Update();
+  vtkNew<vtkMeshSignedDistance> field;
+  field->SetInputConnection(both->GetOutputPort());
+  field->SetResolution(40);
+  field->Update();
+  vtkImageData* image = field->GetOutput();
+  const double isSigned = image->GetFieldData()->GetArray("Signed")->GetTuple1(0);
+  const double range0 = image->GetPointData()->GetArray("SignedDistance")->GetRange()[0];
+  std::cout << "double-sided: Signed " << isSigned << ", smallest distance " << range0 << std::endl;
+  SW_CHECK(isSigned == 1 && std::abs(range0 + kRadius) < 0.02,
+    "double-sided: the field is signed, -" << kRadius << " at the centre (" << range0 << ")");
+
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputConnection(both->GetOutputPort());
+  std::string warnings;
+  vtkPolyData* out = wrapped(wrap, warnings);
+  const double inside = insideShare(out, sphere());
+  SW_CHECK(
+    out->GetNumberOfPoints() > 0 && statusOf(out) == "ok" && warnings.empty() && inside < 0.01,
+    "double-sided: the wrap lands outside the sphere, ok, no warning (" << statusOf(out) << "; "
+                                                                        << warnings << ")");
+}
+
+// Too few steps from a far start: the last step says it has not landed, and a warning says what to
+// change; a run that lands says ok.
+void notLanded()
+{
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputData(sphere());
+  wrap->SetStartingShape(vtkShrinkWrapFilter::ICOSPHERE);
+  wrap->SetRemeshing(false);
+  wrap->SetNumberOfSteps(2);
+  std::string warnings;
+  vtkPolyData* out = wrapped(wrap, warnings);
+  std::cout << "2 steps from an icosphere: " << statusOf(out) << " | " << warnings << std::endl;
+  SW_CHECK(statusOf(out).rfind("not landed: 95% of its vertices lie within", 0) == 0 &&
+      warnings.find("has not landed on the target after its 2 steps") != std::string::npos &&
+      warnings.find("raise Number Of Steps") != std::string::npos,
+    "2 steps: not landed, in Status and a warning");
+  wrap->SetNumberOfSteps(200);
+  warnings.clear();
+  out = wrapped(wrap, warnings);
+  SW_CHECK(statusOf(out) == "ok" && warnings.empty(),
+    "200 steps: ok (" << statusOf(out) << "; " << warnings << ")");
+}
+
+// The sphere in UTM-like coordinates (double points): the same wrap as at the origin, moved.
+void farFromOrigin()
+{
+  const double centre[3] = { 500000, 5000000, 100 };
+  vtkSmartPointer<vtkPolyData> near = sphere();
+  auto far = vtkSmartPointer<vtkPolyData>::New();
+  far->DeepCopy(near);
+  vtkNew<vtkPoints> moved;
+  moved->SetDataTypeToDouble();
+  for (vtkIdType i = 0; i < near->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    near->GetPoint(i, p);
+    moved->InsertNextPoint(p[0] + centre[0], p[1] + centre[1], p[2] + centre[2]);
+  }
+  far->SetPoints(moved);
+  vtkNew<vtkShrinkWrapFilter> atOrigin, there;
+  atOrigin->SetInputData(near);
+  there->SetInputData(far);
+  std::string warnings;
+  vtkPolyData* a = wrapped(atOrigin, warnings);
+  vtkPolyData* b = wrapped(there, warnings);
+  double largest = 0; // the farther wrap's vertices from the sphere's surface
+  for (vtkIdType i = 0; i < b->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    b->GetPoint(i, p);
+    const double r = std::sqrt((p[0] - centre[0]) * (p[0] - centre[0]) +
+      (p[1] - centre[1]) * (p[1] - centre[1]) + (p[2] - centre[2]) * (p[2] - centre[2]));
+    largest = std::max(largest, std::abs(r - kRadius));
+  }
+  std::cout << "far from the origin: " << b->GetNumberOfPoints() << " vertices ("
+            << a->GetNumberOfPoints() << " at the origin), " << statusOf(b) << ", largest |r - R| "
+            << largest << std::endl;
+  SW_CHECK(statusOf(b) == "ok" &&
+      std::abs(b->GetNumberOfPoints() - a->GetNumberOfPoints()) <= 0.02 * a->GetNumberOfPoints() &&
+      largest < 0.1 * fieldCell(b),
+    "far from the origin: ok, the origin's vertex count within 2%, on the sphere within 0.1 cells");
+}
+
+// A setup of seconds (a fine wrap: its field, closing, and a start coarsened to a short L):
+// progress events before the first step, rising; an abort at the first one ends the setup with a
+// warning and an empty output, and the next update wraps.
+void abortInSetup()
+{
+  struct Seen
+  {
+    std::vector<double> fractions;
+    bool abortFirst = true;
+  } seen;
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputData(sphere());
+  wrap->SetResolution(160);
+  wrap->SetTargetEdgeLength(0.012);
+  wrap->SetNumberOfSteps(2);
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&seen);
+  onProgress->SetCallback([](vtkObject* caller, unsigned long, void* data, void* amount) {
+    auto* s = static_cast<Seen*>(data);
+    s->fractions.push_back(*static_cast<double*>(amount));
+    if (s->abortFirst)
+    {
+      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+      s->abortFirst = false;
+    }
+  });
+  wrap->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  std::string warnings;
+  vtkPolyData* out = wrapped(wrap, warnings);
+  std::cout << "aborted at the first progress event (" << seen.fractions.size()
+            << " events): " << warnings << std::endl;
+  SW_CHECK(
+    out->GetNumberOfPoints() == 0 && warnings.find("aborted while it set up") != std::string::npos,
+    "an abort during the setup: an empty output and a warning");
+  seen.fractions.clear();
+  wrap->Modified();
+  warnings.clear();
+  out = wrapped(wrap, warnings);
+  int setup = 0;
+  bool rising = true;
+  for (std::size_t k = 0; k < seen.fractions.size(); ++k)
+  {
+    setup += seen.fractions[k] > 0 && seen.fractions[k] < vtkShrinkWrapFilter::kSetupShare;
+    rising = rising && (k == 0 || seen.fractions[k] >= seen.fractions[k - 1]);
+  }
+  std::cout << "then " << out->GetNumberOfPoints() << " vertices, " << seen.fractions.size()
+            << " progress events, " << setup << " in the setup" << std::endl;
+  SW_CHECK(out->GetNumberOfPoints() > 0 && setup >= 10 && rising,
+    "then the wrap, with at least 10 rising progress events in its setup (" << setup << ")");
+}
+} // namespace
+
+int TestHonestResults(int, char*[])
+{
+  inwardFacingTarget();
+  doubleSidedTarget();
+  notLanded();
+  farFromOrigin();
+  abortInSetup();
+  return testing::finish("TestHonestResults");
+}

@@ -73,7 +73,7 @@ long_run.UpdatePipeline(30 * tau)
 check(computed(long_run) == 30, "and the next update starts over with the new ones (%d steps)" % computed(long_run))
 
 long_run.AngleWeight = 0.5
-tag = abort_at(algorithm, 25, after=0.3)  # during the steps
+tag = abort_at(algorithm, 1, after=0.3 + 0.7 * 25 / 60)  # at step 25 of the 60, after the setup
 long_run.UpdatePipeline(60 * tau)
 algorithm.RemoveObserver(tag)
 check(algorithm.GetOutputDataObject(0).GetNumberOfPoints() == 0, "an aborted run gives an empty output")

@@ -280,7 +280,33 @@ StepReport Evolver::check(const std::vector<Vec3>& y) const
   return report;
 }
 
+namespace
+{
+StepReport stoppedAt(int step)
+{
+  StepReport report;
+  report.step = step;
+  report.failure = Failure::Stopped;
+  report.message = "stopped at step " + std::to_string(step);
+  return report;
+}
+} // namespace
+
 StepReport Evolver::step()
+{
+  // What a stopped step must leave as it was, beside the surface (which the caller restarts).
+  const auto recent = this->RecentCrossings;
+  const auto held = this->HeldNear;
+  StepReport report = this->fullStep();
+  if (report.failure == Failure::Stopped)
+  {
+    this->RecentCrossings = recent;
+    this->HeldNear = held;
+  }
+  return report;
+}
+
+StepReport Evolver::fullStep()
 {
   const Controls c = this->controls();
   std::vector<Vec3> vt;
@@ -293,9 +319,18 @@ StepReport Evolver::step()
       "the redistribution potential did not converge at step " + std::to_string(report.step);
     return report;
   }
+  if (this->stopped())
+  {
+    return stoppedAt(this->Steps + 1);
+  }
   std::vector<Vec3> next;
   const bool converged = this->solve(c, vt, next);
-  return this->accept(next, vt, converged);
+  if (this->stopped())
+  {
+    return stoppedAt(this->Steps + 1);
+  }
+  StepReport report = this->accept(next, vt, converged);
+  return this->stopped() && report.ok() ? stoppedAt(this->Steps) : report;
 }
 
 // The new positions pass the checks, or a triangle that degenerated within the step is mended by
@@ -464,8 +499,8 @@ StepReport Evolver::run(int n, const Progress& progress)
 namespace
 {
 // Remeshing, flips, then the mending collapses, as the settings ask; counts into `report`.
-Status editConnectivity(
-  SurfaceMesh& mesh, const EvolverSettings& s, double scale, StepReport& report)
+Status editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scale,
+  StepReport& report, const std::function<bool()>& stop)
 {
   if (s.remeshing)
   {
@@ -473,6 +508,7 @@ Status editConnectivity(
     r.targetLength *= scale;
     r.flips = s.flips;
     r.collapses = s.collapses;
+    r.stop = stop;
     const RemeshReport remeshed = remesh(mesh, r);
     if (!remeshed.status)
     {
@@ -481,6 +517,10 @@ Status editConnectivity(
     report.splits += remeshed.splits;
     report.collapses += remeshed.collapses;
     report.flips += remeshed.flips;
+  }
+  if (stop && stop())
+  {
+    return {};
   }
   if (s.edgeFlips)
   {
@@ -515,14 +555,15 @@ void Evolver::adjustConnectivity(StepReport& report)
       rimHolds(this->Mesh, this->scaledRimSamples(), reach);
   }
   Status edited;
+  // A stopped edit reports no change: its trial is taken unchecked, and the step is stopped.
   auto edit = [&](SurfaceMesh& mesh, bool guarded, const std::vector<Box>& only) {
     EvolverSettings e = s;
     e.flips.avoidCrossings = guarded && s.flips.avoidCrossings;
     e.collapses.avoidCrossings = guarded && s.collapses.avoidCrossings;
     e.flips.guardOnlyIn = e.collapses.guardOnlyIn = only;
     report = before;
-    edited = editConnectivity(mesh, e, this->Scale, report);
-    return report.connectivityChanged();
+    edited = editConnectivity(mesh, e, this->Scale, report, this->Stop);
+    return report.connectivityChanged() && !this->stopped();
   };
   if (s.flips.avoidCrossings || s.collapses.avoidCrossings)
   {

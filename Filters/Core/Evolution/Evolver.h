@@ -136,7 +136,8 @@ enum class Failure
   DegenerateTriangle,
   LeftDomain,
   SolverFailed,
-  EditFailed
+  EditFailed,
+  Stopped // the step was stopped (Evolver::setStop); the surface is no step's: restart it
 };
 
 struct StepReport
@@ -172,8 +173,11 @@ public:
 
   const Status& status() const { return this->Valid; }
 
-  // One time step; after a failure the surface stays that of the last good step.
+  // One time step; after a failure the surface stays that of the last good step. `stop`, if set,
+  // is asked between the step's phases and its remeshing's passes: true stops the step there
+  // (Failure::Stopped), and the surface must be restarted from a cached step.
   StepReport step();
+  void setStop(std::function<bool()> stop) { this->Stop = std::move(stop); }
   // Up to n steps, reporting progress after each; stops at a failure (returned) or when progress
   // asks to stop.
   StepReport run(int n, const Progress& progress = {});
@@ -212,6 +216,8 @@ public:
   const SurfaceMesh& mesh() const { return this->Mesh; }
 
 private:
+  bool stopped() const { return this->Stop && this->Stop(); }
+  StepReport fullStep(); // step() but for what a stopped step restores
   struct Controls;
   struct Solver;
   Controls controls() const;
@@ -254,6 +260,7 @@ private:
   // first try.
   std::vector<Box> HeldNear;
   int Steps = 0;
+  std::function<bool()> Stop;    // asked between phases (setStop)
   std::vector<double> Potential; // the volume redistribution's warm start
   std::unique_ptr<Solver> Linear;
 };

@@ -183,8 +183,80 @@ bool boundaryPoint(const DistanceGrid& field, const DistanceSource* target, doub
 }
 } // namespace
 
+namespace
+{
+// The closing's sites: a boundary point of D for each node near its boundary (found: it has one).
+struct ClosingSites
+{
+  std::vector<std::int64_t> near;
+  std::vector<Vec3> sites;
+  std::vector<char> found;
+};
+
+ClosingSites closingSites(const DistanceGrid& field, const DistanceSource* target, double radius,
+  const std::vector<char>& inside, bool fillCavities)
+{
+  ClosingSites c;
+  c.near = nodesNearBoundary(field, radius, inside);
+  c.sites.resize(c.near.size());
+  c.found.resize(c.near.size());
+  parallelFor(0, static_cast<long long>(c.near.size()), 0, [&](long long b, long long e) {
+    for (long long s = b; s < e; ++s)
+    {
+      c.found[s] =
+        boundaryPoint(field, target, radius, inside, fillCavities, c.near[s], c.sites[s]);
+    }
+  });
+  return c;
+}
+
+// The closed field's values from the distances e to the nearest site. Inside D, e >= r - d (the
+// ball of radius r - d about a node lies in D), with equality where no other part of the target is
+// nearer than r to the node's own front point. The passes find a site near the nearest boundary
+// point, not always on it: where they leave e above r - d outside the target, the node's own
+// boundary point decides (its distance bounds e from above, and equals r - d where it is clear).
+// Inside the target, where the wrap never goes, r - e only bounds d.
+std::vector<float> closedValues(const DistanceGrid& field, const DistanceSource* target,
+  double radius, const std::vector<char>& inside, bool fillCavities, const ClosingSites& c,
+  const std::vector<float>& e)
+{
+  const GridLattice& lattice = field.lattice();
+  std::vector<std::int32_t> nearSlot(lattice.nodeCount(), -1);
+  for (std::size_t s = 0; s < c.near.size(); ++s)
+  {
+    nearSlot[c.near[s]] = static_cast<std::int32_t>(s);
+  }
+  std::vector<float> values(field.values());
+  const float r = static_cast<float>(radius);
+  const float hair = static_cast<float>(1e-3 * lattice.spacing.maxCoeff());
+  parallelFor(0, lattice.nodeCount(), 0, [&](long long b, long long end) {
+    for (long long n = b; n < end; ++n)
+    {
+      if (!inside[n])
+        continue;
+      double nearest = e[n];
+      if (values[n] >= 0 && r - e[n] < values[n] - hair)
+      {
+        // A node near the boundary has its boundary point from above.
+        const std::int32_t s = nearSlot[n];
+        Vec3 site;
+        const bool has = s >= 0
+          ? (site = c.sites[s], c.found[s] != 0)
+          : boundaryPoint(field, target, radius, inside, fillCavities, n, site);
+        if (has)
+        {
+          nearest = std::min(nearest, (site - lattice.position(lattice.coordinates(n))).norm());
+        }
+      }
+      values[n] = std::min(values[n], static_cast<float>(radius - nearest));
+    }
+  });
+  return values;
+}
+} // namespace
+
 Status closingField(const DistanceGrid& field, double radius, const DistanceSource* target,
-  bool fillCavities, DistanceGrid& closed)
+  bool fillCavities, DistanceGrid& closed, const Progress& progress)
 {
   const GridLattice& lattice = field.lattice();
   if (!(radius >= 0.25 * lattice.spacing.minCoeff()))
@@ -203,62 +275,27 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
       "distance field; lower the Gap Size, or give a Distance Field with more room around the "
       "target (Offset Factor of Mesh Signed Distance)");
   }
-  // The sites: boundary points from the nodes near it, one each; the closest-point passes spread
-  // them.
-  const std::vector<std::int64_t> near = nodesNearBoundary(field, radius, inside);
-  std::vector<Vec3> sites(near.size());
-  std::vector<char> found(near.size());
-  parallelFor(0, static_cast<long long>(near.size()), 0, [&](long long b, long long e) {
-    for (long long s = b; s < e; ++s)
-    {
-      found[s] = boundaryPoint(field, target, radius, inside, fillCavities, near[s], sites[s]);
-    }
-  });
-  std::vector<std::int32_t> siteOfNode(lattice.nodeCount(), -1);
-  for (std::size_t s = 0; s < near.size(); ++s)
+  const Status aborted = Status::failure("aborted");
+  if (!progress.report(0.2))
   {
-    siteOfNode[near[s]] = found[s] ? static_cast<std::int32_t>(s) : -1;
+    return aborted;
   }
-  std::vector<std::int32_t> nearSlot(
-    lattice.nodeCount(), -1); // the passes below overwrite siteOfNode
-  for (std::size_t s = 0; s < near.size(); ++s)
+  // The sites: boundary points from the nodes near it, one each; the closest-point passes spread
+  // them (they overwrite siteOfNode).
+  const ClosingSites c = closingSites(field, target, radius, inside, fillCavities);
+  std::vector<std::int32_t> siteOfNode(lattice.nodeCount(), -1);
+  for (std::size_t s = 0; s < c.near.size(); ++s)
   {
-    nearSlot[near[s]] = static_cast<std::int32_t>(s);
+    siteOfNode[c.near[s]] = c.found[s] ? static_cast<std::int32_t>(s) : -1;
   }
   std::vector<float> e(lattice.nodeCount());
-  sweepClosestPoints(lattice, sites, siteOfNode.data(), e.data(), Progress());
-  // Inside D, e >= r - d (the ball of radius r - d about a node lies in D), with equality where no
-  // other part of the target is nearer than r to the node's own front point. The passes find a site
-  // near the nearest boundary point, not always on it: where they leave e above r - d outside the
-  // target, the node's own boundary point decides (its distance bounds e from above, and equals
-  // r - d where it is clear). Inside the target, where the wrap never goes, r - e only bounds d.
-  std::vector<float> values(field.values());
-  const float r = static_cast<float>(radius);
-  const float hair = static_cast<float>(1e-3 * lattice.spacing.maxCoeff());
-  parallelFor(0, lattice.nodeCount(), 0, [&](long long b, long long end) {
-    for (long long n = b; n < end; ++n)
-    {
-      if (!inside[n])
-        continue;
-      double nearest = e[n];
-      if (values[n] >= 0 && r - e[n] < values[n] - hair)
-      {
-        // A node near the boundary has its boundary point from above.
-        const std::int32_t s = nearSlot[n];
-        Vec3 site;
-        const bool has = s >= 0
-          ? (site = sites[s], found[s] != 0)
-          : boundaryPoint(field, target, radius, inside, fillCavities, n, site);
-        if (has)
-        {
-          nearest = std::min(nearest, (site - lattice.position(lattice.coordinates(n))).norm());
-        }
-      }
-      values[n] = std::min(values[n], static_cast<float>(radius - nearest));
-    }
-  });
-  closed = DistanceGrid(lattice, std::move(values));
-  return {};
+  if (!progress.report(0.4) ||
+    !sweepClosestPoints(lattice, c.sites, siteOfNode.data(), e.data(), progress.stage(0.4, 0.9)))
+  {
+    return aborted;
+  }
+  closed = DistanceGrid(lattice, closedValues(field, target, radius, inside, fillCavities, c, e));
+  return progress.report(1) ? Status() : aborted;
 }
 
 } // namespace shrinkwrap

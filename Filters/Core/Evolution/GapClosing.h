@@ -14,6 +14,7 @@
 #ifndef ShrinkWrap_GapClosing_h
 #define ShrinkWrap_GapClosing_h
 
+#include "Common/Progress.h"
 #include "Common/Status.h"
 #include "Distance/DistanceGrid.h"
 
@@ -27,9 +28,10 @@ class DistanceSource;
 // the sites; without it the grid's gradient does). `fillCavities`: pockets of the complement of D
 // that the grid's border does not reach join D (a point set's union of balls is a shell: eroded
 // from its cavities too, it would open every gap between the points again). A radius below a
-// quarter of a cell closes nothing: `closed` is `field`.
+// quarter of a cell closes nothing: `closed` is `field`. Fails "aborted" when `progress` asks to
+// stop.
 Status closingField(const DistanceGrid& field, double radius, const DistanceSource* target,
-  bool fillCavities, DistanceGrid& closed);
+  bool fillCavities, DistanceGrid& closed, const Progress& progress = Progress());
 
 } // namespace shrinkwrap
 

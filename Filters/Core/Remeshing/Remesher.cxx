@@ -221,16 +221,23 @@ RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings)
   relax.iterations = settings.relaxWeight > 0 ? 1 : 0;
   relax.weight = settings.relaxWeight;
   relax.flips = settings.flips;
-  for (int k = 0; k < settings.iterations; ++k)
+  const auto stopped = [&] { return settings.stop && settings.stop(); };
+  for (int k = 0; k < settings.iterations && !stopped(); ++k)
   {
     if (settings.adaptive())
     {
       assignEdgeSizes(mesh, settings);
     }
     report.splits += splitLongEdges(mesh, settings.splitAbove * L);
+    if (stopped())
+      break;
     report.collapses += collapseShortEdges(
       mesh, settings.collapseBelow * L, settings.splitAbove * L, settings.collapses);
+    if (stopped())
+      break;
     report.flips += equalizeValences(mesh, settings.flips);
+    if (stopped())
+      break;
     relaxTangentially(mesh, relax);
   }
   mesh.removeVertexProperty(kEdgeSize);

@@ -12,6 +12,8 @@
 #include "Remeshing/EdgeFlips.h"
 #include "Surface/SurfaceMesh.h"
 
+#include <functional>
+
 namespace shrinkwrap
 {
 
@@ -29,6 +31,9 @@ struct RemeshSettings
   // shortest * L and longest * L; an edge's length is the mean of its ends'. shortest = longest =
   // 1: uniform L.
   double shortest = 1, longest = 1, chordError = 0.05, grading = 0.3;
+  // Asked between the passes, if set: true stops the remeshing there (the surface stays a valid,
+  // partly remeshed one).
+  std::function<bool()> stop;
   bool adaptive() const { return this->shortest < 1 || this->longest > 1; }
 };
 

@@ -99,7 +99,7 @@ Status meshFields(const WrapTarget& target, const WrapPlan& plan, const Progress
   else
   {
     status =
-      computedGrid(*target.polygons, plan, progress.stage(0, 0.8), notes, grid, isSigned, exact);
+      computedGrid(*target.polygons, plan, progress.stage(0, 0.7), notes, grid, isSigned, exact);
   }
   if (!status)
   {
@@ -108,10 +108,10 @@ Status meshFields(const WrapTarget& target, const WrapPlan& plan, const Progress
   // A target whose triangles all face inwards (a reversed file): its near field takes its side
   // from the grid's sign, not from them.
   const bool inward = isSigned && exact && exact->facesInward(grid);
-  status = wrapFields(std::move(grid), isSigned, exact, plan, fields);
+  status = wrapFields(std::move(grid), isSigned, exact, plan, fields, progress.stage(0.7, 1));
   fields.driving.setFacesInward(inward);
   fields.target.setFacesInward(inward);
-  return !status || progress.report(1) ? status : Status::failure("aborted");
+  return status;
 }
 
 // The unsigned field of the points (and of the polygons beside them, if any).
@@ -135,19 +135,19 @@ Status pointFields(
     SignedDistanceSettings unsignedDistance;
     unsignedDistance.computeSign = false;
     result = computeSignedDistance(UnionSource({ polygons, cloud.points }), plan.lattice,
-      unsignedDistance, values.data(), progress);
+      unsignedDistance, values.data(), progress.stage(0, 0.7));
   }
   else
   {
     result = computePointDistance(
-      *cloud.points, plan.lattice, SignedDistanceSettings(), values.data(), progress);
+      *cloud.points, plan.lattice, SignedDistanceSettings(), values.data(), progress.stage(0, 0.7));
   }
   if (!result.completed)
   {
     return Status::failure("aborted");
   }
-  return pointWrapFields(
-    DistanceGrid(plan.lattice, std::move(values)), cloud, plan, fields, polygons);
+  return pointWrapFields(DistanceGrid(plan.lattice, std::move(values)), cloud, plan, fields,
+    polygons, progress.stage(0.7, 1));
 }
 } // namespace
 
@@ -159,10 +159,11 @@ Status makeWrapFields(const WrapTarget& target, const WrapPlan& plan, const Prog
 }
 
 Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const DistanceSource> exact,
-  const WrapPlan& plan, WrapFields& fields)
+  const WrapPlan& plan, WrapFields& fields, const Progress& progress)
 {
   DistanceGrid closed;
-  if (Status status = closingField(grid, 0.5 * plan.gapSize, exact.get(), false, closed); !status)
+  if (Status status = closingField(grid, 0.5 * plan.gapSize, exact.get(), false, closed, progress);
+      !status)
   {
     return status;
   }
@@ -177,7 +178,7 @@ Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const Distan
 }
 
 Status pointWrapFields(DistanceGrid grid, const PointCloud& cloud, const WrapPlan& plan,
-  WrapFields& fields, std::shared_ptr<const DistanceSource> polygons)
+  WrapFields& fields, std::shared_ptr<const DistanceSource> polygons, const Progress& progress)
 {
   using Sources = std::vector<std::shared_ptr<const DistanceSource>>;
   // The grid is the distance to the points and the polygons: the closing's sites come from the
@@ -189,7 +190,8 @@ Status pointWrapFields(DistanceGrid grid, const PointCloud& cloud, const WrapPla
   }
   // Cavities filled: the union of balls around points that sample a sheet is a shell.
   DistanceGrid closed;
-  if (Status status = closingField(grid, 0.5 * plan.gapSize, nearest.get(), true, closed); !status)
+  if (Status status = closingField(grid, 0.5 * plan.gapSize, nearest.get(), true, closed, progress);
+      !status)
   {
     return status;
   }

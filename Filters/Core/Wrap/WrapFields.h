@@ -25,17 +25,18 @@ Status makeWrapFields(const WrapTarget& target, const WrapPlan& plan, const Prog
   Notes& notes, WrapFields& fields);
 
 // The fields from the target's grid (signed or not) and, when `exact` is given, the target itself
-// for the near field.
+// for the near field; "aborted" when `progress` asks to stop.
 Status wrapFields(DistanceGrid grid, bool isSigned, std::shared_ptr<const DistanceSource> exact,
-  const WrapPlan& plan, WrapFields& fields);
+  const WrapPlan& plan, WrapFields& fields, const Progress& progress = Progress());
 
 // The fields of a wrap onto points from their unsigned grid: driven by the distance to the points
 // closed by a ball of half the Gap Size (a surface through the outer points that spans the gaps
 // between them), measured to the points themselves. With `polygons` (Polygons and Points), `grid`
 // is the distance to both, and near them the wrap lands on the nearer of the polygons and the
-// points' fitted surface.
+// points' fitted surface. "aborted" when `progress` asks to stop.
 Status pointWrapFields(DistanceGrid grid, const PointCloud& cloud, const WrapPlan& plan,
-  WrapFields& fields, std::shared_ptr<const DistanceSource> polygons = nullptr);
+  WrapFields& fields, std::shared_ptr<const DistanceSource> polygons = nullptr,
+  const Progress& progress = Progress());
 
 } // namespace shrinkwrap
 

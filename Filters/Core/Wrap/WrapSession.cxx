@@ -72,10 +72,11 @@ bool WrapSession::advanceTo(int k, const Progress& progress)
   }
   const auto& base = this->Cache.atOrBefore(target);
   Evolver& e = *this->Evolving;
-  if (e.steps() != base.first)
+  if (e.steps() != base.first || this->Stopped)
   {
     // Cached triangles were the evolver's own, so they always form a closed surface again.
-    const bool reconnect = base.second.triangles != this->EvolverTriangles;
+    const bool reconnect = base.second.triangles != this->EvolverTriangles || this->Stopped;
+    this->Stopped = false;
     if (e.restart(base.second.state, reconnect ? base.second.triangles.get() : nullptr, base.first,
           base.second.scale) &&
       reconnect)
@@ -88,7 +89,17 @@ bool WrapSession::advanceTo(int k, const Progress& progress)
   onAllCores([&] {
     for (int step = first + 1; step <= target; ++step)
     {
+      // Within a step, progress stands at its middle: asked between its phases, it can stop it.
+      const double within = (step - first - 0.5) / (target - first);
+      e.setStop([&] { return !progress.report(within); });
       const StepReport report = e.step();
+      e.setStop(nullptr);
+      if (report.failure == Failure::Stopped)
+      {
+        this->Stopped = true; // the evolver's surface is no step's: the next run restarts it
+        stopped = true;
+        break;
+      }
       ++this->Computed;
       if (!report.ok())
       {

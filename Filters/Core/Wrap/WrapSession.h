@@ -71,6 +71,7 @@ private:
   int LastGood = -1;                     // set when a step failed: the last step that did not
   std::string Failure;
   int Computed = 0;
+  bool Stopped = false; // a step was stopped midway: the evolver restarts from the cache
 };
 
 } // namespace shrinkwrap

@@ -14,6 +14,7 @@
 #include <vtkFieldData.h>
 #include <vtkGenericCell.h>
 #include <vtkImageData.h>
+#include <vtkMath.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -255,9 +256,63 @@ void abortInSetup()
     rising = rising && (k == 0 || seen.fractions[k] >= seen.fractions[k - 1]);
   }
   std::cout << "then " << out->GetNumberOfPoints() << " vertices, " << seen.fractions.size()
-            << " progress events, " << setup << " in the setup" << std::endl;
+            << " progress events, " << setup << " in the setup:";
+  for (double f : seen.fractions)
+  {
+    std::cout << " " << f;
+  }
+  std::cout << std::endl;
   SW_CHECK(out->GetNumberOfPoints() > 0 && setup >= 10 && rising,
     "then the wrap, with at least 10 rising progress events in its setup (" << setup << ")");
+
+  // Stopped within its second step (at the first progress event inside it, between its phases):
+  // an empty output; the next update resumes from the first step's cache and gives the wrap of a
+  // run never stopped, to 1e-6 of its size.
+  vtkNew<vtkPoints> whole;
+  whole->DeepCopy(out->GetPoints());
+  wrap->SetNumberOfSteps(3);
+  wrap->UpdateTimeStep(1e30);
+  whole->DeepCopy(wrap->GetOutput()->GetPoints());
+  wrap->Modified();
+  vtkNew<vtkCallbackCommand> inStep;
+  struct Within
+  {
+    bool stopped = false;
+  } within;
+  inStep->SetClientData(&within);
+  inStep->SetCallback([](vtkObject* caller, unsigned long, void* data, void* amount) {
+    auto* w = static_cast<Within*>(data);
+    const double p = *static_cast<double*>(amount);
+    // (step - 0.5) / 3 of the steps' share: the middle of step 2
+    const double middle =
+      vtkShrinkWrapFilter::kSetupShare + (1 - vtkShrinkWrapFilter::kSetupShare) * 1.5 / 3;
+    if (!w->stopped && std::abs(p - middle) < 1e-9)
+    {
+      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+      w->stopped = true;
+    }
+  });
+  wrap->RemoveAllObservers();
+  wrap->AddObserver(vtkCommand::ProgressEvent, inStep);
+  warnings.clear();
+  out = wrapped(wrap, warnings);
+  const int computed = wrap->GetNumberOfComputedSteps();
+  SW_CHECK(within.stopped && out->GetNumberOfPoints() == 0 && computed == 1,
+    "stopped within step 2: an empty output, 1 step computed (" << computed << ")");
+  wrap->UpdateTimeStep(3 * wrap->GetTimePerStep()); // another request: it resumes
+  out = wrap->GetOutput();
+  double largest = out->GetNumberOfPoints() == whole->GetNumberOfPoints() ? 0 : 1e300;
+  for (vtkIdType i = 0; largest < 1e300 && i < whole->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    whole->GetPoint(i, a);
+    out->GetPoint(i, b);
+    largest = std::max(largest, std::sqrt(vtkMath::Distance2BetweenPoints(a, b)));
+  }
+  SW_CHECK(largest < 1e-6 * kRadius, // restarted from step 1 cached: not bit for bit
+    "then resumed: the wrap of a run never stopped, to 1e-6 of its size ("
+      << out->GetNumberOfPoints() << " and " << whole->GetNumberOfPoints()
+      << " vertices, largest difference " << largest << ")");
 }
 } // namespace
 

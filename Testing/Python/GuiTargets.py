@@ -43,6 +43,9 @@ def obj_vertices_to_cloud(source, target):
     writer = vtkXMLPolyDataWriter()
     writer.SetFileName(target)
     writer.SetInputData(cloud)
+    # Inline binary: Debian 12's ParaView with libexpat1 2.5.0-1+deb12u2 cannot read the default
+    # raw appended data back (the XML parser stops at it).
+    writer.SetDataModeToBinary()
     assert writer.Write() == 1, target
 
 

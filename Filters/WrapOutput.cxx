@@ -43,6 +43,7 @@ Status writeWrap(const WrapSession& session, int wanted, double timeStep, double
   const SelfIntersections crossings = findSelfIntersections(surface.points, mesh.triangles());
   addSelfIntersections(crossings, output);
   const WrapSummary summary = summarize(output, session.plan().sizes(), surface.step, seconds);
+  std::optional<double> motion; // of the last step, measured once (WrapSession::meanMotion)
   std::string status = "ok";
   if (session.lastGood() >= 0 && wanted > session.lastGood())
   {
@@ -56,9 +57,9 @@ Status writeWrap(const WrapSession& session, int wanted, double timeStep, double
         std::to_string(crossings.pairs) + " triangle pairs cross; cell array SelfIntersecting)");
   }
   else if (surface.step == session.plan().settings.steps &&
-    !landed(summary, session.meanMotion(surface.step)))
+    !landed(summary, motion = session.meanMotion(surface.step)))
   {
-    const std::string why = notLanded(summary, session.meanMotion(surface.step));
+    const std::string why = notLanded(summary, motion);
     status = "not landed: " + why;
     if (finished)
     {

@@ -37,12 +37,12 @@ Status writeWrap(const WrapSession& session, int wanted, double timeStep, double
     return Status::failure(
       "step " + std::to_string(surface.step) + " is not a closed surface: " + closed.message());
   }
-  writeSurface(
-    surface.points, mesh, session.fields().target, surface.cached->tangentialVelocity, output);
+  writeSurface(surface.points, mesh, session.targetSamples(surface),
+    surface.cached->tangentialVelocity, output);
   // The wrap must not pass through itself; if it does at this step, the cells say where.
   const SelfIntersections crossings = findSelfIntersections(surface.points, mesh.triangles());
   addSelfIntersections(crossings, output);
-  const WrapSummary summary = summarize(output, session.plan().sizes(), surface.step, seconds);
+  WrapSummary summary = summarize(output, session.plan().sizes(), surface.step, seconds);
   std::optional<double> motion; // of the last step, measured once (WrapSession::meanMotion)
   std::string status = "ok";
   if (session.lastGood() >= 0 && wanted > session.lastGood())
@@ -67,6 +67,18 @@ Status writeWrap(const WrapSession& session, int wanted, double timeStep, double
         "The wrap has not landed on the target after its " + std::to_string(surface.step) +
           " steps: " + why +
           "; raise Number Of Steps, or lower Time Per Step or Advection Speed if it overshoots");
+    }
+  }
+  else if (surface.step == session.plan().settings.steps)
+  {
+    summary.leftOut = session.leftOut(surface.step);
+    if (summary.leftOut.leftOut > 0)
+    {
+      status = "left out: " + leftOutText(summary.leftOut);
+      if (finished)
+      {
+        warn(notes, leftOutWarning(summary));
+      }
     }
   }
   addStepFields(surface.step, surface.step * timeStep, status, output);
@@ -100,6 +112,27 @@ std::string notLanded(const WrapSummary& summary, const std::optional<double>& m
   return why;
 }
 
+std::string leftOutText(const LeftOutParts& parts)
+{
+  return std::to_string(parts.leftOut) + " of the target's " + std::to_string(parts.parts) +
+    " parts lie wholly outside the wrap";
+}
+
+std::string leftOutWarning(const WrapSummary& summary)
+{
+  char text[400];
+  std::snprintf(text, sizeof text,
+    "Left out %lld of the target's %lld parts: they lie wholly outside the wrap, more than %.3g "
+    "cells of the field (%.3g) from it. A part smaller than about the Target Edge Length (%.3g) "
+    "and farther than the Gap Size (%.3g) from the rest cannot be wrapped: lower Target Edge "
+    "Length and raise Resolution to wrap such parts, or raise Gap Size to bridge them into one "
+    "body",
+    summary.leftOut.leftOut, summary.leftOut.parts, WrapSession::kLeftOutCells,
+    WrapSession::kLeftOutCells * summary.sizes.cell,
+    summary.sizes.edgeLength.value_or(summary.sizes.cell), summary.sizes.gap);
+  return text;
+}
+
 namespace
 {
 template <typename Array>
@@ -113,7 +146,8 @@ Array* named(Array* array, const char* name, int components, vtkIdType tuples)
 
 // Per vertex: d, -grad d . N, H (h = -H N), |V_i|, N and v_T.
 void addPointArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh,
-  const TargetDistance& field, const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
+  const std::vector<DistanceSample>& samples, const std::vector<Vec3>& tangentialVelocity,
+  vtkPolyData* output)
 {
   SurfaceGeometry g;
   computeGeometry(mesh, x, g);
@@ -127,7 +161,7 @@ void addPointArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh,
   named(tangential.Get(), "TangentialVelocity", 3, nv);
   for (int i = 0; i < nv; ++i)
   {
-    const DistanceSample d = field.sample(x[i]);
+    const DistanceSample& d = samples[i];
     distance->SetValue(i, static_cast<float>(d.value));
     alignment->SetValue(i, static_cast<float>(-d.gradient.dot(g.normal[i])));
     curvature->SetValue(i, static_cast<float>(-g.curvature[i].dot(g.normal[i])));
@@ -168,11 +202,12 @@ void addCellArrays(const std::vector<Vec3>& x, const SurfaceMesh& mesh, vtkPolyD
 }
 } // namespace
 
-void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
-  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output)
+void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh,
+  const std::vector<DistanceSample>& samples, const std::vector<Vec3>& tangentialVelocity,
+  vtkPolyData* output)
 {
   setTriangles(x, mesh.triangles(), output);
-  addPointArrays(x, mesh, field, tangentialVelocity, output);
+  addPointArrays(x, mesh, samples, tangentialVelocity, output);
   addCellArrays(x, mesh, output);
 }
 
@@ -264,7 +299,12 @@ std::string WrapSummary::text() const
     this->distance[1], this->distance[1] / c, this->distance[2], this->distance[2] / c,
     100 * this->smallAngleShare, this->selfIntersections, this->sizes.gap, length,
     this->sizes.cell);
-  return line;
+  std::string text = line;
+  if (this->leftOut.leftOut > 0)
+  {
+    text += "; " + leftOutText(this->leftOut);
+  }
+  return text;
 }
 
 void addSummary(const WrapSummary& summary, vtkPolyData* output)
@@ -286,6 +326,8 @@ void addSummary(const WrapSummary& summary, vtkPolyData* output)
   add("TargetEdgeLength", { summary.sizes.edgeLength.value_or(0) }); // 0: Remeshing off
   add("SmallAngleShare", { summary.smallAngleShare });
   add("ComputeSeconds", { summary.seconds });
+  add("LeftOutParts",
+    { static_cast<double>(summary.leftOut.leftOut), static_cast<double>(summary.leftOut.parts) });
   vtkNew<vtkStringArray> text;
   text->SetName("Summary");
   text->InsertNextValue(summary.text());

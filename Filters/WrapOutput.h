@@ -29,11 +29,12 @@ namespace convert
 Status writeWrap(const WrapSession& session, int wanted, double timeStep, double seconds,
   bool finished, vtkPolyData* output, Notes& notes);
 
-// The wrap's surface as `output`: points x, triangles, point data Distance, AdvectionAlignment,
-// MeanCurvature, CoVolume, Normals, TangentialVelocity; cell data MinAngle, MaxAngle,
-// JacobianCondition (see vtkShrinkWrapFilter.h).
-void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh, const TargetDistance& field,
-  const std::vector<Vec3>& tangentialVelocity, vtkPolyData* output);
+// The wrap's surface as `output`: points x, triangles, point data Distance, AdvectionAlignment
+// (from `samples`, the target's field at x), MeanCurvature, CoVolume, Normals, TangentialVelocity;
+// cell data MinAngle, MaxAngle, JacobianCondition (see vtkShrinkWrapFilter.h).
+void writeSurface(const std::vector<Vec3>& x, const SurfaceMesh& mesh,
+  const std::vector<DistanceSample>& samples, const std::vector<Vec3>& tangentialVelocity,
+  vtkPolyData* output);
 
 // Cell data SelfIntersecting (1 where a triangle crosses another) and field data SelfIntersections
 // (the number of crossing pairs).
@@ -52,6 +53,7 @@ struct WrapSummary
   long long selfIntersections = 0;
   int vertices = 0, steps = 0;
   double seconds = 0;       // computing (fields, start and steps) in this session
+  LeftOutParts leftOut;     // of the target, at the last step (WrapSession::leftOut)
   std::string text() const; // one line: what the output messages show at the end of a run
 };
 WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, double seconds);
@@ -64,8 +66,12 @@ constexpr double kLandedCells = 1.5;
 constexpr double kStillCells = 0.02;
 bool landed(const WrapSummary& summary, const std::optional<double>& motion);
 std::string notLanded(const WrapSummary& summary, const std::optional<double>& motion); // why not
+// What a wrap leaves out of its target, for its Status and its warning.
+std::string leftOutText(const LeftOutParts& parts);
+std::string leftOutWarning(const WrapSummary& summary);
 // As field data: DistancePercentiles, DistancePercentilesInCells (3 each), FieldCellSize, GapSize,
-// TargetEdgeLength, SmallAngleShare, ComputeSeconds, Summary (the text).
+// TargetEdgeLength, SmallAngleShare, ComputeSeconds, LeftOutParts (left out, of parts), Summary
+// (the text).
 void addSummary(const WrapSummary& summary, vtkPolyData* output);
 
 // Field data of the wrap's output: StepIndex, Time and Status; and the output's DATA_TIME_STEP.

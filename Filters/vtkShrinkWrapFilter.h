@@ -20,9 +20,10 @@
  *
  * Output: the surface in the target's coordinates, with point data Distance, AdvectionAlignment,
  * MeanCurvature, CoVolume, Normals and TangentialVelocity, cell data MinAngle, MaxAngle,
- * JacobianCondition and SelfIntersecting, and field data StepIndex, Time, Status ("ok" or why not)
- * and the run's summary (Summary, DistancePercentiles, FieldCellSize, GapSize, TargetEdgeLength,
- * ...).
+ * JacobianCondition and SelfIntersecting, and field data StepIndex, Time, Status ("ok", or why not:
+ * "failed: ...", "self-intersecting: ...", "not landed: ...", "left out: N of the target's M parts
+ * ...") and the run's summary (Summary, DistancePercentiles, FieldCellSize, GapSize,
+ * TargetEdgeLength, LeftOutParts, ...).
  *
  * The properties are those of the panel, whose documentation (Plugin/ShrinkWrap.xml) is the
  * reference: the defaults come from the core's settings (Wrap/WrapSettings.h), where they are

@@ -4,6 +4,7 @@
 #define ShrinkWrap_Progress_h
 
 #include <algorithm>
+#include <chrono>
 #include <functional>
 
 namespace shrinkwrap
@@ -40,6 +41,39 @@ private:
   Callback Report;
   double Begin = 0;
   double End = 1;
+};
+
+// A stop request asked from within a long serial loop (the edits of a remeshing pass, say): called
+// per item, it asks `stop` (empty: never) on the 64th call and then at most every kPollSeconds,
+// reading the clock every 64 calls, and stays true once `stop` said so. `stop` must outlive it.
+class StopPoll
+{
+public:
+  static constexpr double kPollSeconds = 0.1;
+  explicit StopPoll(const std::function<bool()>& stop)
+    : Stop(stop)
+  {
+  }
+  bool operator()()
+  {
+    if (this->Stopped || !this->Stop || ++this->Calls % 64 != 0)
+    {
+      return this->Stopped;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - this->Last).count() < kPollSeconds)
+    {
+      return false;
+    }
+    this->Last = now;
+    return this->Stopped = this->Stop();
+  }
+
+private:
+  const std::function<bool()>& Stop;
+  std::chrono::steady_clock::time_point Last; // none yet: the 64th call asks
+  long long Calls = 0;
+  bool Stopped = false;
 };
 
 // Runs body(first, last) over [0, n) in `chunks` parallel batches, reporting after each batch.

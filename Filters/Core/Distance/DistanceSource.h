@@ -78,6 +78,8 @@ public:
   // hole's rim, an open sheet's edge) and its sharp creases, where the faces on the two sides turn
   // by more than creaseAngle degrees (180: none). None for points.
   virtual std::vector<std::array<Vec3, 2>> rims(double /*creaseAngle*/) const { return {}; }
+  // The triangles measured, welded (null: none, points only).
+  virtual const TriangleSoup* triangles() const { return nullptr; }
 };
 
 class TriangleSource : public DistanceSource
@@ -98,6 +100,7 @@ public:
   const std::vector<char>& sidesConfirmed() const override;
   // Edges of one triangle (welded), and edges of two whose normals differ by more than creaseAngle.
   std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override;
+  const TriangleSoup* triangles() const override { return &this->Soup; }
   // Whether the triangles face into what `field` signs inside: a vote, over up to a few thousand
   // triangles, of the field's side one cell along each normal against one cell against it.
   bool facesInward(const DistanceGrid& field) const;

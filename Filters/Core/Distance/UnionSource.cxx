@@ -69,4 +69,16 @@ std::vector<std::array<Vec3, 2>> UnionSource::rims(double creaseAngle) const
   return rims;
 }
 
+const TriangleSoup* UnionSource::triangles() const
+{
+  for (const auto& part : this->Parts)
+  {
+    if (const TriangleSoup* soup = part->triangles())
+    {
+      return soup;
+    }
+  }
+  return nullptr;
+}
+
 } // namespace shrinkwrap

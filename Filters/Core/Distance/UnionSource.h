@@ -23,6 +23,7 @@ public:
   // The nearest of the parts' nearest points, side 0 and not sure.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override; // all parts' rims
+  const TriangleSoup* triangles() const override; // the first part's that has triangles
 
 private:
   std::vector<std::shared_ptr<const DistanceSource>> Parts;

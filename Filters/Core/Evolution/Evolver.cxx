@@ -7,6 +7,7 @@
 #include "Remeshing/EdgeFlips.h"
 #include "Surface/CotanLaplacian.h"
 #include "Surface/SelfIntersections.h"
+#include "Surface/SurfaceGeometry.h"
 
 #include <Eigen/IterativeLinearSolvers>
 
@@ -362,6 +363,7 @@ StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool 
   this->adjustConnectivity(report);
   if (mendable)
   {
+    const int vanished = this->removeVanishedParts();
     const StepReport mended = this->check(this->Mesh.points());
     if (!mended.ok())
     {
@@ -376,6 +378,7 @@ StepReport Evolver::accept(std::vector<Vec3>& next, std::vector<Vec3>& vt, bool 
     report.collapses = adjusted.collapses;
     report.splits = adjusted.splits;
     report.held = adjusted.held;
+    report.vanished = vanished;
   }
   report.rimMoves = this->coverRims();
   ++this->Steps;
@@ -451,11 +454,11 @@ int Evolver::holdBack(std::vector<Vec3>& next)
   const auto& triangles = this->Mesh.triangles();
   int held = 0;
   std::vector<int> crossed; // the triangles of the crossings vertices were held for
-  for (int round = 0; round < 16; ++round)
+  for (int round = 0; round < 16 && !this->stopped(); ++round)
   {
     // holdNewCrossings settles its own rounds; only the vertices held for angles may make new
     // crossings.
-    held += holdNewCrossings(y, next, triangles, &crossed);
+    held += holdNewCrossings(y, next, triangles, &crossed, this->Stop);
     int moved = 0;
     for (const auto& t : triangles)
     {
@@ -585,7 +588,7 @@ void Evolver::adjustConnectivity(StepReport& report)
       }
     }
     this->HeldNear.clear();
-    this->RecentCrossings.push_back(editCheckedOnce(this->Mesh, reach, recent, edit));
+    this->RecentCrossings.push_back(editCheckedOnce(this->Mesh, reach, recent, edit, this->Stop));
     if (this->RecentCrossings.size() > kRememberedSteps)
     {
       this->RecentCrossings.pop_front();
@@ -607,6 +610,56 @@ void Evolver::adjustConnectivity(StepReport& report)
   {
     this->connectivityChanged(report.splits == 0 && report.collapses == 0);
   }
+}
+
+namespace
+{
+// Parts of the surface this small that fold have vanished (Evolver::removeVanishedParts).
+constexpr int kVanishedVertices = 12;
+
+// The vertices of the part of `mesh` that holds v, if it has at most `limit`; else none.
+std::vector<int> smallPart(const SurfaceMesh& mesh, int v, int limit, std::vector<char>& seen)
+{
+  std::vector<int> part = { v };
+  seen[v] = 1;
+  for (std::size_t k = 0; k < part.size() && static_cast<int>(part.size()) <= limit; ++k)
+  {
+    for (int p = mesh.ringBegin(part[k]); p < mesh.ringEnd(part[k]); ++p)
+    {
+      if (const int j = mesh.ring(p); !seen[j])
+      {
+        seen[j] = 1;
+        part.push_back(j);
+      }
+    }
+  }
+  return static_cast<int>(part.size()) <= limit ? part : std::vector<int>();
+}
+} // namespace
+
+int Evolver::removeVanishedParts()
+{
+  const std::vector<Vec3>& y = this->Mesh.points();
+  std::vector<char> seen(y.size(), 0);
+  std::vector<int> vanished; // a vertex of each part
+  for (const auto& t : this->Mesh.triangles())
+  {
+    if (!seen[t[0]] && smallestAngleBelow(y[t[0]], y[t[1]], y[t[2]], this->Settings.minAngle) &&
+      !smallPart(this->Mesh, t[0], kVanishedVertices, seen).empty())
+    {
+      vanished.push_back(t[0]);
+    }
+  }
+  for (int v : vanished)
+  {
+    this->Mesh.removePart(v);
+  }
+  if (vanished.empty() || !this->Mesh.commit())
+  {
+    return 0; // on failure the mesh is as it was (commit() restores it)
+  }
+  this->connectivityChanged(false);
+  return static_cast<int>(vanished.size());
 }
 
 void Evolver::connectivityChanged(bool sameVertices)

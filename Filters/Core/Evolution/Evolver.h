@@ -150,13 +150,14 @@ struct StepReport
   int collapses = 0; // edges collapsed after the step (vertices removed)
   int splits = 0;    // edges split after the step (vertices added)
   int held = 0;      // vertices held back where fronts met
+  int vanished = 0;  // parts of the surface that shrank to a few vertices and were removed
   int rimMoves = 0;  // vertices moved onto the target's rims after the step
   double smallestAngle =
     M_PI; // radians, over the triangles at the end of the step (before any repair)
   bool ok() const { return this->failure == Failure::None; }
   bool connectivityChanged() const
   {
-    return this->flips > 0 || this->collapses > 0 || this->splits > 0;
+    return this->flips > 0 || this->collapses > 0 || this->splits > 0 || this->vanished > 0;
   }
 };
 
@@ -237,6 +238,10 @@ private:
   // A new solver for the new triangles; the volume redistribution's warm start only for the same
   // vertices.
   void connectivityChanged(bool sameVertices);
+  // Removes the parts of the surface with at most kVanishedVertices vertices that hold a triangle
+  // under the smallest angle: a part of the wrap smaller than the edge length (about a target part
+  // that small) shrinks to a tetrahedron and would fold. Returns how many.
+  int removeVanishedParts();
   std::vector<Vec3>& velocity()
   {
     return this->Mesh.addVertexProperty<Vec3>(kVelocity, Vec3::Zero()).values();

@@ -128,17 +128,22 @@ bool coarsenStart(SurfaceMesh& mesh, double h, double last, const Progress& prog
   const double first = 2 * h > 0 ? std::min(2 * h, last) : last;
   const int stages = 1 + static_cast<int>(std::ceil(std::log2(std::max(last / first, 1.0))));
   int stage = 0;
+  const std::function<bool()> stop = [&] {
+    return !progress.report(static_cast<double>(stage) / stages);
+  };
   for (double length = first;; length = std::min(2 * length, last))
   {
     editCheckedOnce(
-      mesh, 4 * length, [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
+      mesh, 4 * length,
+      [&](SurfaceMesh& m, bool guarded, const std::vector<Box>& only) {
         CollapseSettings collapses;
         collapses.avoidCrossings = guarded;
         collapses.orientDegenerate = true;
         collapses.guardOnlyIn = only;
-        return collapseShortEdges(
-                 m, remeshing.collapseBelow * length, remeshing.splitAbove * length, collapses) > 0;
-      });
+        return collapseShortEdges(m, remeshing.collapseBelow * length,
+                 remeshing.splitAbove * length, collapses, stop) > 0;
+      },
+      stop);
     if (!progress.report(static_cast<double>(++stage) / stages))
     {
       return false;
@@ -158,6 +163,10 @@ bool relaxStart(
   SurfaceMesh& mesh, int relaxation, const FlipSettings& flips, const Progress& progress)
 {
   const long long crossing = findSelfIntersections(mesh.points(), mesh.triangles()).pairs;
+  if (!progress.report(0.2))
+  {
+    return false;
+  }
   RelaxSettings relax;
   relax.flips = flips;
   relax.flips.avoidCrossings = false; // the relaxed surface as a whole is checked below
@@ -166,12 +175,16 @@ bool relaxStart(
     SurfaceMesh relaxed = mesh;
     relax.iterations = iterations;
     relaxTangentially(relaxed, relax);
+    if (!progress.report(1 - 0.6 * iterations / relaxation))
+    {
+      return false;
+    }
     if (findSelfIntersections(relaxed.points(), relaxed.triangles()).pairs <= crossing)
     {
       mesh = std::move(relaxed);
       break;
     }
-    if (!progress.report(1 - static_cast<double>(iterations) / (2 * relaxation)))
+    if (!progress.report(1 - 0.5 * iterations / relaxation))
     {
       return false;
     }
@@ -216,6 +229,10 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
   if (Status made = startSoup(field, targetBox, given, settings, contour, start); !made)
   {
     return made;
+  }
+  if (!progress.report(0.1))
+  {
+    return Status::failure(kAborted);
   }
   specks = removeSpecks(start, kSpeckCells * h);
   Status status = SurfaceMesh::build(start.points, start.triangles, mesh);

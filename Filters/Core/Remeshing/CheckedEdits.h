@@ -12,6 +12,7 @@
 #include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceMesh.h"
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -23,10 +24,11 @@ namespace shrinkwrap
 // around a crossing triangle the edits that may have made it lie. `guardFirst`: boxes guarded from
 // the first try (where recent rounds crossed: a crossing tends to come back where it was, step
 // after step, and would cost a redo each time). Returns the boxes around the crossings this round
-// found.
+// found. `stop`, asked after each round, takes the round's edits unchecked and ends the rounds
+// (a stopped step's result is discarded).
 template <typename Edit>
-std::vector<Box> editCheckedOnce(
-  SurfaceMesh& mesh, double reach, const std::vector<Box>& guardFirst, Edit&& edit)
+std::vector<Box> editCheckedOnce(SurfaceMesh& mesh, double reach,
+  const std::vector<Box>& guardFirst, Edit&& edit, const std::function<bool()>& stop = {})
 {
   std::vector<Box> near = guardFirst, found;
   for (int round = 0; round < 3; ++round)
@@ -34,9 +36,9 @@ std::vector<Box> editCheckedOnce(
     SurfaceMesh trial = mesh;
     const bool changed = edit(trial, !near.empty(), near);
     const SelfIntersections crossings = changed
-      ? findNewSelfIntersections(mesh, trial.points(), trial.triangles())
+      ? findNewSelfIntersections(mesh, trial.points(), trial.triangles(), stop)
       : SelfIntersections{};
-    if (crossings.pairs == 0)
+    if (crossings.pairs == 0 || (stop && stop()))
     {
       mesh = std::move(trial);
       return found;
@@ -50,9 +52,10 @@ std::vector<Box> editCheckedOnce(
 }
 
 template <typename Edit>
-void editCheckedOnce(SurfaceMesh& mesh, double reach, Edit&& edit)
+void editCheckedOnce(
+  SurfaceMesh& mesh, double reach, Edit&& edit, const std::function<bool()>& stop = {})
 {
-  editCheckedOnce(mesh, reach, {}, edit);
+  editCheckedOnce(mesh, reach, {}, edit, stop);
 }
 
 } // namespace shrinkwrap

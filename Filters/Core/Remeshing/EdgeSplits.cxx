@@ -19,12 +19,14 @@ std::vector<std::array<int, 2>> edgesOf(const SurfaceMesh& mesh)
   return edges;
 }
 
-int splitEdges(SurfaceMesh& mesh, const std::vector<std::array<int, 2>>& edges)
+int splitEdges(SurfaceMesh& mesh, const std::vector<std::array<int, 2>>& edges,
+  const std::function<bool()>& stop)
 {
   int splits = 0;
-  for (const auto& e : edges)
+  StopPoll stopped(stop);
+  for (std::size_t k = 0; k < edges.size() && !stopped(); ++k)
   {
-    splits += mesh.split(e[0], e[1]) >= 0;
+    splits += mesh.split(edges[k][0], edges[k][1]) >= 0;
   }
   return splits > 0 && mesh.commit() ? splits : 0;
 }

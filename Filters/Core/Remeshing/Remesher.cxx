@@ -60,12 +60,12 @@ void assignEdgeSizes(SurfaceMesh& mesh, const RemeshSettings& settings)
   }
 }
 
-int splitLongEdges(SurfaceMesh& mesh, double maxLength)
+int splitLongEdges(SurfaceMesh& mesh, double maxLength, const std::function<bool()>& stop)
 {
   int splits = 0;
   // After the first pass only the edges at the new vertices (numbered after the others) can be
   // long.
-  for (int pass = 0, firstNew = 0; pass < 16; ++pass)
+  for (int pass = 0, firstNew = 0; pass < 16 && !(stop && stop()); ++pass)
   {
     std::vector<std::array<int, 2>> longEdges;
     const std::vector<double> sizes = mesh.vertexValues<double>(kEdgeSize); // none: uniform
@@ -79,7 +79,7 @@ int splitLongEdges(SurfaceMesh& mesh, double maxLength)
       }
     }
     firstNew = mesh.vertexCount();
-    const int made = longEdges.empty() ? 0 : splitEdges(mesh, longEdges);
+    const int made = longEdges.empty() ? 0 : splitEdges(mesh, longEdges, stop);
     splits += made;
     if (made == 0)
     {
@@ -116,7 +116,7 @@ bool staysShort(const SurfaceMesh& mesh, const std::vector<Vec3>& x,
 // vertex is among them), since no other vertex moves. So later passes look at a few edges and
 // decide as a pass over all of them would.
 int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength,
-  const CollapseSettings& settings, std::vector<char>& look)
+  const CollapseSettings& settings, std::vector<char>& look, StopPoll& stopped)
 {
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
   const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // edits change the mesh's own
@@ -127,7 +127,7 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength,
   // as the pass began
   const std::vector<double> sizes = mesh.vertexValues<double>(kEdgeSize);
   const std::vector<double> anchors = mesh.vertexValues<double>(kAnchor);
-  for (int a = 0; a < nv; ++a)
+  for (int a = 0; a < nv && !stopped(); ++a)
   {
     for (int p = mesh.ringBegin(a); p < mesh.ringEnd(a); ++p)
     {
@@ -163,14 +163,15 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength,
 }
 } // namespace
 
-int collapseShortEdges(
-  SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings)
+int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength,
+  const CollapseSettings& settings, const std::function<bool()>& stop)
 {
   int collapses = 0;
   std::vector<char> look; // every edge in the first pass
-  for (int pass = 0; pass < 16; ++pass)
+  StopPoll stopped(stop);
+  for (int pass = 0; pass < 16 && !stopped(); ++pass)
   {
-    const int made = collapsePass(mesh, minLength, maxLength, settings, look);
+    const int made = collapsePass(mesh, minLength, maxLength, settings, look, stopped);
     collapses += made;
     if (made == 0)
     {
@@ -228,11 +229,11 @@ RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings)
     {
       assignEdgeSizes(mesh, settings);
     }
-    report.splits += splitLongEdges(mesh, settings.splitAbove * L);
+    report.splits += splitLongEdges(mesh, settings.splitAbove * L, settings.stop);
     if (stopped())
       break;
     report.collapses += collapseShortEdges(
-      mesh, settings.collapseBelow * L, settings.splitAbove * L, settings.collapses);
+      mesh, settings.collapseBelow * L, settings.splitAbove * L, settings.collapses, settings.stop);
     if (stopped())
       break;
     report.flips += equalizeValences(mesh, settings.flips);

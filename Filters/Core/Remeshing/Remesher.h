@@ -52,13 +52,13 @@ struct RemeshReport
 
 // With kEdgeSize on the mesh, the lengths below are those of an edge of size 1, scaled per edge.
 // Splits every edge longer than maxLength at its midpoint, in passes until none is left (at most
-// 16).
-int splitLongEdges(SurfaceMesh& mesh, double maxLength);
+// 16). `stop` (StopPoll) ends the passes early, with the edits made so far committed.
+int splitLongEdges(SurfaceMesh& mesh, double maxLength, const std::function<bool()>& stop = {});
 // Collapses edges shorter than minLength into their midpoints (into an anchored end: kAnchor,
 // EdgeCollapses.h) where no edge then exceeds maxLength and collapseInPass allows it, in passes
-// until none is left (at most 16).
-int collapseShortEdges(
-  SurfaceMesh& mesh, double minLength, double maxLength, const CollapseSettings& settings);
+// until none is left (at most 16); `stop` as for splitLongEdges.
+int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength,
+  const CollapseSettings& settings, const std::function<bool()>& stop = {});
 // One pass of flips that bring the four valences of an edge's triangles closer to 6, within the
 // dihedral guard, leaving out those that flipEdges would flip back (flipGainsAngle of the new
 // edge).

@@ -279,8 +279,9 @@ SelfIntersections findSelfIntersections(
 }
 
 SelfIntersections findNewSelfIntersections(const SurfaceMesh& before, const std::vector<Vec3>& x,
-  const std::vector<std::array<int, 3>>& triangles)
+  const std::vector<std::array<int, 3>>& triangles, const std::function<bool()>& stop)
 {
+  const auto stopped = [&] { return stop && stop(); };
   const std::vector<int> same = samePositions(before, x);
   std::vector<int> made;
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
@@ -291,8 +292,12 @@ SelfIntersections findNewSelfIntersections(const SurfaceMesh& before, const std:
       made.push_back(t);
     }
   }
+  if (stopped())
+  {
+    return fromPairs(triangles.size(), {});
+  }
   const TriangleGrid grid(x, triangles);
-  if (made.empty() || triangles.size() < 2 || grid.empty())
+  if (made.empty() || triangles.size() < 2 || grid.empty() || stopped())
   {
     return fromPairs(triangles.size(), {});
   }
@@ -663,12 +668,14 @@ struct VertexTriangles
 } // namespace
 
 int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
-  const std::vector<std::array<int, 3>>& triangles, std::vector<int>* crossing)
+  const std::vector<std::array<int, 3>>& triangles, std::vector<int>* crossing,
+  const std::function<bool()>& stop)
 {
+  const auto stopped = [&] { return stop && stop(); };
   std::vector<int> moving;
   std::vector<Box> swept = sweptBoxes(previous, next, triangles, moving);
   const TriangleGrid grid(std::move(swept), TriangleGrid::cellSizeFor(next, triangles));
-  if (triangles.size() < 2 || grid.empty())
+  if (triangles.size() < 2 || grid.empty() || stopped())
   {
     return 0;
   }
@@ -679,7 +686,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   std::vector<std::pair<int, int>> found = crossingsOf(grid, next, triangles, moving);
   std::unique_ptr<VertexTriangles> around; // built when a first vertex is held
   int held = 0;
-  while (!found.empty())
+  while (!found.empty() && !stopped())
   {
     std::vector<int> moved; // the vertices this round holds
     for (const auto& st : found)

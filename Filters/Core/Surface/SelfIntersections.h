@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -33,18 +34,22 @@ SelfIntersections findSelfIntersections(
 // The crossings that edits made on a surface that did not cross itself (`before`): those of the
 // triangles of (points, triangles) that `before` does not have (the same corners at the same
 // positions, in any numbering; a split's halves count as made) with any other. Two triangles the
-// edits left as they were did not cross before and do not now.
+// edits left as they were did not cross before and do not now. `stop`, asked between the phases,
+// ends the check early with no crossing found (a stopped step's result is discarded).
 SelfIntersections findNewSelfIntersections(const SurfaceMesh& before,
-  const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
+  const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+  const std::function<bool()>& stop = {});
 
 // Fronts stop where they meet: the vertices of each pair of triangles that crosses at `next` but
 // did not at `previous` (the same triangles) go back to their `previous` positions, again until no
 // new crossing is left (at worst every vertex of a crossing stays where it was). One grid of the
 // boxes swept over the step serves every round; a round re-tests only the triangles it moved.
 // Returns how many vertices were held; `crossing`, if given, gets the triangles of the crossings
-// they were held for.
+// they were held for. `stop`, asked between the rounds, ends them early (a stopped step's result is
+// discarded).
 int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
-  const std::vector<std::array<int, 3>>& triangles, std::vector<int>* crossing = nullptr);
+  const std::vector<std::array<int, 3>>& triangles, std::vector<int>* crossing = nullptr,
+  const std::function<bool()>& stop = {});
 
 // Boxes `reach` around the triangles that `found` marks: where the edits that made them must be
 // guarded.

@@ -509,6 +509,38 @@ bool SurfaceMesh::collapse(int keep, int gone, const Vec3& position)
   return true;
 }
 
+int SurfaceMesh::removePart(int v)
+{
+  if (v < 0 || v >= this->vertexCount())
+  {
+    return 0;
+  }
+  this->beginEdit();
+  std::vector<int> part = { v };
+  this->Edits->removedVertex[v] = 1;
+  ++this->Edits->removals;
+  for (std::size_t k = 0; k < part.size(); ++k)
+  {
+    const int i = part[k];
+    for (int p = this->ringBegin(i); p < this->ringEnd(i); ++p)
+    {
+      const int t = this->ringTriangle(p);
+      if (this->Triangles[t][0] >= 0)
+      {
+        this->setTriangle(t, kRemoved);
+        ++this->Edits->removals;
+      }
+      if (const int j = this->ring(p); !this->Edits->removedVertex[j])
+      {
+        this->Edits->removedVertex[j] = 1;
+        ++this->Edits->removals;
+        part.push_back(j);
+      }
+    }
+  }
+  return static_cast<int>(part.size());
+}
+
 Status SurfaceMesh::commit()
 {
   if (!this->Edits)

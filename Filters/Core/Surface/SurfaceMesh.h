@@ -97,6 +97,10 @@ public:
   // triangles on the edge disappear. The caller checks the link condition (only the two opposite
   // vertices are neighbours of both), which keeps the genus.
   bool collapse(int keep, int gone, const Vec3& position);
+  // Removes the connected part of the surface that holds vertex v (as the rings of the last commit
+  // join it; none of its triangles edited since), leaving a closed 2-manifold of the other parts;
+  // returns its vertex count (0: v is not a vertex).
+  int removePart(int v);
   bool edited() const { return this->Edits != nullptr; }
   // Renumbers and rebuilds the rings after edits; on failure (it should not happen: the edits keep
   // a manifold) the mesh is restored to the last commit.

@@ -15,18 +15,13 @@ namespace
 constexpr double kFieldsShare = 0.5;
 
 Status startOf(const WrapTarget& target, const WrapPlan& plan, const WrapFields& fields,
-  const Contour& contour, const Progress& progress, Notes& notes, SurfaceMesh& start)
+  const Contour& contour, const Progress& progress, SurfaceMesh& start)
 {
+  // The specks left out of the start are not the target's parts: what the wrap leaves out of the
+  // target is measured on its last step (WrapSession::leftOut).
   int specks = 0;
-  const Status status = startingSurface(fields.driving.grid(), plan.targetBox, target.start.get(),
-    plan.start(), plan.settings.evolution.flips, contour, start, specks, progress);
-  if (specks > 0)
-  {
-    warn(notes,
-      "Left out " + std::to_string(specks) +
-        " piece(s) of the starting surface smaller than two cells of the distance field");
-  }
-  return status;
+  return startingSurface(fields.driving.grid(), plan.targetBox, target.start.get(), plan.start(),
+    plan.settings.evolution.flips, contour, start, specks, progress);
 }
 } // namespace
 
@@ -66,7 +61,7 @@ Status startWrap(const WrapTarget& target, const WrapPlan& plan, const Contour& 
   SurfaceMesh start;
   if (status)
   {
-    status = startOf(target, plan, fields, contour, progress.stage(kFieldsShare, 1), notes, start);
+    status = startOf(target, plan, fields, contour, progress.stage(kFieldsShare, 1), start);
   }
   if (status)
   {

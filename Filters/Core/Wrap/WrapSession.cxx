@@ -28,8 +28,9 @@ Status WrapSession::create(WrapFields fields, const WrapPlan& plan, const Surfac
   s->Fields = std::move(fields);
   const Vec3 size = plan.targetBox.size();
   s->Radius = 0.5 * std::max(size.minCoeff(), 1e-3 * size.maxCoeff());
-  s->Evolving = std::make_unique<Evolver>(start, s->Evolution, &s->Fields.driving, domain,
-    s->scaleFor(start.vertexCount()), plan.targetBox.center());
+  s->Center = plan.targetBox.center();
+  s->Evolving = std::make_unique<Evolver>(
+    start, s->Evolution, &s->Fields.driving, domain, s->scaleFor(start.vertexCount()), s->Center);
   if (!s->Evolving->status())
   {
     return s->Evolving->status();
@@ -59,6 +60,8 @@ void WrapSession::cacheCurrent(bool connectivityChanged, bool edited)
     this->EvolverTriangles =
       std::make_shared<const std::vector<std::array<int, 3>>>(e.mesh().triangles());
   }
+  this->LastLeftOut = {}; // the steps' addresses may be reused
+  this->Samples.erase(e.steps());
   this->Cache.store(
     e.steps(), { e.state(), e.tangentialVelocity(), this->EvolverTriangles, e.scale(), edited });
 }
@@ -117,15 +120,73 @@ bool WrapSession::advanceTo(int k, const Progress& progress)
   });
   if (!stopped)
   {
-    this->Cache.thin(this->Plan.settings.cacheMiB * 1024 * 1024, target);
+    double sampled = 0; // bytes of the samples shown, within the cache's memory
+    for (const auto& [step, samples] : this->Samples)
+    {
+      sampled += static_cast<double>(samples.size() * sizeof(DistanceSample));
+    }
+    this->Cache.thin(this->Plan.settings.cacheMiB * 1024 * 1024 - sampled, target);
+    for (auto k = this->Samples.begin(); k != this->Samples.end();)
+    {
+      k = this->Cache.has(k->first) ? std::next(k) : this->Samples.erase(k);
+    }
+    this->releaseIfOver();
   }
   return !stopped;
+}
+
+void WrapSession::releaseIfOver()
+{
+  const int last = this->LastGood >= 0 ? this->LastGood : this->Plan.settings.steps;
+  const DistanceSource* exact = this->Fields.target.exact();
+  const TriangleSoup* target = exact ? exact->triangles() : nullptr;
+  if (!target || this->Computed == 0)
+  {
+    return;
+  }
+  std::size_t vertices = 0;
+  for (int k = 0; k <= last; ++k)
+  {
+    if (!this->Cache.has(k))
+    {
+      return;
+    }
+    vertices += this->Cache.atOrBefore(k).second.state.size();
+  }
+  if (target->triangles.size() < vertices)
+  {
+    return; // measuring the samples would cost more than the target's memory is worth
+  }
+  for (int k = 0; k <= last; ++k)
+  {
+    this->targetSamples(this->surface(k));
+  }
+  this->leftOut(last);
+  this->Evolving.reset();
+  this->Fields = WrapFields();
+}
+
+const std::vector<DistanceSample>& WrapSession::targetSamples(const Surface& surface) const
+{
+  auto found = this->Samples.find(surface.step);
+  if (found == this->Samples.end())
+  {
+    std::vector<DistanceSample> samples(surface.points.size());
+    parallelFor(0, static_cast<Index>(samples.size()), [&](Index b, Index e) {
+      for (Index i = b; i < e; ++i)
+      {
+        samples[i] = this->Fields.target.sample(surface.points[i]);
+      }
+    });
+    found = this->Samples.emplace(surface.step, std::move(samples)).first;
+  }
+  return found->second;
 }
 
 WrapSession::Surface WrapSession::surface(int k) const
 {
   const auto& found = this->Cache.atOrBefore(this->shown(k));
-  return { found.first, unscaled(found.second.state, found.second.scale, this->Evolving->center()),
+  return { found.first, unscaled(found.second.state, found.second.scale, this->Center),
     &found.second };
 }
 
@@ -162,12 +223,32 @@ std::optional<double> WrapSession::meanMotion(int k) const
   return std::abs(v1 - v0) / (a1 * cell);
 }
 
+LeftOutParts WrapSession::leftOut(int k) const
+{
+  Surface now = this->surface(k);
+  const DistanceSource* exact = this->Fields.target.exact();
+  const TriangleSoup* target = exact ? exact->triangles() : nullptr;
+  if (!target || now.cached == this->LastLeftOut.surface)
+  {
+    return target ? this->LastLeftOut.parts : LeftOutParts();
+  }
+  TriangleSoup wrap{ std::move(now.points), *now.cached->triangles };
+  this->LastLeftOut = { now.cached,
+    leftOutParts(*target, wrap, kLeftOutCells * this->Plan.lattice.spacing.maxCoeff()) };
+  return this->LastLeftOut.parts;
+}
+
 Status WrapSession::edit(const std::function<void(SurfaceMesh&)>& change)
 {
+  if (this->released())
+  {
+    return Status::failure("the run is over: its evolver is released");
+  }
   Evolver& e = *this->Evolving;
   Status status = e.edit(change);
   e.setScale(this->scaleFor(e.mesh().vertexCount()));
   this->Cache.dropAfter(e.steps());
+  this->Samples.erase(this->Samples.upper_bound(e.steps()), this->Samples.end());
   this->LastGood = -1;
   this->Failure.clear();
   this->cacheCurrent(true, true);

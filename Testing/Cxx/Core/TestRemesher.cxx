@@ -1,7 +1,7 @@
 // Isotropic remeshing (groundwork of issue #10): a coarse sphere refined and a fine one coarsened
 // to the target edge length, closed, same genus, the shape kept, valences near 6, good angles;
 // vertex data follows the edits; anchored vertices stay in place through collapses; adaptive sizes
-// from the curvature; refused settings.
+// from the curvature; refused settings; a stop within a pass.
 #include "Remeshing/Remesher.h"
 #include "Surface/Icosphere.h"
 #include "Surface/SurfaceGeometry.h"
@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <utility>
 
 namespace
@@ -251,6 +252,28 @@ void refused()
   SW_CHECK(!remesh(mesh, settings).status && mesh.vertexCount() == 42,
     "L = 0 refused, the mesh untouched");
 }
+// Issue #61: a stop asked for ends a pass's edits early (StopPoll: on its 64th edit), leaving a
+// closed surface with the edits made so far; splits stop before their first pass. A stop never
+// asked for changes nothing, asked at most once per 64 edits.
+void stopsWithinAPass()
+{
+  int asked = 0;
+  const std::function<bool()> yes = [&] { return ++asked > 0; };
+  const std::function<bool()> no = [&] { return ++asked < 0; };
+  SurfaceMesh fine = testing::meshOf(icosphere(5)), whole = fine, split = fine;
+  const CollapseSettings collapses;
+  const int stopped = collapseShortEdges(fine, 0.1, 0.2, collapses, yes);
+  SurfaceMesh rebuilt;
+  const bool closed =
+    static_cast<bool>(SurfaceMesh::build(fine.points(), fine.triangles(), rebuilt));
+  asked = 0;
+  const int all = collapseShortEdges(whole, 0.1, 0.2, collapses, no);
+  SW_CHECK(stopped > 0 && stopped < 64 && closed && all > 1000 && asked <= 10242 / 64 * 16 + 16,
+    "collapses stopped at the 64th vertex (" << stopped << " of " << all << ", the stop asked "
+                                             << asked << " times unstopped)");
+  SW_CHECK(splitLongEdges(split, 0.01, yes) == 0 && split.vertexCount() == 10242,
+    "splits stopped before their first pass");
+}
 } // namespace
 
 int TestRemesher(int, char*[])
@@ -263,6 +286,7 @@ int TestRemesher(int, char*[])
     laterPassesMissNothing();
     adaptive();
     refused();
+    stopsWithinAPass();
   });
   return testing::finish("TestRemesher");
 }

@@ -1,6 +1,6 @@
 // The editable surface mesh: one-rings of icospheres (eq. (9) counts), refused surfaces, and local
 // edits (split, flip, collapse) whose vertex data follows them; a commit's rings, rebuilt only
-// where the edits touched, equal those of the surface built anew.
+// where the edits touched, equal those of the surface built anew; a part removed whole.
 #include "Remeshing/EdgeSplits.h"
 #include "Remeshing/Remesher.h"
 #include "Surface/Icosphere.h"
@@ -228,6 +228,42 @@ void commitsAsBuilt()
     "after each of 9 rounds (" << edits << " edits) the rings equal a fresh build's");
 }
 
+// Three spheres in one mesh: removing the middle one's part leaves the other two closed, with their
+// vertex data; a vertex that is none removes nothing.
+void removedParts()
+{
+  TriangleSoup three;
+  for (int k = 0; k < 3; ++k)
+  {
+    const TriangleSoup one = icosphere(k + 1, Vec3(3.0 * k, 0, 0));
+    const int first = static_cast<int>(three.points.size());
+    three.points.insert(three.points.end(), one.points.begin(), one.points.end());
+    for (const auto& t : one.triangles)
+    {
+      three.triangles.push_back({ first + t[0], first + t[1], first + t[2] });
+    }
+  }
+  SurfaceMesh mesh = meshOf(three);
+  auto id = mesh.addVertexProperty<double>("v:x", 0);
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+  {
+    id[i] = mesh.points()[i].x();
+  }
+  const int removed = mesh.removePart(42 + 5); // a vertex of the level-2 sphere (162 vertices)
+  const bool committed = static_cast<bool>(mesh.commit());
+  id = mesh.vertexProperty<double>("v:x");
+  bool dataFollows = true;
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+  {
+    dataFollows = dataFollows && id[i] == mesh.points()[i].x() && std::abs(id[i] - 3.0) > 1.5;
+  }
+  SW_CHECK(removed == 162 && committed && mesh.vertexCount() == 42 + 642 &&
+      mesh.triangleCount() == 80 + 1280 && sameAsBuilt(mesh) && dataFollows,
+    "the middle sphere's part removed (" << removed << " vertices), the others closed");
+  SW_CHECK(mesh.removePart(-1) == 0 && mesh.removePart(mesh.vertexCount()) == 0,
+    "no vertex, no part removed");
+}
+
 } // namespace
 
 int TestSurfaceMesh(int, char*[])
@@ -237,6 +273,7 @@ int TestSurfaceMesh(int, char*[])
     refusedSurfaces();
     edits();
     commitsAsBuilt();
+    removedParts();
   });
   return testing::finish("TestSurfaceMesh");
 }

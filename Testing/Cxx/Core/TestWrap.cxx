@@ -1,11 +1,14 @@
 // A wrap's parts below the filter: a session that is edited between steps (a split surface evolves
 // as the same surface given from the start, also when resumed from the cache), and a point cloud's
-// automatic sizes (AutomaticSizes.h).
+// automatic sizes (AutomaticSizes.h), the target's parts a wrap leaves out (LeftOut.h), and a
+// finished session's release of what only the evolution needs.
+#include "Distance/DistanceSource.h"
 #include "Distance/SignedDistance.h"
 #include "Remeshing/EdgeSplits.h"
 #include "Surface/Icosphere.h"
 #include "TestUtilities.h"
 #include "Wrap/AutomaticSizes.h"
+#include "Wrap/LeftOut.h"
 #include "Wrap/WrapSession.h"
 
 #include <cmath>
@@ -109,6 +112,50 @@ void splitsBetweenSteps()
     again->computedSteps() == computed + 5, "step 15 was recomputed from the edited step 10");
   SW_CHECK(largestDistance(once->surface(15).points, again->surface(15).points) == 0,
     "resuming after an edit from the cache is bit for bit");
+}
+
+// Issue #61, item 9: a finished run whose target's triangles outnumber its cached vertices releases
+// the evolver and the fields (a large target's tree), and shows every step as before: the same
+// points and the same samples of the target's field. One with a small target keeps them.
+void releasedWhenOver()
+{
+  const auto sessionOn = [](int targetLevel, std::unique_ptr<WrapSession>& session) {
+    auto exact = std::make_shared<const TriangleSource>(icosphere(targetLevel));
+    const WrapFields fields{ TargetDistance(unitSphereField(), exact),
+      TargetDistance(unitSphereField(), exact) };
+    Box box;
+    box.extend(Vec3::Constant(-1));
+    box.extend(Vec3::Constant(1));
+    WrapPlan plan = planWithoutRemeshing(box);
+    plan.settings.steps = 20;
+    return WrapSession::create(fields, plan, meshOf(icosphere(2, Vec3::Zero(), 1.6)), session);
+  };
+  std::unique_ptr<WrapSession> large, small;
+  SW_CHECK(
+    sessionOn(6, large) && sessionOn(1, small), "sessions on targets of 81,920 and 80 triangles");
+  if (!large || !small)
+  {
+    return;
+  }
+  large->advanceTo(10);
+  const std::vector<Vec3> points = large->surface(5).points;
+  const std::vector<DistanceSample> samples = large->targetSamples(large->surface(5));
+  SW_CHECK(!large->released(), "not released before its last step");
+  large->advanceTo(20);
+  small->advanceTo(20);
+  const WrapSession::Surface again = large->surface(5);
+  const std::vector<DistanceSample>& later = large->targetSamples(again);
+  bool same = again.points == points && later.size() == samples.size();
+  for (std::size_t i = 0; same && i < later.size(); ++i)
+  {
+    same = later[i].value == samples[i].value && later[i].gradient == samples[i].gradient;
+  }
+  SW_CHECK(large->released() && large->fields().target.empty() && same &&
+      large->targetSamples(large->surface(20)).size() == large->surface(20).points.size(),
+    "released at its last step, step 5 shown as before");
+  SW_CHECK(!large->edit([](SurfaceMesh&) {}), "no edit after the release");
+  SW_CHECK(!small->released() && !small->fields().target.empty(),
+    "a run on 80 triangles keeps its fields (measuring 21 steps' samples would cost more)");
 }
 
 // The cell of the field that a wrap with `settings` places around `box` (no given start).
@@ -218,6 +265,33 @@ void sparseCloudResolution()
   }
 }
 
+// A wrap (the unit sphere) and a target of four parts: a sphere just inside it, a grain far
+// outside, one at its centre and one just outside it. Only the far grain outside is left out; a
+// target of one part is the wrap's.
+void leftOut()
+{
+  const TriangleSoup wrap = icosphere(3);
+  TriangleSoup target;
+  for (const auto& [center, radius] : std::vector<std::pair<Vec3, double>>{ { Vec3::Zero(), 0.9 },
+         { Vec3(3, 0, 0), 0.05 }, { Vec3::Zero(), 0.05 }, { Vec3(0, 1.1, 0), 0.05 } })
+  {
+    const TriangleSoup part = icosphere(1, center, radius);
+    const int first = static_cast<int>(target.points.size());
+    target.points.insert(target.points.end(), part.points.begin(), part.points.end());
+    for (const auto& t : part.triangles)
+    {
+      target.triangles.push_back({ first + t[0], first + t[1], first + t[2] });
+    }
+  }
+  const LeftOutParts four = leftOutParts(target, wrap, 0.2);
+  SW_CHECK(four.parts == 4 && four.leftOut == 1,
+    "the far grain outside is left out (" << four.leftOut << " of " << four.parts << " parts)");
+  const LeftOutParts none = leftOutParts(target, wrap, 5);
+  const LeftOutParts one = leftOutParts(icosphere(2, Vec3(9, 0, 0)), wrap, 0.2);
+  SW_CHECK(none.leftOut == 0 && one.parts == 1 && one.leftOut == 0,
+    "within the margin, and a target of one part: none left out");
+}
+
 } // namespace
 
 int TestWrap(int, char*[])
@@ -227,6 +301,8 @@ int TestWrap(int, char*[])
     sparseCloudResolution();
     splitsBetweenSteps();
     pointSizes();
+    leftOut();
+    releasedWhenOver();
   });
   return testing::finish("TestWrap");
 }

@@ -1,7 +1,8 @@
 // Inputs that used to give a wrong result reported "ok": a target whose triangles all face inwards,
 // a closed mesh written double-sided (every triangle in both orientations), and a run that has
-// not landed, a target far from the origin. Each now wraps right or says why. And a long setup (the
-// field, the gap closing, the start) reports progress and stops at an abort.
+// not landed, a target far from the origin, sand (many parts too small to wrap). Each now wraps
+// right or says why. And a long setup (the field, the gap closing, the start) reports progress and
+// stops at an abort.
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
@@ -20,10 +21,12 @@
 #include <vtkPolyData.h>
 #include <vtkPolygon.h>
 #include <vtkReverseSense.h>
+#include <vtkSelectEnclosedPoints.h>
 #include <vtkSphereSource.h>
 #include <vtkStringArray.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -168,6 +171,82 @@ void notLanded()
   out = wrapped(wrap, warnings);
   SW_CHECK(statusOf(out) == "ok" && warnings.empty(),
     "200 steps: ok (" << statusOf(out) << "; " << warnings << ")");
+}
+
+// Sand: 10,000 disjoint tetrahedra 0.005 across in a unit cube, far smaller than the default edges.
+// Grains closer than the Gap Size are bridged; the others cannot be wrapped alone. The run neither
+// fails (a grain's part of the wrap shrinks to nothing and goes) nor says "ok" while grains lie
+// outside the wrap: Status and a warning count the parts left out, as the test counts them (grains
+// not enclosed by the wrap, farther than 2 cells from it).
+void sand()
+{
+  constexpr int kGrains = 10000;
+  constexpr double kSize = 0.005;
+  const double corners[4][3] = { { 1, 1, 1 }, { 1, -1, -1 }, { -1, 1, -1 }, { -1, -1, 1 } };
+  const vtkIdType faces[4][3] = { { 0, 1, 2 }, { 0, 3, 1 }, { 0, 2, 3 }, { 1, 3, 2 } };
+  for (unsigned draw : { 1u, 2u })
+  {
+    std::mt19937 random(draw);
+    std::uniform_real_distribution<double> uniform(-0.5, 0.5);
+    vtkNew<vtkPoints> points, centers;
+    vtkNew<vtkCellArray> triangles;
+    for (int g = 0; g < kGrains; ++g)
+    {
+      const double c[3] = { uniform(random), uniform(random), uniform(random) };
+      centers->InsertNextPoint(c);
+      const vtkIdType first = points->GetNumberOfPoints();
+      for (const auto& k : corners)
+      {
+        points->InsertNextPoint(
+          c[0] + k[0] * kSize / 2, c[1] + k[1] * kSize / 2, c[2] + k[2] * kSize / 2);
+      }
+      for (const auto& f : faces)
+      {
+        const vtkIdType ids[3] = { first + f[0], first + f[1], first + f[2] };
+        triangles->InsertNextCell(3, ids);
+      }
+    }
+    vtkNew<vtkPolyData> target;
+    target->SetPoints(points);
+    target->SetPolys(triangles);
+    vtkNew<vtkShrinkWrapFilter> wrap;
+    wrap->SetInputData(target);
+    std::string warnings;
+    vtkPolyData* out = wrapped(wrap, warnings);
+    const std::string status = statusOf(out);
+
+    vtkNew<vtkPolyData> grains;
+    grains->SetPoints(centers);
+    vtkNew<vtkSelectEnclosedPoints> enclosed;
+    enclosed->SetInputData(grains);
+    enclosed->SetSurfaceData(out);
+    enclosed->Update();
+    vtkNew<vtkCellLocator> locator;
+    locator->SetDataSet(out);
+    locator->BuildLocator();
+    const double cell = out->GetFieldData()->GetArray("FieldCellSize")->GetComponent(0, 0);
+    int surely = 0, maybe = 0; // outside by more than 2 cells and the grain's size; 2 cells
+    for (vtkIdType g = 0; g < kGrains && out->GetNumberOfPoints() > 0; ++g)
+    {
+      double x[3], c[3], d2;
+      vtkIdType id;
+      int sub;
+      centers->GetPoint(g, x);
+      locator->FindClosestPoint(x, c, id, sub, d2);
+      const bool outside = !enclosed->IsInside(g);
+      surely += outside && std::sqrt(d2) > 2 * cell + kSize;
+      maybe += outside && std::sqrt(d2) > 2 * cell - kSize;
+    }
+    vtkDataArray* counted = out->GetFieldData()->GetArray("LeftOutParts");
+    const double left = counted ? counted->GetComponent(0, 0) : -1;
+    std::cout << "sand, draw " << draw << ": " << status << "; " << surely << " to " << maybe
+              << " grains outside the wrap by more than 2 cells" << std::endl;
+    SW_CHECK(out->GetNumberOfPoints() > 0 && status.rfind("left out: ", 0) == 0 &&
+        warnings.find("Left out ") != std::string::npos && left >= surely && left <= maybe &&
+        counted->GetComponent(0, 1) == kGrains,
+      "sand, draw " << draw << ": the parts left out said (" << status << "; LeftOutParts " << left
+                    << ", grains outside " << surely << " to " << maybe << ")");
+  }
 }
 
 // The sphere in UTM-like coordinates (double points): the same wrap as at the origin, moved.
@@ -322,6 +401,7 @@ int TestHonestResults(int, char*[])
   doubleSidedTarget();
   notLanded();
   farFromOrigin();
+  sand();
   abortInSetup();
   return testing::finish("TestHonestResults");
 }

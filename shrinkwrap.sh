@@ -3,7 +3,8 @@
 # configures, builds, then runs one of
 #   demo   the main job on the default data (Data/trefoil.obj): out/trefoil_sdf.vti and .png
 #   test   the whole test suite through ctest, then the C++ tests again under AddressSanitizer
-#   bench  the benchmarks of Testing/Benchmarks (peers: OpenVDB, vtkImplicitPolyDataDistance)
+#   bench  the benchmarks of Testing/Benchmarks (peers: OpenVDB, vtkImplicitPolyDataDistance, CGAL 6.0's
+#          and 5.5's alpha wrap)
 #   packages  prints the Debian packages that the build folder's configuration may use
 # Every step is idempotent: a second run only rebuilds what changed.
 set -euo pipefail
@@ -71,6 +72,23 @@ fetch_cgal_meshes() {
     "$dir/data/meshes/bunny00.off" > "$dir/data/meshes/bunny00.obj"
 }
 
+# CGAL 6.0's headers (Debian 13's libcgal-dev 6.0.1, header-only) for the alpha wrap users have today,
+# downloaded through a sources list of their own and unpacked into the build folder: nothing on the
+# system changes. The benchmarks build the peer against them beside the system's CGAL 5.5.
+fetch_cgal6() {
+  local dir="$build/cgal6"
+  [ -f "$dir/usr/include/CGAL/version.h" ] && return
+  echo "== fetching CGAL 6.0 (Debian 13's libcgal-dev, into $dir)"
+  local apt="$dir/apt"
+  mkdir -p "$apt/lists/partial" "$apt/cache/archives/partial"
+  echo "deb http://deb.debian.org/debian trixie main" > "$apt/sources.list"
+  local options=(-o Dir::Etc::SourceList="$apt/sources.list" -o Dir::Etc::SourceParts=/dev/null
+    -o Dir::State::Lists="$apt/lists" -o Dir::Cache="$apt/cache")
+  apt-get "${options[@]}" update -qq &&
+    (cd "$apt" && apt-get "${options[@]}" download libcgal-dev >/dev/null 2>&1) &&
+    dpkg -x "$apt"/libcgal-dev_6.*.deb "$dir" && rm -rf "$apt"
+}
+
 configure_and_build() { # folder, extra cmake arguments...
   local dir="$1"; shift
   cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHRINKWRAP_CGAL_MESHES="$build/cgal/data/meshes" "$@" >/dev/null
@@ -100,7 +118,8 @@ case "$mode" in
     ;;
   bench)
     fetch_cgal_meshes
-    configure_and_build "$build" -DSHRINKWRAP_BENCHMARKS=ON
+    fetch_cgal6
+    configure_and_build "$build" -DSHRINKWRAP_BENCHMARKS=ON -DSHRINKWRAP_CGAL6_INCLUDE="$build/cgal6/usr/include"
     bash Testing/Benchmarks/run.sh "$build"
     ;;
   *)

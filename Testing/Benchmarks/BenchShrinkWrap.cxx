@@ -33,6 +33,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/alpha_wrap_3.h>
+#include <CGAL/version.h>
 
 #include <vtkCellArray.h>
 #include <vtkContourFilter.h>
@@ -56,6 +57,8 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using CgalMesh = CGAL::Surface_mesh<Point>;
 using Clock = std::chrono::steady_clock;
+// The peer's rows name its CGAL: 5.5 (Debian 12) or 6.0 (BenchShrinkWrapCGAL6).
+const std::string kAlphaWrap = std::string("alpha_wrap_3 (CGAL ") + CGAL_VERSION_STR + ")";
 using shrinkwrap::TriangleSoup;
 using shrinkwrap::Vec3;
 
@@ -279,7 +282,7 @@ void cloudRows(const TriangleSoup& target, const CloudSampling& sampling,
       wrapped.clear();
       CGAL::alpha_wrap_3(cgalPoints, alpha, offset, wrapped);
     });
-    row("alpha_wrap_3 diag/" + std::to_string(divisor), total, soupOf(wrapped), target, "ok");
+    row(kAlphaWrap + " diag/" + std::to_string(divisor), total, soupOf(wrapped), target, "ok");
     if (!out.empty())
     {
       write(soupOf(wrapped), out + "_alphawrap_" + std::to_string(divisor) + ".vtp");
@@ -517,7 +520,7 @@ int main(int argc, char* argv[])
         CGAL::alpha_wrap_3(points, faces, alpha, offset, wrapped);
       });
       const TriangleSoup soup = soupOf(wrapped);
-      row("alpha_wrap_3 diag/" + std::to_string(divisor), total, soup, target, "ok");
+      row(kAlphaWrap + " diag/" + std::to_string(divisor), total, soup, target, "ok");
       if (!out.empty())
       {
         write(soup, out + "/" + name + "_alphawrap_" + std::to_string(divisor) + ".vtp");

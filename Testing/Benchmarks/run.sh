@@ -44,6 +44,9 @@ echo
 "$build/bin/BenchEvolver"
 
 echo
+# The alpha wrap users have today: CGAL 6.0 (BenchShrinkWrapCGAL6), else the system's 5.5.
+wrapbench="$build/bin/BenchShrinkWrapCGAL6"
+[ -x "$wrapbench" ] || wrapbench="$build/bin/BenchShrinkWrap"
 echo "## Shrink Wrap beside CGAL's alpha_wrap_3, $(date -u +%Y-%m-%d)"
 echo
 echo "Shrink Wrap at its defaults and at Target Edge Length diagonal / 25 and / 100, beside alpha_wrap_3 at"
@@ -52,7 +55,7 @@ echo "on each surface plus its vertices, one-sided distances to the other surfac
 echo "the target's diagonal), crossing triangle pairs (ours; CGAL's does_self_intersect in brackets),"
 echo "closed and manifold, genus, triangles with a minimum angle below 20 degrees. Times include our field."
 mkdir -p "$build/wraps"
-"$build/bin/BenchShrinkWrap" "$build/cgal/data/meshes" --out "$build/wraps" 2>/dev/null
+"$wrapbench" "$build/cgal/data/meshes" --out "$build/wraps" 2>/dev/null
 "$(dirname "$0")/../run-with-x.sh" pvbatch "$(dirname "$0")/render_wraps.py" "$build/wraps" camel "$build/wraps/wraps_camel.png" 1,0,0 >/dev/null 2>&1 &&
   echo "Picture of the camel, its wrap and alpha wrap's: $build/wraps/wraps_camel.png"
 
@@ -72,7 +75,7 @@ for count in 20000 200000; do
     # vtkSurfaceReconstructionFilter takes 5-6 minutes per mesh at 200,000 points and more than 15 on noisy
     # ones (RESULTS.md, 2026-11-25): there alpha wrap alone is the peer.
     peers=""; [ "$count" = 200000 ] && peers="--no-reconstruction"
-    "$build/bin/BenchShrinkWrap" "$build/cgal/data/meshes" --meshes "$clouds" --points "$count" --noise "$noise" \
+    "$wrapbench" "$build/cgal/data/meshes" --meshes "$clouds" --points "$count" --noise "$noise" \
       --out "$build/wraps" $peers 2>/dev/null | grep -v '^Shrink Wrap:\|^(.*points, noise'
     if [ "$count" = 20000 ] && [ "$noise" = 0 ]; then
       "$(dirname "$0")/../run-with-x.sh" pvbatch "$(dirname "$0")/render_wraps.py" "$build/wraps" camel_points \

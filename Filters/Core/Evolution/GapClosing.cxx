@@ -215,10 +215,11 @@ ClosingSites closingSites(const DistanceGrid& field, const DistanceSource* targe
 // nearer than r to the node's own front point. The passes find a site near the nearest boundary
 // point, not always on it: where they leave e above r - d outside the target, the node's own
 // boundary point decides (its distance bounds e from above, and equals r - d where it is clear).
-// Inside the target, where the wrap never goes, r - e only bounds d.
-std::vector<float> closedValues(const DistanceGrid& field, const DistanceSource* target,
-  double radius, const std::vector<char>& inside, bool fillCavities, const ClosingSites& c,
-  const std::vector<float>& e)
+// Inside the target, where the wrap never goes, r - e only bounds d. False when `progress` asked to
+// stop (reported over batches of nodes).
+bool closedValues(const DistanceGrid& field, const DistanceSource* target, double radius,
+  const std::vector<char>& inside, bool fillCavities, const ClosingSites& c,
+  const std::vector<float>& e, const Progress& progress, std::vector<float>& values)
 {
   const GridLattice& lattice = field.lattice();
   std::vector<std::int32_t> nearSlot(lattice.nodeCount(), -1);
@@ -226,10 +227,10 @@ std::vector<float> closedValues(const DistanceGrid& field, const DistanceSource*
   {
     nearSlot[c.near[s]] = static_cast<std::int32_t>(s);
   }
-  std::vector<float> values(field.values());
+  values = field.values();
   const float r = static_cast<float>(radius);
   const float hair = static_cast<float>(1e-3 * lattice.spacing.maxCoeff());
-  parallelFor(0, lattice.nodeCount(), 0, [&](long long b, long long end) {
+  return forChunks(lattice.nodeCount(), 8, progress, [&](long long b, long long end) {
     for (long long n = b; n < end; ++n)
     {
       if (!inside[n])
@@ -251,7 +252,6 @@ std::vector<float> closedValues(const DistanceGrid& field, const DistanceSource*
       values[n] = std::min(values[n], static_cast<float>(radius - nearest));
     }
   });
-  return values;
 }
 } // namespace
 
@@ -294,7 +294,13 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
   {
     return aborted;
   }
-  closed = DistanceGrid(lattice, closedValues(field, target, radius, inside, fillCavities, c, e));
+  std::vector<float> values;
+  if (!closedValues(
+        field, target, radius, inside, fillCavities, c, e, progress.stage(0.9, 1), values))
+  {
+    return aborted;
+  }
+  closed = DistanceGrid(lattice, std::move(values));
   return progress.report(1) ? Status() : aborted;
 }
 

@@ -170,21 +170,27 @@ bool relaxStart(
   RelaxSettings relax;
   relax.flips = flips;
   relax.flips.avoidCrossings = false; // the relaxed surface as a whole is checked below
+  relax.iterations = 1;               // one at a time, progress between them
+  // Tries of `iterations`, halved while the relaxed surface crosses itself more: the try of n
+  // iterations spans the progress from 1 - n / relaxation to 1 - n / (2 relaxation), after 0.2.
   for (int iterations = relaxation; iterations > 0; iterations /= 2)
   {
     SurfaceMesh relaxed = mesh;
-    relax.iterations = iterations;
-    relaxTangentially(relaxed, relax);
-    if (!progress.report(1 - 0.6 * iterations / relaxation))
+    const double from = 1 - static_cast<double>(iterations) / relaxation, to = 1 - (1 - from) / 2;
+    for (int k = 0; k < iterations; ++k)
     {
-      return false;
+      relaxTangentially(relaxed, relax);
+      if (!progress.report(0.2 + 0.8 * (from + (to - from) * 0.8 * (k + 1) / iterations)))
+      {
+        return false;
+      }
     }
     if (findSelfIntersections(relaxed.points(), relaxed.triangles()).pairs <= crossing)
     {
       mesh = std::move(relaxed);
       break;
     }
-    if (!progress.report(1 - 0.5 * iterations / relaxation))
+    if (!progress.report(0.2 + 0.8 * to))
     {
       return false;
     }

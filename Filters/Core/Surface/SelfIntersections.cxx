@@ -674,6 +674,10 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   const auto stopped = [&] { return stop && stop(); };
   std::vector<int> moving;
   std::vector<Box> swept = sweptBoxes(previous, next, triangles, moving);
+  if (stopped())
+  {
+    return 0;
+  }
   const TriangleGrid grid(std::move(swept), TriangleGrid::cellSizeFor(next, triangles));
   if (triangles.size() < 2 || grid.empty() || stopped())
   {

@@ -390,9 +390,16 @@ vtkSmartPointer<vtkImageData> imageOf(const DistanceGrid& grid, const char* name
 TriangleSoup contour(const DistanceGrid& grid, double value)
 {
   // Flying Edges writes float points: it contours the grid moved to the origin, and the points
-  // move back in double, so that a target far from the origin keeps its cells' precision.
-  vtkSmartPointer<vtkImageData> image = imageOf(grid, "d");
-  image->SetOrigin(0, 0, 0);
+  // move back in double, so that a target far from the origin keeps its cells' precision. It only
+  // reads the values: the image views the grid's own (no copy of a large grid).
+  const GridLattice& lattice = grid.lattice();
+  vtkNew<vtkImageData> image;
+  image->SetExtent(0, lattice.dims[0] - 1, 0, lattice.dims[1] - 1, 0, lattice.dims[2] - 1);
+  image->SetSpacing(lattice.spacing.data());
+  vtkNew<vtkFloatArray> values;
+  values->SetName("d");
+  values->SetArray(const_cast<float*>(grid.values().data()), lattice.nodeCount(), 1);
+  image->GetPointData()->SetScalars(values);
   vtkNew<vtkFlyingEdges3D> contour;
   contour->SetInputData(image);
   contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "d");

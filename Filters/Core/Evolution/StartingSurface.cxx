@@ -57,9 +57,10 @@ int handlesWithoutSpecks(TriangleSoup surface, double speck)
 // contour may join them across the slot: a handle the closed field has not, which the Lagrangian
 // wrap can never open again. A lower offset cannot close a hole a higher one keeps open, so fewer
 // handles there are such joins undone. The Euler characteristics of the contours, counted without
-// building them (ContourTopology.h), pick the offsets worth building.
-void fewestHandles(
-  const DistanceGrid& field, double offset, const Contour& contour, TriangleSoup& start)
+// building them (ContourTopology.h), pick the offsets worth building. False when `progress` asked
+// to stop.
+bool fewestHandles(const DistanceGrid& field, double offset, const Contour& contour,
+  TriangleSoup& start, const Progress& progress)
 {
   const double h = field.lattice().spacing.maxCoeff();
   std::vector<double> offsets{ offset }; // the start's, then lower ones
@@ -70,9 +71,13 @@ void fewestHandles(
   }
   if (offsets.size() < 2)
   {
-    return;
+    return true;
   }
   const std::vector<ContourEuler> counts = contourEulerCharacteristics(field, offsets);
+  if (!progress.report(0.3))
+  {
+    return false;
+  }
   const auto euler = [&](std::size_t i) { return std::max(counts[i].grid, counts[i].halfSpacing); };
   long long bestEuler = euler(0);
   int handles = -1;
@@ -80,6 +85,10 @@ void fewestHandles(
   {
     // A contour with fewer handles has a higher Euler characteristic (or more components as well).
     TriangleSoup candidate;
+    if (!progress.report(0.3 + 0.7 * i / offsets.size()))
+    {
+      return false;
+    }
     if (euler(i) <= bestEuler || !offsetSurface(field, offsets[i], contour, candidate))
     {
       continue;
@@ -95,6 +104,7 @@ void fewestHandles(
       bestEuler = euler(i);
     }
   }
+  return true;
 }
 } // namespace
 
@@ -201,7 +211,8 @@ bool relaxStart(
 // The start's triangles before they are a mesh: the given surface, the offset surface of the
 // field, or the icosphere around the box.
 Status startSoup(const DistanceGrid& field, const Box& targetBox, const TriangleSoup* given,
-  const StartSettings& settings, const Contour& contour, TriangleSoup& start)
+  const StartSettings& settings, const Contour& contour, TriangleSoup& start,
+  const Progress& progress)
 {
   const double h = field.lattice().spacing.maxCoeff();
   if (given)
@@ -216,7 +227,11 @@ Status startSoup(const DistanceGrid& field, const Box& targetBox, const Triangle
     {
       return Status::failure("cannot start from the offset surface: " + status.message());
     }
-    fewestHandles(field, offset, contour, start);
+    if (!progress.report(0.3) ||
+      !fewestHandles(field, offset, contour, start, progress.stage(0.3, 1)))
+    {
+      return Status::failure(kAborted);
+    }
   }
   else
   {
@@ -232,7 +247,9 @@ Status startingSurface(const DistanceGrid& field, const Box& targetBox, const Tr
 {
   const double h = field.lattice().spacing.maxCoeff();
   TriangleSoup start;
-  if (Status made = startSoup(field, targetBox, given, settings, contour, start); !made)
+  if (Status made =
+        startSoup(field, targetBox, given, settings, contour, start, progress.stage(0, 0.1));
+      !made)
   {
     return made;
   }

@@ -181,14 +181,20 @@ int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength,
   return collapses;
 }
 
-int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings)
+int equalizeValences(
+  SurfaceMesh& mesh, const FlipSettings& settings, const std::function<bool()>& stop)
 {
   auto deviation = [](int a, int b, int c, int d) {
     return std::abs(a - 6) + std::abs(b - 6) + std::abs(c - 6) + std::abs(d - 6);
   };
   FlipPass pass(mesh, settings);
+  StopPoll stopped(stop);
   for (const auto& e : edgesOf(mesh))
   {
+    if (stopped())
+    {
+      break;
+    }
     const int i = e[0], j = e[1];
     const int p = mesh.ringEntry(i, j);
     const int c = mesh.ring(mesh.next(i, p)), d = mesh.ring(mesh.previous(i, p));
@@ -236,7 +242,7 @@ RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings)
       mesh, settings.collapseBelow * L, settings.splitAbove * L, settings.collapses, settings.stop);
     if (stopped())
       break;
-    report.flips += equalizeValences(mesh, settings.flips);
+    report.flips += equalizeValences(mesh, settings.flips, settings.stop);
     if (stopped())
       break;
     relaxTangentially(mesh, relax);

@@ -61,8 +61,9 @@ int collapseShortEdges(SurfaceMesh& mesh, double minLength, double maxLength,
   const CollapseSettings& settings, const std::function<bool()>& stop = {});
 // One pass of flips that bring the four valences of an edge's triangles closer to 6, within the
 // dihedral guard, leaving out those that flipEdges would flip back (flipGainsAngle of the new
-// edge).
-int equalizeValences(SurfaceMesh& mesh, const FlipSettings& settings);
+// edge); `stop` as for splitLongEdges.
+int equalizeValences(
+  SurfaceMesh& mesh, const FlipSettings& settings, const std::function<bool()>& stop = {});
 
 RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings);
 

@@ -310,6 +310,10 @@ StepReport Evolver::step()
 StepReport Evolver::fullStep()
 {
   const Controls c = this->controls();
+  if (this->stopped())
+  {
+    return stoppedAt(this->Steps + 1);
+  }
   std::vector<Vec3> vt;
   if (!this->tangentialVelocities(c, vt))
   {
@@ -529,10 +533,15 @@ Status editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scal
   {
     report.flips += flipEdges(mesh, s.flips);
   }
+  if (stop && stop())
+  {
+    return {};
+  }
   // Degenerating triangles cluster where the surface folds, and a pass collapses one edge per
   // neighbourhood: passes repeat while they find edges to collapse.
   const bool degenerating = !(report.smallestAngle >= s.collapses.maxAngle);
-  for (int pass = 0; s.edgeCollapses && degenerating && pass < s.collapses.maxPasses; ++pass)
+  for (int pass = 0;
+       s.edgeCollapses && degenerating && pass < s.collapses.maxPasses && !(stop && stop()); ++pass)
   {
     const int collapses = collapseEdges(mesh, s.collapses);
     if (collapses == 0)

@@ -226,11 +226,15 @@ std::optional<double> WrapSession::meanMotion(int k) const
 LeftOutParts WrapSession::leftOut(int k) const
 {
   Surface now = this->surface(k);
+  if (now.cached == this->LastLeftOut.surface)
+  {
+    return this->LastLeftOut.parts; // measured (also before a release)
+  }
   const DistanceSource* exact = this->Fields.target.exact();
   const TriangleSoup* target = exact ? exact->triangles() : nullptr;
-  if (!target || now.cached == this->LastLeftOut.surface)
+  if (!target)
   {
-    return target ? this->LastLeftOut.parts : LeftOutParts();
+    return {};
   }
   TriangleSoup wrap{ std::move(now.points), *now.cached->triangles };
   this->LastLeftOut = { now.cached,

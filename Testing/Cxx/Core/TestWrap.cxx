@@ -154,6 +154,9 @@ void releasedWhenOver()
       large->targetSamples(large->surface(20)).size() == large->surface(20).points.size(),
     "released at its last step, step 5 shown as before");
   SW_CHECK(!large->edit([](SurfaceMesh&) {}), "no edit after the release");
+  const LeftOutParts left = large->leftOut(20);
+  SW_CHECK(left.parts == 1 && left.leftOut == 0,
+    "what the last step left out, measured before the release");
   SW_CHECK(!small->released() && !small->fields().target.empty(),
     "a run on 80 triangles keeps its fields (measuring 21 steps' samples would cost more)");
 }

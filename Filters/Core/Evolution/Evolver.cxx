@@ -626,8 +626,8 @@ namespace
 // Parts of the surface this small that fold have vanished (Evolver::removeVanishedParts).
 constexpr int kVanishedVertices = 12;
 
-// The vertices of the part of `mesh` that holds v, if it has at most `limit`; else none.
-std::vector<int> smallPart(const SurfaceMesh& mesh, int v, int limit, std::vector<char>& seen)
+// Whether the part of `mesh` that holds v has at most `limit` vertices (those seen are marked).
+bool smallPart(const SurfaceMesh& mesh, int v, int limit, std::vector<char>& seen)
 {
   std::vector<int> part = { v };
   seen[v] = 1;
@@ -642,7 +642,7 @@ std::vector<int> smallPart(const SurfaceMesh& mesh, int v, int limit, std::vecto
       }
     }
   }
-  return static_cast<int>(part.size()) <= limit ? part : std::vector<int>();
+  return static_cast<int>(part.size()) <= limit;
 }
 } // namespace
 
@@ -654,7 +654,7 @@ int Evolver::removeVanishedParts()
   for (const auto& t : this->Mesh.triangles())
   {
     if (!seen[t[0]] && smallestAngleBelow(y[t[0]], y[t[1]], y[t[2]], this->Settings.minAngle) &&
-      !smallPart(this->Mesh, t[0], kVanishedVertices, seen).empty())
+      smallPart(this->Mesh, t[0], kVanishedVertices, seen))
     {
       vanished.push_back(t[0]);
     }

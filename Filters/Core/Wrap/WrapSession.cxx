@@ -138,8 +138,7 @@ bool WrapSession::advanceTo(int k, const Progress& progress)
 void WrapSession::releaseIfOver()
 {
   const int last = this->LastGood >= 0 ? this->LastGood : this->Plan.settings.steps;
-  const DistanceSource* exact = this->Fields.target.exact();
-  const TriangleSoup* target = exact ? exact->triangles() : nullptr;
+  const TriangleSoup* target = this->targetTriangles();
   if (!target || this->Computed == 0)
   {
     return;
@@ -223,6 +222,12 @@ std::optional<double> WrapSession::meanMotion(int k) const
   return std::abs(v1 - v0) / (a1 * cell);
 }
 
+const TriangleSoup* WrapSession::targetTriangles() const
+{
+  const DistanceSource* exact = this->Fields.target.exact();
+  return exact ? exact->triangles() : nullptr;
+}
+
 LeftOutParts WrapSession::leftOut(int k) const
 {
   Surface now = this->surface(k);
@@ -230,8 +235,7 @@ LeftOutParts WrapSession::leftOut(int k) const
   {
     return this->LastLeftOut.parts; // measured (also before a release)
   }
-  const DistanceSource* exact = this->Fields.target.exact();
-  const TriangleSoup* target = exact ? exact->triangles() : nullptr;
+  const TriangleSoup* target = this->targetTriangles();
   if (!target)
   {
     return {};

@@ -75,6 +75,7 @@ private:
   double scaleFor(int vertexCount) const;
   void cacheCurrent(bool connectivityChanged, bool edited = false);
   void releaseIfOver();
+  const TriangleSoup* targetTriangles() const; // of the target's field (none: points, released)
 
   WrapPlan Plan;
   EvolverSettings Evolution; // the plan's

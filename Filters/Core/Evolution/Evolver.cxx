@@ -117,6 +117,11 @@ Evolver::Controls Evolver::controls() const
   computeGeometry(this->Mesh, y, c.g);
   c.d.assign(nv, 0.0);
   c.grad.assign(nv, Vec3::Zero());
+  // Asked between the phases: a stopped step discards the controls.
+  if (this->stopped())
+  {
+    return c;
+  }
   if (this->Field)
   {
     parallelFor(0, nv, [&](int b, int e) {
@@ -127,6 +132,10 @@ Evolver::Controls Evolver::controls() const
         c.grad[i] = sample.gradient;
       }
     });
+  }
+  if (this->stopped())
+  {
+    return c;
   }
   c.eps.resize(nv);
   c.eta.resize(nv);
@@ -531,7 +540,7 @@ Status editConnectivity(SurfaceMesh& mesh, const EvolverSettings& s, double scal
   }
   if (s.edgeFlips)
   {
-    report.flips += flipEdges(mesh, s.flips);
+    report.flips += flipEdges(mesh, s.flips, stop);
   }
   if (stop && stop())
   {

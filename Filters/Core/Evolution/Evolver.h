@@ -221,7 +221,7 @@ private:
   StepReport fullStep(); // step() but for what a stopped step restores
   struct Controls;
   struct Solver;
-  Controls controls() const;
+  Controls controls() const; // incomplete when stopped()
   // Vertex i's height over the centroid of its ring along `normal`, within half the ring's mean
   // edge (EvolverSettings::facetFit).
   double heightOverRing(int i, const Vec3& normal) const;

@@ -1,5 +1,6 @@
 #include "Remeshing/EdgeFlips.h"
 
+#include "Common/Progress.h"
 #include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceGeometry.h"
 
@@ -76,10 +77,11 @@ bool FlipPass::flip(SurfaceMesh& mesh, int i, int j, int c, int d)
 }
 
 // Over the edges (i, j), i < j, with triangles (i, j, c) and (i, d, j).
-int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings)
+int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings, const std::function<bool()>& stop)
 {
   FlipPass pass(mesh, settings);
-  for (int i = 0; i < mesh.vertexCount(); ++i)
+  StopPoll stopped(stop);
+  for (int i = 0; i < mesh.vertexCount() && !stopped(); ++i)
   {
     for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)
     {

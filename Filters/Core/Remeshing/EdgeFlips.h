@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace shrinkwrap
@@ -62,8 +63,10 @@ private:
 };
 
 // One pass of flips over the edges of `mesh` (a vertex takes part in at most one flip; the evolver
-// runs a pass after every step), committed. Returns the number of flips.
-int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings);
+// runs a pass after every step), committed. Returns the number of flips. `stop` (empty: never),
+// polled within the pass (StopPoll), ends it early with the flips made so far.
+int flipEdges(
+  SurfaceMesh& mesh, const FlipSettings& settings, const std::function<bool()>& stop = {});
 
 } // namespace shrinkwrap
 

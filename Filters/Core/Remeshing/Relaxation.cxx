@@ -29,12 +29,13 @@ std::vector<Vec3> smoothTangentially(
 }
 } // namespace
 
-void relaxTangentially(SurfaceMesh& mesh, const RelaxSettings& settings)
+void relaxTangentially(
+  SurfaceMesh& mesh, const RelaxSettings& settings, const std::function<bool()>& stop)
 {
-  for (int k = 0; k < settings.iterations; ++k)
+  for (int k = 0; k < settings.iterations && !(stop && stop()); ++k)
   {
     mesh.points() = smoothTangentially(mesh, mesh.points(), settings.weight);
-    flipEdges(mesh, settings.flips);
+    flipEdges(mesh, settings.flips, stop);
   }
 }
 

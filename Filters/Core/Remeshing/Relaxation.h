@@ -19,8 +19,10 @@ struct RelaxSettings
 };
 
 // Each iteration moves every vertex part of the way to the centroid of its neighbours within its
-// tangent plane, then flips edges (EdgeFlips.h): the shape stays, the triangles even out.
-void relaxTangentially(SurfaceMesh& mesh, const RelaxSettings& settings);
+// tangent plane, then flips edges (EdgeFlips.h): the shape stays, the triangles even out. `stop`
+// (empty: never), asked between the iterations and polled within the flips, ends them early.
+void relaxTangentially(
+  SurfaceMesh& mesh, const RelaxSettings& settings, const std::function<bool()>& stop = {});
 
 } // namespace shrinkwrap
 

@@ -245,7 +245,7 @@ RemeshReport remesh(SurfaceMesh& mesh, const RemeshSettings& settings)
     report.flips += equalizeValences(mesh, settings.flips, settings.stop);
     if (stopped())
       break;
-    relaxTangentially(mesh, relax);
+    relaxTangentially(mesh, relax, settings.stop);
   }
   mesh.removeVertexProperty(kEdgeSize);
   return report;

@@ -128,25 +128,32 @@ double roundingMargin(const TriangleGrid& grid)
 }
 
 // The pairs each(b, e, out) finds over chunks [b, e) of [0, n), from all threads, in one order
-// whatever the threads did.
+// whatever the threads did. `stop` (empty: never) is asked between kStopBatches batches, on the
+// calling thread; a stopped search returns the pairs found so far.
+constexpr int kStopBatches = 8;
 template <typename Each>
-std::vector<std::pair<int, int>> pairsInParallel(Index n, Index grain, Each&& each)
+std::vector<std::pair<int, int>> pairsInParallel(
+  Index n, Index grain, Each&& each, const std::function<bool()>& stop)
 {
   std::vector<std::pair<int, int>> pairs;
   std::mutex lock;
-  parallelFor(0, n, grain, [&](Index b, Index e) {
-    std::vector<std::pair<int, int>> found;
-    each(b, e, found);
-    const std::lock_guard<std::mutex> guard(lock);
-    pairs.insert(pairs.end(), found.begin(), found.end());
-  });
+  const int batches = stop ? kStopBatches : 1;
+  for (int k = 0; k < batches && !(k > 0 && stop()); ++k)
+  {
+    parallelFor(n * k / batches, n * (k + 1) / batches, grain, [&](Index b, Index e) {
+      std::vector<std::pair<int, int>> found;
+      each(b, e, found);
+      const std::lock_guard<std::mutex> guard(lock);
+      pairs.insert(pairs.end(), found.begin(), found.end());
+    });
+  }
   std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
 
 // The pairs of triangles that cross at x, found through the grid (boxes at x or containing them).
 std::vector<std::pair<int, int>> crossingPairs(const TriangleGrid& grid, const std::vector<Vec3>& x,
-  const std::vector<std::array<int, 3>>& triangles)
+  const std::vector<std::array<int, 3>>& triangles, const std::function<bool()>& stop)
 {
   const double margin = roundingMargin(grid);
   std::vector<Facet> facets(triangles.size());
@@ -162,25 +169,28 @@ std::vector<std::pair<int, int>> crossingPairs(const TriangleGrid& grid, const s
     }
   });
   return pairsInParallel(
-    grid.bucketCount(), 0, [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
+    grid.bucketCount(), 0,
+    [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
       grid.forEachOverlappingPair(static_cast<int>(b), static_cast<int>(e), [&](int s, int t) {
         if (boxes[s].overlaps(boxes[t]) && crosses(facets[s], facets[t], margin))
         {
           found.emplace_back(s, t);
         }
       });
-    });
+    },
+    stop);
 }
 
 // The pairs that cross at x with a triangle in `changed` (sorted), each once.
 std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid,
   const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles,
-  const std::vector<int>& changed)
+  const std::vector<int>& changed, const std::function<bool()>& stop)
 {
   const double margin = roundingMargin(grid);
   const auto n = static_cast<Index>(changed.size());
   return pairsInParallel(
-    n, kQueryGrain, [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
+    n, kQueryGrain,
+    [&](Index b, Index e, std::vector<std::pair<int, int>>& found) {
       for (Index k = b; k < e; ++k)
       {
         const int s = changed[k];
@@ -196,16 +206,18 @@ std::vector<std::pair<int, int>> crossingsAmong(const TriangleGrid& grid,
           }
         });
       }
-    });
+    },
+    stop);
 }
 
 // Few changed triangles (a step's touch-ups, a round of edits) are tested alone; many, all pairs in
 // parallel.
 std::vector<std::pair<int, int>> crossingsOf(const TriangleGrid& grid, const std::vector<Vec3>& x,
-  const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& changed)
+  const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& changed,
+  const std::function<bool()>& stop)
 {
-  return 8 * changed.size() < triangles.size() ? crossingsAmong(grid, x, triangles, changed)
-                                               : crossingPairs(grid, x, triangles);
+  return 8 * changed.size() < triangles.size() ? crossingsAmong(grid, x, triangles, changed, stop)
+                                               : crossingPairs(grid, x, triangles, stop);
 }
 
 // For each of `points`, the vertex of `mesh` at exactly the same position (-1: none), through a
@@ -275,7 +287,7 @@ SelfIntersections findSelfIntersections(
   {
     return fromPairs(triangles.size(), {});
   }
-  return fromPairs(triangles.size(), crossingPairs(grid, x, triangles));
+  return fromPairs(triangles.size(), crossingPairs(grid, x, triangles, {}));
 }
 
 SelfIntersections findNewSelfIntersections(const SurfaceMesh& before, const std::vector<Vec3>& x,
@@ -301,7 +313,7 @@ SelfIntersections findNewSelfIntersections(const SurfaceMesh& before, const std:
   {
     return fromPairs(triangles.size(), {});
   }
-  return fromPairs(triangles.size(), crossingsOf(grid, x, triangles, made));
+  return fromPairs(triangles.size(), crossingsOf(grid, x, triangles, made, stop));
 }
 
 std::vector<Box> boxesAround(const std::vector<Vec3>& points,
@@ -687,7 +699,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   auto isNew = [&](int s, int t) {
     return !crosses(facetOf(previous, triangles[s]), facetOf(previous, triangles[t]), margin);
   };
-  std::vector<std::pair<int, int>> found = crossingsOf(grid, next, triangles, moving);
+  std::vector<std::pair<int, int>> found = crossingsOf(grid, next, triangles, moving, stop);
   std::unique_ptr<VertexTriangles> around; // built when a first vertex is held
   int held = 0;
   while (!found.empty() && !stopped())
@@ -725,7 +737,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
       around = std::make_unique<VertexTriangles>(triangles, next.size());
     }
     // Only the triangles around the held vertices changed: re-test them against their neighbours.
-    found = crossingsAmong(grid, next, triangles, around->around(moved));
+    found = crossingsAmong(grid, next, triangles, around->around(moved), stop);
   }
   return held;
 }

@@ -34,8 +34,9 @@ SelfIntersections findSelfIntersections(
 // The crossings that edits made on a surface that did not cross itself (`before`): those of the
 // triangles of (points, triangles) that `before` does not have (the same corners at the same
 // positions, in any numbering; a split's halves count as made) with any other. Two triangles the
-// edits left as they were did not cross before and do not now. `stop`, asked between the phases,
-// ends the check early with no crossing found (a stopped step's result is discarded).
+// edits left as they were did not cross before and do not now. `stop`, asked between the phases
+// and within the search, ends the check early with the crossings found so far (a stopped step's
+// result is discarded).
 SelfIntersections findNewSelfIntersections(const SurfaceMesh& before,
   const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
   const std::function<bool()>& stop = {});
@@ -45,8 +46,8 @@ SelfIntersections findNewSelfIntersections(const SurfaceMesh& before,
 // new crossing is left (at worst every vertex of a crossing stays where it was). One grid of the
 // boxes swept over the step serves every round; a round re-tests only the triangles it moved.
 // Returns how many vertices were held; `crossing`, if given, gets the triangles of the crossings
-// they were held for. `stop`, asked between the rounds, ends them early (a stopped step's result is
-// discarded).
+// they were held for. `stop`, asked between and within the rounds, ends them early (a stopped
+// step's result is discarded).
 int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   const std::vector<std::array<int, 3>>& triangles, std::vector<int>* crossing = nullptr,
   const std::function<bool()>& stop = {});

@@ -123,6 +123,26 @@ void noChurn()
     "the flips die out: no valence flip the angle flips undo, round after round");
 }
 
+// Issue #61: a stop asked for ends a pass within it (StopPoll: at its 64th vertex), with the flips
+// made so far committed on a closed surface; one never asked for changes nothing.
+void stopsWithinAPass()
+{
+  TriangleSoup stretched = icosphere(5, Vec3::Zero(), 1.0);
+  for (Vec3& p : stretched.points)
+  {
+    p.x() *= 4;
+  }
+  SurfaceMesh stopped = meshOf(stretched), whole = stopped;
+  int asked = 0;
+  const int some = flipEdges(stopped, FlipSettings{}, [&] { return ++asked > 0; });
+  SurfaceMesh rebuilt;
+  std::string error;
+  const bool closed = testing::builds(stopped.points(), stopped.triangles(), rebuilt, error);
+  const int all = flipEdges(whole, FlipSettings{}, [] { return false; });
+  std::printf("a stopped flip pass: %d flips of %d, the stop asked %d times\n", some, all, asked);
+  SW_CHECK(asked == 1 && some < all / 10 && all > 1000 && closed,
+    "the pass stopped at its 64th vertex on a closed surface: " << error);
+}
 } // namespace
 
 int TestEdgeFlips(int, char*[])
@@ -130,6 +150,7 @@ int TestEdgeFlips(int, char*[])
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
     edgeFlips();
     noChurn();
+    stopsWithinAPass();
   });
   return testing::finish("TestEdgeFlips");
 }

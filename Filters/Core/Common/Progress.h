@@ -44,19 +44,21 @@ private:
 };
 
 // A stop request asked from within a long serial loop (the edits of a remeshing pass, say): called
-// per item, it asks `stop` (empty: never) on the 64th call and then at most every kPollSeconds,
-// reading the clock every 64 calls, and stays true once `stop` said so. `stop` must outlive it.
+// per item, it asks `stop` (empty: never) on the kCallsPerClock-th call and then at most every
+// kPollSeconds, reading the clock every kCallsPerClock calls (items of a guarded pass can take
+// milliseconds each), and stays true once `stop` said so. `stop` must outlive it.
 class StopPoll
 {
 public:
   static constexpr double kPollSeconds = 0.1;
+  static constexpr int kCallsPerClock = 8;
   explicit StopPoll(const std::function<bool()>& stop)
     : Stop(stop)
   {
   }
   bool operator()()
   {
-    if (this->Stopped || !this->Stop || ++this->Calls % 64 != 0)
+    if (this->Stopped || !this->Stop || ++this->Calls % kCallsPerClock != 0)
     {
       return this->Stopped;
     }
@@ -71,7 +73,7 @@ public:
 
 private:
   const std::function<bool()>& Stop;
-  std::chrono::steady_clock::time_point Last; // none yet: the 64th call asks
+  std::chrono::steady_clock::time_point Last; // none yet: the kCallsPerClock-th call asks
   long long Calls = 0;
   bool Stopped = false;
 };

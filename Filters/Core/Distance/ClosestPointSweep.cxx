@@ -167,15 +167,16 @@ struct Envelope
 };
 
 // The pass along `axis`: every line parallel to it, in parallel. Lines are taken in index order
-// (x fastest among the others), so neighbouring lines reuse the same cache lines.
-void envelopePass(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* site,
-  int axis, float* distance)
+// (x fastest among the others), so neighbouring lines reuse the same cache lines. False when
+// `progress` asked to stop (reported over batches of lines).
+bool envelopePass(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* site,
+  int axis, float* distance, const Progress& progress)
 {
   const auto& d = lattice.dims;
   const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2; // the two other axes, u varying fastest
   const std::int64_t strides[3] = { 1, d[0], static_cast<std::int64_t>(d[0]) * d[1] };
   ThreadLocal<Envelope> scratch;
-  parallelFor(0, static_cast<long long>(d[w]), [&](long long b, long long e) {
+  return forChunks(static_cast<long long>(d[w]), 4, progress, [&](long long b, long long e) {
     Envelope& envelope = scratch.local();
     for (long long lw = b; lw < e; ++lw)
     {
@@ -201,8 +202,8 @@ bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sit
 {
   for (int axis = 0; axis < 3; ++axis)
   {
-    envelopePass(lattice, sites, siteOfNode, axis, axis == 2 ? distance : nullptr);
-    if (!progress.report((axis + 1) / 3.0))
+    if (!envelopePass(lattice, sites, siteOfNode, axis, axis == 2 ? distance : nullptr,
+          progress.stage(axis / 3.0, (axis + 1) / 3.0)))
     {
       return false;
     }
@@ -215,8 +216,8 @@ bool sweepClosestPointsInPlanes(const GridLattice& slab, const std::vector<Vec3>
 {
   for (int axis = 0; axis < 2; ++axis)
   {
-    envelopePass(slab, sites, siteOfNode, axis, nullptr);
-    if (!progress.report((axis + 1) / 2.0))
+    if (!envelopePass(
+          slab, sites, siteOfNode, axis, nullptr, progress.stage(axis / 2.0, (axis + 1) / 2.0)))
     {
       return false;
     }

@@ -193,21 +193,21 @@ struct ClosingSites
   std::vector<char> found;
 };
 
-ClosingSites closingSites(const DistanceGrid& field, const DistanceSource* target, double radius,
-  const std::vector<char>& inside, bool fillCavities)
+// False when `progress` asked to stop (reported over batches of nodes).
+bool closingSites(const DistanceGrid& field, const DistanceSource* target, double radius,
+  const std::vector<char>& inside, bool fillCavities, const Progress& progress, ClosingSites& c)
 {
-  ClosingSites c;
   c.near = nodesNearBoundary(field, radius, inside);
   c.sites.resize(c.near.size());
   c.found.resize(c.near.size());
-  parallelFor(0, static_cast<long long>(c.near.size()), 0, [&](long long b, long long e) {
-    for (long long s = b; s < e; ++s)
-    {
-      c.found[s] =
-        boundaryPoint(field, target, radius, inside, fillCavities, c.near[s], c.sites[s]);
-    }
-  });
-  return c;
+  return forChunks(
+    static_cast<long long>(c.near.size()), 16, progress, [&](long long b, long long e) {
+      for (long long s = b; s < e; ++s)
+      {
+        c.found[s] =
+          boundaryPoint(field, target, radius, inside, fillCavities, c.near[s], c.sites[s]);
+      }
+    });
 }
 
 // The closed field's values from the distances e to the nearest site. Inside D, e >= r - d (the
@@ -282,7 +282,11 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
   }
   // The sites: boundary points from the nodes near it, one each; the closest-point passes spread
   // them (they overwrite siteOfNode).
-  const ClosingSites c = closingSites(field, target, radius, inside, fillCavities);
+  ClosingSites c;
+  if (!closingSites(field, target, radius, inside, fillCavities, progress.stage(0.2, 0.4), c))
+  {
+    return aborted;
+  }
   std::vector<std::int32_t> siteOfNode(lattice.nodeCount(), -1);
   for (std::size_t s = 0; s < c.near.size(); ++s)
   {

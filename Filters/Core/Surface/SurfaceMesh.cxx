@@ -225,13 +225,12 @@ private:
 } // namespace
 
 // What the edits since the last commit need: which vertices they touched (the rings of the others
-// are still exact), the directed edges' triangles once a lookup needs them (then kept current by
-// every edit), the removed vertices, and the surface as committed, to restore if the commit fails.
+// are still exact), the directed edges of the triangles the edits set, the removed vertices, and
+// the surface as committed, to restore if the commit fails.
 struct SurfaceMesh::EditState
 {
   std::vector<char> touched; // per committed vertex
-  bool mapped = false;
-  EdgeTable edgeTriangle;
+  EdgeTable edgeTriangle;    // the directed edges of the triangles the edits set
   std::vector<char> removedVertex;
   int removals = 0; // vertices and triangles removed
   std::vector<std::array<int, 3>> committedTriangles;
@@ -358,8 +357,9 @@ void SurfaceMesh::beginEdit()
   e.touched.assign(this->Points.size(), 0);
 }
 
-// From the ring of an end the edits have not touched (exact since the commit), else from the map of
-// directed edges, built on first need.
+// From the ring of an end the edits have not touched (exact since the commit); else from the map of
+// the directed edges of the triangles the edits set (kept current by every edit), else from a
+// committed ring whose triangle still holds the edge.
 int SurfaceMesh::triangleOf(int a, int b) const
 {
   EditState& e = *this->Edits;
@@ -374,20 +374,24 @@ int SurfaceMesh::triangleOf(int a, int b) const
     const int q = this->ringEntry(b, a); // triangle (b, x, a) holds a -> b
     return q < 0 ? -1 : this->RingTriangle[this->previous(b, q)];
   }
-  if (!e.mapped)
+  const int set = e.edgeTriangle.find(edgeKey(a, b));
+  if (set >= 0)
   {
-    e.edgeTriangle.reserve(3 * this->Triangles.size());
-    for (int t = 0; t < this->triangleCount(); ++t)
-    {
-      const auto& v = this->Triangles[t];
-      for (int k = 0; k < 3 && v[0] >= 0; ++k)
-      {
-        e.edgeTriangle.set(edgeKey(v[k], v[(k + 1) % 3]), t);
-      }
-    }
-    e.mapped = true;
+    return set;
   }
-  return e.edgeTriangle.find(edgeKey(a, b));
+  const auto holds = [&](int t) {
+    const auto& v = this->Triangles[t];
+    return (v[0] == a && v[1] == b) || (v[1] == a && v[2] == b) || (v[2] == a && v[0] == b);
+  };
+  if (a < committed)
+  {
+    const int p = this->ringEntry(a, b);
+    if (p >= 0 && holds(this->RingTriangle[p]))
+    {
+      return this->RingTriangle[p];
+    }
+  }
+  return -1; // a new vertex's triangles were all set by the edits
 }
 
 void SurfaceMesh::setTriangle(int t, const std::array<int, 3>& triangle)
@@ -404,7 +408,7 @@ void SurfaceMesh::setTriangle(int t, const std::array<int, 3>& triangle)
       }
     }
   }
-  for (int k = 0; k < 3 && e.mapped && old[0] >= 0; ++k)
+  for (int k = 0; k < 3 && old[0] >= 0; ++k)
   {
     e.edgeTriangle.erase(edgeKey(old[k], old[(k + 1) % 3]), t);
   }
@@ -413,7 +417,7 @@ void SurfaceMesh::setTriangle(int t, const std::array<int, 3>& triangle)
     this->Triangles.push_back(triangle);
   }
   this->Triangles[t] = triangle;
-  for (int k = 0; k < 3 && e.mapped && triangle[0] >= 0; ++k)
+  for (int k = 0; k < 3 && triangle[0] >= 0; ++k)
   {
     e.edgeTriangle.set(edgeKey(triangle[k], triangle[(k + 1) % 3]), t);
   }

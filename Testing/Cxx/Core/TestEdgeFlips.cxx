@@ -123,7 +123,7 @@ void noChurn()
     "the flips die out: no valence flip the angle flips undo, round after round");
 }
 
-// Issue #61: a stop asked for ends a pass within it (StopPoll: at its 64th vertex), with the flips
+// Issue #61: a stop asked for ends a pass within it (StopPoll: at its 8th vertex), with the flips
 // made so far committed on a closed surface; one never asked for changes nothing.
 void stopsWithinAPass()
 {
@@ -141,7 +141,7 @@ void stopsWithinAPass()
   const int all = flipEdges(whole, FlipSettings{}, [] { return false; });
   std::printf("a stopped flip pass: %d flips of %d, the stop asked %d times\n", some, all, asked);
   SW_CHECK(asked == 1 && some < all / 10 && all > 1000 && closed,
-    "the pass stopped at its 64th vertex on a closed surface: " << error);
+    "the pass stopped at its 8th vertex on a closed surface: " << error);
 }
 } // namespace
 

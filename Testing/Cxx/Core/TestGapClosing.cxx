@@ -12,6 +12,7 @@
 
 #include <vtkSMPTools.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -247,12 +248,48 @@ void fillsOnlyCavitiesTheBorderCannotReach()
 
 } // namespace
 
+// Issue #61: the closing reports progress within its phases, its sites (0.2-0.4) and each axis of
+// its closest-point sweep (0.4-0.9) in batches, and a stop asked within the sites ends it.
+void stopsWithinItsPhases()
+{
+  const TwoBalls balls(1.15, 1);
+  const GridLattice lattice = cube(3, 0.05);
+  std::vector<float> values(lattice.nodeCount());
+  for (std::int64_t n = 0; n < lattice.nodeCount(); ++n)
+  {
+    values[n] = static_cast<float>(balls.distance(nodeAt(lattice, n)));
+  }
+  const DistanceGrid field(lattice, std::move(values));
+  std::vector<double> reported;
+  DistanceGrid closed;
+  SW_CHECK(closingField(field, 0.6, &balls, false, closed, Progress([&](double f) {
+    reported.push_back(f);
+    return true;
+  })),
+    "the closing of two balls");
+  const auto within = [&](double low, double high) {
+    return std::count_if(
+      reported.begin(), reported.end(), [&](double f) { return f > low && f < high; });
+  };
+  SW_CHECK(within(0.2, 0.4) >= 4 && within(0.4, 0.9) >= 9,
+    "progress within the sites (" << within(0.2, 0.4) << " reports) and the sweep ("
+                                  << within(0.4, 0.9) << ")");
+  int asked = 0;
+  const Status stopped = closingField(field, 0.6, &balls, false, closed, Progress([&](double f) {
+    ++asked;
+    return !(f > 0.2 && f < 0.4);
+  }));
+  SW_CHECK(!stopped && asked == 2,
+    "a stop within the sites ends the closing (asked " << asked << " times)");
+}
+
 int TestGapClosing(int, char*[])
 {
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ 0, "STDThread", false }, [] {
     bridgesTheSlotBetweenTwoBalls();
     fillsTheCavityOfSampledSphere();
     fillsOnlyCavitiesTheBorderCannotReach();
+    stopsWithinItsPhases();
   });
   return testing::finish("TestGapClosing");
 }

@@ -62,18 +62,28 @@ public:
     {
       return this->Stopped;
     }
-    const auto now = std::chrono::steady_clock::now();
-    if (std::chrono::duration<double>(now - this->Last).count() < kPollSeconds)
+    return this->now();
+  }
+  // Asks `stop` now if it was not asked in the last kPollSeconds (between the phases of one long
+  // item, say).
+  bool now()
+  {
+    if (this->Stopped || !this->Stop)
+    {
+      return this->Stopped;
+    }
+    const auto at = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(at - this->Last).count() < kPollSeconds)
     {
       return false;
     }
-    this->Last = now;
+    this->Last = at;
     return this->Stopped = this->Stop();
   }
 
 private:
   const std::function<bool()>& Stop;
-  std::chrono::steady_clock::time_point Last; // none yet: the kCallsPerClock-th call asks
+  std::chrono::steady_clock::time_point Last; // none yet: the first clock reading asks
   long long Calls = 0;
   bool Stopped = false;
 };

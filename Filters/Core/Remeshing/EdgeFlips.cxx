@@ -81,6 +81,7 @@ int flipEdges(SurfaceMesh& mesh, const FlipSettings& settings, const std::functi
 {
   FlipPass pass(mesh, settings);
   StopPoll stopped(stop);
+  pass.setStop([&] { return stopped.now(); });
   for (int i = 0; i < mesh.vertexCount() && !stopped(); ++i)
   {
     for (int p = mesh.ringBegin(i); p < mesh.ringEnd(i); ++p)

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace shrinkwrap
@@ -50,6 +51,8 @@ public:
   // Flips (i, j) to (c, d) where it keeps the shape and crosses nothing; true when it did.
   bool flip(SurfaceMesh& mesh, int i, int j, int c, int d);
   const std::vector<Vec3>& points() const { return this->X; }
+  // Asked within the crossing guard's build (CrossingGuard::setStop).
+  void setStop(std::function<bool()> stop) { this->Guard.setStop(std::move(stop)); }
   int flips() const { return this->Flips; }
 
 private:

@@ -121,6 +121,7 @@ int collapsePass(SurfaceMesh& mesh, double minLength, double maxLength,
   const std::vector<Vec3> x = mesh.points(); // as the rings are: before the pass
   const std::vector<std::array<int, 3>> triangles = mesh.triangles(); // edits change the mesh's own
   CrossingGuard guard(x, triangles, settings.guardOnlyIn);
+  guard.setStop([&] { return stopped.now(); });
   const int nv = mesh.vertexCount();
   std::vector<char> touched(nv, 0), shortEnd(nv, 0), gone(nv, 0);
   int collapses = 0;
@@ -189,6 +190,7 @@ int equalizeValences(
   };
   FlipPass pass(mesh, settings);
   StopPoll stopped(stop);
+  pass.setStop([&] { return stopped.now(); });
   for (const auto& e : edgesOf(mesh))
   {
     if (stopped())

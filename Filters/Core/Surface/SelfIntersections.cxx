@@ -417,8 +417,12 @@ const TriangleGrid& CrossingGuard::grid()
         this->Ids.push_back(t);
       }
     }
-    this->Grid = std::make_unique<TriangleGrid>(std::move(boxes), this->Cell);
+    this->Grid = std::make_unique<TriangleGrid>(std::move(boxes), this->Cell, this->Stop);
     this->EditCells.clear();
+    if (this->Grid->stopped())
+    {
+      return *this->Grid; // no edit is made from here
+    }
     for (std::size_t e = 0; e < this->Edits.size(); ++e)
     {
       this->index(static_cast<int>(e));
@@ -542,6 +546,10 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
     this->Grid.reset();
   }
   const TriangleGrid& grid = this->grid();
+  if (grid.stopped())
+  {
+    return true;
+  }
   std::vector<Facet> facets;
   for (const Made& m : made)
   {
@@ -603,7 +611,7 @@ void CrossingGuard::add(const std::vector<Made>& made)
   for (const Made& m : made)
   {
     this->Edits.push_back(m);
-    if (this->Grid)
+    if (this->Grid && !this->Grid->stopped())
     {
       this->index(static_cast<int>(this->Edits.size()) - 1);
     }

@@ -17,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace shrinkwrap
@@ -81,6 +82,9 @@ public:
   // Flipping edge (i, j) of triangles (i, j, c) and (j, i, d) to (c, d).
   bool flipCrosses(int i, int j, int c, int d);
   void addFlip(int i, int j, int c, int d);
+  // `stop` (empty: never), asked within the build of the guard's grid: once it said yes, every edit
+  // is said to cross (a stopped pass makes no more edits).
+  void setStop(std::function<bool()> stop) { this->Stop = std::move(stop); }
 
 private:
   struct Made
@@ -126,6 +130,7 @@ private:
   double Cell = 0; // the grid's
   double Reach = 0;
   bool IndexAll = false;
+  std::function<bool()> Stop;
 };
 
 } // namespace shrinkwrap

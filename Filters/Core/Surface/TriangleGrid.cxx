@@ -47,7 +47,7 @@ TriangleGrid::TriangleGrid(
 {
 }
 
-TriangleGrid::TriangleGrid(std::vector<Box> boxes, double cell)
+TriangleGrid::TriangleGrid(std::vector<Box> boxes, double cell, const std::function<bool()>& stop)
   : Boxes(std::move(boxes))
   , Cell(cell)
 {
@@ -68,13 +68,19 @@ TriangleGrid::TriangleGrid(std::vector<Box> boxes, double cell)
   this->Cell = std::max(cell, largest / 8);
   this->Origin = all.min;
   this->Extent = this->rangeOf(all);
-  this->build();
+  this->build(stop);
+  if (this->Stopped)
+  {
+    *this = TriangleGrid({}, 0);
+    this->Stopped = true;
+  }
 }
 
 // Counting sort of (cell, triangle) into buckets; a triangle whose cells share a bucket is stored
-// once.
-void TriangleGrid::build()
+// once. `stop` is asked between the passes.
+void TriangleGrid::build(const std::function<bool()>& stop)
 {
+  const auto stopped = [&] { return this->Stopped = this->Stopped || (stop && stop()); };
   const int nt = static_cast<int>(this->Boxes.size());
   this->Ranges.resize(nt);
   std::size_t entries = 0;
@@ -82,6 +88,10 @@ void TriangleGrid::build()
   {
     const Range& r = this->Ranges[t] = this->rangeOf(this->Boxes[t]);
     entries += std::size_t(r[3] - r[0] + 1) * (r[4] - r[1] + 1) * (r[5] - r[2] + 1);
+  }
+  if (stopped())
+  {
+    return;
   }
   std::uint64_t buckets = 1;
   while (buckets < entries)
@@ -109,6 +119,10 @@ void TriangleGrid::build()
   {
     forEachBucket(t, [&](std::uint32_t b) { ++this->Start[b + 1]; });
   }
+  if (stopped())
+  {
+    return;
+  }
   for (std::uint64_t b = 0; b < buckets; ++b)
   {
     this->Start[b + 1] += this->Start[b];
@@ -119,6 +133,10 @@ void TriangleGrid::build()
   for (int t = 0; t < nt; ++t)
   {
     forEachBucket(t, [&](std::uint32_t b) { this->Items[fill[b]++] = t; });
+  }
+  if (stopped())
+  {
+    return;
   }
   this->ItemBoxes.resize(this->Items.size());
   for (std::size_t p = 0; p < this->Items.size(); ++p)

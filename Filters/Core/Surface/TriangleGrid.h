@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace shrinkwrap
@@ -24,13 +25,15 @@ public:
 
   // Cells two mean edges wide (no triangle in more than 9 x 9 x 9 cells).
   TriangleGrid(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
-  // Given boxes (e.g. swept over a step) in cells of the given size.
-  TriangleGrid(std::vector<Box> boxes, double cell);
+  // Given boxes (e.g. swept over a step) in cells of the given size. `stop` (empty: never), asked
+  // between the phases of the build, leaves the grid empty and stopped().
+  TriangleGrid(std::vector<Box> boxes, double cell, const std::function<bool()>& stop = {});
 
   static double cellSizeFor(
     const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles);
 
   bool empty() const { return this->Items.empty(); }
+  bool stopped() const { return this->Stopped; }
   double cell() const { return this->Cell; }
   const Box& box(int t) const { return this->Boxes[t]; }
 
@@ -51,7 +54,7 @@ public:
   }
 
 private:
-  void build();
+  void build(const std::function<bool()>& stop);
   std::uint32_t bucketOf(std::uint32_t i, std::uint32_t j, std::uint32_t k) const
   {
     const std::uint64_t h = (i * 73856093ull) ^ (j * 19349663ull) ^ (k * 83492791ull);
@@ -73,6 +76,7 @@ private:
   std::uint64_t Mask = 0;
   Vec3 Origin = Vec3::Zero();
   double Cell = 0;
+  bool Stopped = false;
 };
 
 template <typename F>

@@ -405,6 +405,26 @@ void stoppedSearch()
     some.pairs, all.pairs, asked);
   SW_CHECK(asked == 3 && some.pairs < all.pairs && all.pairs > 100,
     "the search stopped after its first batch with the crossings found so far");
+
+  // A grid whose build was stopped is empty and says so; a guard whose grid was stopped refuses
+  // every edit (its pass makes no more).
+  std::vector<Box> boxes;
+  for (const auto& t : sphere.triangles)
+  {
+    boxes.push_back(Box::around(sphere.points, t));
+  }
+  asked = 0;
+  const TriangleGrid stoppedGrid(boxes, 0.1, [&] { return ++asked > 0; });
+  const TriangleGrid wholeGrid(boxes, 0.1, [] { return false; });
+  SW_CHECK(stoppedGrid.stopped() && stoppedGrid.empty() && asked == 1 && !wholeGrid.stopped() &&
+      !wholeGrid.empty(),
+    "a stopped grid build leaves an empty grid");
+  const int i = 0, p = before.ringBegin(0), j = before.ring(p);
+  const int c = before.ring(before.next(i, p)), d = before.ring(before.previous(i, p));
+  CrossingGuard free(sphere.points, sphere.triangles), stopped(sphere.points, sphere.triangles);
+  stopped.setStop([] { return true; });
+  SW_CHECK(!free.flipCrosses(i, j, c, d) && stopped.flipCrosses(i, j, c, d),
+    "a guard stopped within its grid's build refuses the flip an unstopped one allows");
 }
 
 // A round of edits checked once: unguarded first, then guarded near where it crossed, then

@@ -624,7 +624,7 @@ void Evolver::adjustConnectivity(StepReport& report)
     report.message =
       "the remeshing failed at step " + std::to_string(report.step) + ": " + edited.message();
   }
-  if (report.connectivityChanged())
+  if (report.connectivityChanged() && !this->stopped()) // a stopped step's surface is discarded
   {
     this->connectivityChanged(report.splits == 0 && report.collapses == 0);
   }

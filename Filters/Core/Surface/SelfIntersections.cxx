@@ -294,6 +294,10 @@ SelfIntersections findNewSelfIntersections(const SurfaceMesh& before, const std:
   const std::vector<std::array<int, 3>>& triangles, const std::function<bool()>& stop)
 {
   const auto stopped = [&] { return stop && stop(); };
+  if (stopped())
+  {
+    return fromPairs(triangles.size(), {});
+  }
   const std::vector<int> same = samePositions(before, x);
   std::vector<int> made;
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t)

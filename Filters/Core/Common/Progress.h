@@ -45,8 +45,8 @@ private:
 
 // A stop request asked from within a long serial loop (the edits of a remeshing pass, say): called
 // per item, it asks `stop` (empty: never) on the kCallsPerClock-th call and then at most every
-// kPollSeconds, reading the clock every kCallsPerClock calls (items of a guarded pass can take
-// milliseconds each), and stays true once `stop` said so. `stop` must outlive it.
+// kPollSeconds, reading the clock every kCallsPerClock calls, and stays true once `stop` said so.
+// `stop` must outlive it.
 class StopPoll
 {
 public:

@@ -128,17 +128,18 @@ double roundingMargin(const TriangleGrid& grid)
 }
 
 // The pairs each(b, e, out) finds over chunks [b, e) of [0, n), from all threads, in one order
-// whatever the threads did. `stop` (empty: never) is asked between kStopBatches batches, on the
-// calling thread; a stopped search returns the pairs found so far.
-constexpr int kStopBatches = 8;
+// whatever the threads did. `stop` (empty: never) is asked between up to kStopBatches batches of at
+// least kCheapGrain items (a small search runs as one loop: each batch starts the threads anew), on
+// the calling thread; a stopped search returns the pairs found so far.
+constexpr Index kStopBatches = 8;
 template <typename Each>
 std::vector<std::pair<int, int>> pairsInParallel(
   Index n, Index grain, Each&& each, const std::function<bool()>& stop)
 {
   std::vector<std::pair<int, int>> pairs;
   std::mutex lock;
-  const int batches = stop ? kStopBatches : 1;
-  for (int k = 0; k < batches && !(k > 0 && stop()); ++k)
+  const Index batches = stop ? std::clamp<Index>(n / kCheapGrain, 1, kStopBatches) : 1;
+  for (Index k = 0; k < batches && !(k > 0 && stop()); ++k)
   {
     parallelFor(n * k / batches, n * (k + 1) / batches, grain, [&](Index b, Index e) {
       std::vector<std::pair<int, int>> found;
@@ -542,7 +543,10 @@ bool CrossingGuard::anyCrosses(const std::vector<Made>& made, int a, int b)
   {
     return false;
   }
-  this->grid(); // the reach is known from here
+  if (this->grid().stopped()) // the reach is known from here
+  {
+    return true;
+  }
   if (!this->IndexAll && !(all.size().maxCoeff() <= this->Reach))
   {
     // A question wider than the reach may meet triangles and edits left out: from now on, none is.

@@ -3,15 +3,21 @@
 #include "RankInputs.h"
 #include "SlabPieces.h"
 
+#include "Common/HugePages.h"
 #include "Common/Parallel.h"
 
 #include <vtkFloatArray.h>
+#include <vtkInformationDoubleVectorKey.h>
+#include <vtkInformationInformationVectorKey.h>
+#include <vtkInformationVector.h>
 #include <vtkInformation.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -44,6 +50,81 @@ Status checkPlanes(const GridLattice& lattice, int first, int last, const SlabEx
   }
   return fits;
 }
+// `count` values, in huge pages where the system gives them (their first writes fault in 2 MiB at a
+// time); throws std::bad_alloc when the process may not have them.
+void allocateValues(vtkFloatArray* values, std::int64_t count)
+{
+  void* buffer = allocateFreeable(static_cast<std::size_t>(count) * sizeof(float));
+  if (!buffer)
+  {
+    throw std::bad_alloc();
+  }
+  values->SetArray(static_cast<float*>(buffer), count, 0, vtkFloatArray::VTK_DATA_ARRAY_FREE);
+}
+
+// The least and greatest of some values, of all and of the finite ones.
+struct Extremes
+{
+  float low = std::numeric_limits<float>::infinity(), high = -low;
+  float finiteLow = low, finiteHigh = high;
+  void add(float v)
+  {
+    low = std::min(low, v);
+    high = std::max(high, v);
+    if (std::isfinite(v))
+    {
+      finiteLow = std::min(finiteLow, v);
+      finiteHigh = std::max(finiteHigh, v);
+    }
+  }
+  void add(const Extremes& e)
+  {
+    low = std::min(low, e.low);
+    high = std::max(high, e.high);
+    finiteLow = std::min(finiteLow, e.finiteLow);
+    finiteHigh = std::max(finiteHigh, e.finiteHigh);
+  }
+};
+
+// Stores [low, high] as the array's range of one kind (all values or the finite ones), where VTK
+// keeps the range it computes: valid while the array is unmodified.
+void keepRange(vtkDataArray* values, vtkInformationInformationVectorKey* kind, double low, double high)
+{
+  vtkNew<vtkInformationVector> components;
+  components->SetNumberOfInformationObjects(1);
+  const double range[2] = { low, high };
+  components->GetInformationObject(0)->Set(vtkDataArray::COMPONENT_RANGE(), range, 2);
+  values->GetInformation()->Set(kind, components);
+}
+
+// The field's ranges found on every core and kept by the array: ParaView's data information and
+// colour map read them instead of scanning the grid again on one core.
+void keepRanges(vtkFloatArray* values)
+{
+  const float* v = values->GetPointer(0);
+  const vtkIdType count = values->GetNumberOfValues();
+  if (count == 0)
+  {
+    return;
+  }
+  ThreadLocal<Extremes> partial;
+  onAllCores([&] {
+    parallelFor(0, count, 1 << 16, [&](Index b, Index e) {
+      Extremes& local = partial.local();
+      for (Index n = b; n < e; ++n)
+      {
+        local.add(v[n]);
+      }
+    });
+  });
+  Extremes all;
+  partial.forEach([&](const Extremes& e) { all.add(e); });
+  keepRange(values, vtkAbstractArray::PER_COMPONENT(), all.low, all.high);
+  if (all.finiteLow <= all.finiteHigh)
+  {
+    keepRange(values, vtkAbstractArray::PER_FINITE_COMPONENT(), all.finiteLow, all.finiteHigh);
+  }
+}
 } // namespace
 
 Status computeField(const MeasuredInput& measured, int first, int last,
@@ -58,10 +139,7 @@ Status computeField(const MeasuredInput& measured, int first, int last,
   values->SetName("SignedDistance");
   try // the memory estimate can be beaten by a process limit (ulimit -v, a job's cap)
   {
-    if (!values->SetNumberOfValues(planesOf(lattice, first, last).nodeCount()))
-    {
-      throw std::bad_alloc();
-    }
+    allocateValues(values, planesOf(lattice, first, last).nodeCount());
     onAllCores([&] {
       float* distance = values->GetPointer(0);
       if (!exchange)
@@ -77,6 +155,10 @@ Status computeField(const MeasuredInput& measured, int first, int last,
         throw std::runtime_error(status.message());
       }
     });
+    if (result.completed)
+    {
+      keepRanges(values);
+    }
   }
   catch (const std::bad_alloc&)
   {

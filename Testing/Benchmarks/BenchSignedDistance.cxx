@@ -5,6 +5,9 @@
 //   R, fresh process) BenchSignedDistance <mesh> --points N      (issue #13: N points sampled on
 //   the mesh, measured as a
 //                                               cloud, beside the mesh's field on the same grid)
+//   BenchSignedDistance <mesh> --cube S         (issue #62's equal grid: every resolution R is a
+//                                               cube of R cells a side around the bounds scaled S,
+//                                               given to the filter as an explicit grid)
 //
 // For every resolution: Mesh Signed Distance (the filter, median of N runs, with the core's stage
 // times), OpenVDB meshToVolume (narrow band of 3 voxels; and that band plus fast sweeping over the
@@ -198,6 +201,24 @@ void pointRows(vtkPolyData* mesh, const shrinkwrap::TriangleSoup& soup, int coun
       median(pointTimes) / median(meshTimes), accuracy.mean, accuracy.max);
   }
 }
+// The cube of `resolution` cells a side around the mesh's bounds scaled by `scale` about their
+// centre, as the filter's explicit grid.
+void useCube(vtkMeshSignedDistance* filter, vtkPolyData* mesh, double scale, int resolution)
+{
+  double b[6];
+  mesh->GetBounds(b);
+  const double half = scale * std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] }) / 2;
+  double bounds[6];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double centre = (b[2 * a] + b[2 * a + 1]) / 2;
+    bounds[2 * a] = centre - half;
+    bounds[2 * a + 1] = centre + half;
+  }
+  filter->UseExplicitGridOn();
+  filter->SetOutputBounds(bounds);
+  filter->SetOutputDimensions(resolution + 1, resolution + 1, resolution + 1);
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -210,6 +231,7 @@ int main(int argc, char* argv[])
     return 2;
   }
   int runs = 5, memoryResolution = 0, pointCount = 0;
+  double cubeScale = 0;
   bool runVtk = true, runAccuracy = true;
   std::vector<int> resolutions = { 90, 120, 180, 240 };
   for (int a = 2; a < argc; ++a)
@@ -233,6 +255,8 @@ int main(int argc, char* argv[])
       memoryResolution = std::atoi(argv[++a]);
     else if (arg == "--points" && a + 1 < argc)
       pointCount = std::atoi(argv[++a]);
+    else if (arg == "--cube" && a + 1 < argc)
+      cubeScale = std::atof(argv[++a]);
   }
 
   vtkSmartPointer<vtkPolyData> mesh = load(argv[1]);
@@ -254,6 +278,8 @@ int main(int argc, char* argv[])
     vtkNew<vtkMeshSignedDistance> filter;
     filter->SetInputData(mesh);
     filter->SetResolution(memoryResolution);
+    if (cubeScale > 0)
+      useCube(filter, mesh, cubeScale, memoryResolution);
     filter->Update();
     const double output = 4.0 * filter->GetOutput()->GetNumberOfPoints() / 1024;
     const long peak = peakRssKiB();
@@ -293,6 +319,8 @@ int main(int argc, char* argv[])
     filter->SetInputData(mesh);
     filter->SetResolution(resolution);
     filter->SetOffsetFactor(shrinkwrap::kPaperOffsetFactor); // Table 1's grid: the paper's box
+    if (cubeScale > 0)
+      useCube(filter, mesh, cubeScale, resolution);
     std::vector<double> totals;
     for (int r = 0; r < runs; ++r)
     {

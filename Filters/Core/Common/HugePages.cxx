@@ -1,6 +1,7 @@
 #include "Common/HugePages.h"
 
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <new>
@@ -78,7 +79,28 @@ void unmapHugePages(void* p, std::size_t bytes)
 {
   munmap(p, roundedUp(bytes));
 }
+void* allocateFreeable(std::size_t bytes)
+{
+  if (bytes < kMinHugeBuffer || !mapsLargeBuffers() ||
+    bytes > std::numeric_limits<std::size_t>::max() - 2 * kHugePage)
+  {
+    return std::malloc(bytes);
+  }
+  const std::size_t size = roundedUp(bytes);
+  void* p = nullptr;
+  if (posix_memalign(&p, kHugePage, size) != 0)
+  {
+    return nullptr;
+  }
+  madvise(p, size, MADV_HUGEPAGE); // a hint: without huge pages the buffer works the same
+  return p;
+}
 #else
+void* allocateFreeable(std::size_t bytes)
+{
+  return std::malloc(bytes);
+}
+
 bool mapsLargeBuffers()
 {
   return false;

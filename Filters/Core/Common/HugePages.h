@@ -28,6 +28,11 @@ void unmapHugePages(void* p, std::size_t bytes);
 // where the heap's is reused.
 bool mapsLargeBuffers();
 
+// At least `bytes` from the C heap, freed by std::free (so a buffer handed to a library that frees
+// it so, as VTK's arrays do): aligned to kHugePage and advised to be huge where mapsLargeBuffers()
+// and `bytes` is at least kMinHugeBuffer; null when none are left.
+void* allocateFreeable(std::size_t bytes);
+
 // A std::allocator that maps buffers of kMinHugeBuffer and more in huge pages (which of the two a
 // buffer came from follows from its size alone).
 template <typename T>

@@ -1,5 +1,6 @@
 #include "Distance/SignedDistance.h"
 
+#include "Common/HugePages.h"
 #include "Common/Memory.h"
 #include "Common/Parallel.h"
 
@@ -29,7 +30,7 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 // Far field by closest-point passes; the distance of every node is that to its site (the band node
 // whose closest point it is), which `site` keeps for the sign.
 bool closestPointFarField(const GridLattice& lattice, const DistanceBand& band, float* distance,
-  std::vector<std::int32_t>& site, const Progress& progress)
+  LargeVector<std::int32_t>& site, const Progress& progress)
 {
   site.assign(lattice.nodeCount(), -1);
   for (std::size_t k = 0; k < band.nodes.size(); ++k)
@@ -54,12 +55,12 @@ bool eikonalFarField(const GridLattice& lattice, const DistanceBand& band,
 // Eikonal far field keeps no sites: closest-point passes find them (their distances are not kept).
 // False if aborted.
 bool signByWinding(const DistanceSource& source, const GridLattice& lattice,
-  const DistanceBand& band, std::vector<std::int32_t>& site, std::uint8_t* state,
+  const DistanceBand& band, LargeVector<std::int32_t>& site, std::uint8_t* state,
   const Progress& progress, SignedDistanceResult& result)
 {
   if (site.empty())
   {
-    std::vector<float> scratch(lattice.nodeCount());
+    LargeVector<float> scratch(lattice.nodeCount());
     if (!closestPointFarField(lattice, band, scratch.data(), site, progress.stage(0, 0.3)))
     {
       return false;
@@ -217,7 +218,7 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   {
     return result;
   }
-  std::vector<std::uint8_t> state(lattice.nodeCount(), Unvisited);
+  LargeVector<std::uint8_t> state(lattice.nodeCount(), Unvisited);
   result.outlineSeconds = secondsSince(clock);
   clock = std::chrono::steady_clock::now();
   DistanceBand band;
@@ -238,7 +239,7 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   // Lines 6-7: the far field.
   clock = std::chrono::steady_clock::now();
   const Progress sweepProgress = progress.stage(0.45, 0.8);
-  std::vector<std::int32_t> site;
+  LargeVector<std::int32_t> site;
   const bool swept = settings.sweep == SweepMethod::ClosestPoint
     ? closestPointFarField(lattice, band, distance, site, sweepProgress)
     : eikonalFarField(

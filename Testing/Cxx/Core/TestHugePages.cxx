@@ -6,7 +6,9 @@
 #include "Common/HugePages.h"
 #include "TestUtilities.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <new>
 
@@ -65,6 +67,19 @@ int TestHugePages(int, char*[])
   // A buffer of exactly the threshold and one of many huge pages, written to the last element.
   LargeVector<char> edge(kMinHugeBuffer, 1), big(5 * kHugePage + 3, 2);
   SW_CHECK(edge.back() == 1 && big.back() == 2 && big.front() == 2, "the whole buffer is usable");
+
+  // A buffer for a library that frees with std::free (VTK's arrays): aligned where large, whole,
+  // and freed so (AddressSanitizer reports a buffer freed the wrong way).
+  for (const std::size_t bytes : { std::size_t(100), kMinHugeBuffer, 3 * kHugePage + 7 })
+  {
+    auto* freeable = static_cast<char*>(allocateFreeable(bytes));
+    SW_CHECK(freeable != nullptr, "allocateFreeable(" << bytes << ") gives a buffer");
+    SW_CHECK(!mapped || bytes < kMinHugeBuffer || alignedToHugePage(freeable),
+      "a large freeable buffer starts on a huge page");
+    std::fill(freeable, freeable + bytes, char(3));
+    SW_CHECK(freeable[0] == 3 && freeable[bytes - 1] == 3, "the whole freeable buffer is usable");
+    std::free(freeable);
+  }
 
   // Sizes no mapping can hold are refused, not rounded into a small one: one whose rounding up to
   // huge pages would wrap, one beyond the address space.

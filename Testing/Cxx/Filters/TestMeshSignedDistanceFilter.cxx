@@ -104,6 +104,24 @@ int TestMeshSignedDistanceFilter(int, char*[])
   SW_CHECK(values != nullptr, "a float point array named SignedDistance");
   SW_CHECK(image->GetPointData()->GetScalars() == values, "SignedDistance is the active scalars");
   SW_CHECK(fieldValue(image, "Signed") == 1, "field data Signed = 1 for a closed mesh");
+  // The ranges come with the field (found on every core), so ParaView does not scan the grid for
+  // them again; they are the values' own.
+  SW_CHECK(values && values->GetInformation()->Has(vtkAbstractArray::PER_COMPONENT()) &&
+      values->GetInformation()->Has(vtkAbstractArray::PER_FINITE_COMPONENT()),
+    "the field's ranges are kept with it");
+  if (values)
+  {
+    const auto extremes = std::minmax_element(
+      values->GetPointer(0), values->GetPointer(0) + values->GetNumberOfValues());
+    double range[2], finite[2];
+    values->GetRange(range);
+    values->GetFiniteRange(finite);
+    SW_CHECK(range[0] == *extremes.first && range[1] == *extremes.second &&
+        finite[0] == range[0] && finite[1] == range[1],
+      "the kept ranges are the least and greatest values: [" << range[0] << ", " << range[1]
+                                                              << "], finite [" << finite[0]
+                                                              << ", " << finite[1] << "]");
+  }
   SW_CHECK(values && values->GetRange()[0] < -0.95 && values->GetRange()[0] > -1.0,
     "the centre is about one radius inside");
 

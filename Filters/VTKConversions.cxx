@@ -358,7 +358,7 @@ Status gridOf(vtkImageData* image, const char* name, DistanceGrid& grid)
       std::to_string(values->GetNumberOfTuples()) + " values for " +
       std::to_string(lattice.nodeCount()) + " nodes");
   }
-  std::vector<float> v(values->GetNumberOfTuples());
+  FieldValues v(values->GetNumberOfTuples());
   for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
   {
     v[i] = static_cast<float>(values->GetTuple1(i));

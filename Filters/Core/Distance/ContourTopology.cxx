@@ -50,7 +50,7 @@ long long blockEuler(int n, const At& at, double value, const std::array<int, 25
 // Twice the contributions of the cell with lowest corner (i, j, k) of values `v`: of the grid's
 // contour and of the half spacing's.
 ContourEuler cellEuler(
-  const GridLattice& lattice, const std::vector<float>& v, int i, int j, int k, double value)
+  const GridLattice& lattice, const FieldValues& v, int i, int j, int k, double value)
 {
   float corner[2][2][2];
   bool below = false, above = false;
@@ -81,7 +81,7 @@ ContourEuler cellEuler(
 
 // Twice the contributions of the cells around node n, the only ones its value enters.
 ContourEuler aroundNode(
-  const GridLattice& lattice, const std::vector<float>& v, std::int64_t n, double value)
+  const GridLattice& lattice, const FieldValues& v, std::int64_t n, double value)
 {
   const std::array<int, 3> c = lattice.coordinates(n);
   ContourEuler sum;
@@ -101,7 +101,7 @@ ContourEuler aroundNode(
 std::vector<std::int64_t> wronglyJoinedCorners(const DistanceGrid& grid, double value)
 {
   const GridLattice& lattice = grid.lattice();
-  const std::vector<float>& v = grid.values();
+  const FieldValues& v = grid.values();
   constexpr int kPlanes[3][2] = { { 0, 1 }, { 1, 2 }, { 0, 2 } };
   std::vector<std::int64_t> shallower;
   std::mutex lock;
@@ -167,7 +167,7 @@ std::vector<ContourEuler> contourEulerCharacteristics(
   const DistanceGrid& grid, const std::vector<double>& values)
 {
   const GridLattice& lattice = grid.lattice();
-  const std::vector<float>& v = grid.values();
+  const FieldValues& v = grid.values();
   std::vector<ContourEuler> twice(values.size());
   std::mutex lock;
   parallelFor(0, lattice.dims[2] - 1, 1, [&](Index kb, Index ke) {
@@ -215,7 +215,7 @@ ContourEuler contourEulerCharacteristic(const DistanceGrid& grid, double value)
 DistanceGrid withFacesSeparated(const DistanceGrid& grid, double value)
 {
   const GridLattice& lattice = grid.lattice();
-  std::vector<float> values = grid.values();
+  FieldValues values = grid.values();
   float at = static_cast<float>(value);
   while (at < value)
   {

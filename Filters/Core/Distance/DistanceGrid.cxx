@@ -53,7 +53,7 @@ DistanceGrid DistanceGrid::refined() const
     fine.dims[a] = 2 * (coarse.dims[a] - 1) + 1;
     fine.spacing[a] = coarse.spacing[a] / 2;
   }
-  std::vector<float> values(fine.nodeCount());
+  FieldValues values(fine.nodeCount());
   const auto at = [this](
                     int i, int j, int k) { return this->Values[this->Lattice.index(i, j, k)]; };
   parallelFor(0, fine.dims[2], 1, [&](Index kb, Index ke) {

@@ -4,6 +4,7 @@
 #ifndef ShrinkWrap_DistanceGrid_h
 #define ShrinkWrap_DistanceGrid_h
 
+#include "Common/HugePages.h"
 #include "Distance/GridLattice.h"
 
 #include <vector>
@@ -17,19 +18,27 @@ struct DistanceSample
   Vec3 gradient;
 };
 
+// A field's node values, x fastest (in huge pages where the system gives them: a fine field's
+// first writes would otherwise fault in a small page at a time).
+using FieldValues = LargeVector<float>;
+
 class DistanceGrid
 {
 public:
   DistanceGrid() = default;
-  DistanceGrid(const GridLattice& lattice, std::vector<float> values)
+  DistanceGrid(const GridLattice& lattice, FieldValues values)
     : Lattice(lattice)
     , Values(std::move(values))
+  {
+  }
+  DistanceGrid(const GridLattice& lattice, const std::vector<float>& values)
+    : DistanceGrid(lattice, FieldValues(values.begin(), values.end()))
   {
   }
 
   const GridLattice& lattice() const { return this->Lattice; }
   bool empty() const { return this->Values.empty(); }
-  const std::vector<float>& values() const { return this->Values; }
+  const FieldValues& values() const { return this->Values; }
   DistanceSample sample(const Vec3& x) const;
 
   // The same trilinear interpolant sampled at half the spacing (the nodes kept): a contour of it
@@ -56,7 +65,7 @@ public:
 
 private:
   GridLattice Lattice;
-  std::vector<float> Values;
+  FieldValues Values;
 };
 
 } // namespace shrinkwrap

@@ -435,7 +435,7 @@ Status signedDistanceGrid(const TriangleSoup& soup, const GridLattice& lattice,
   {
     return status;
   }
-  std::vector<float> values(lattice.nodeCount());
+  FieldValues values(lattice.nodeCount());
   result = fromSoup(soup, lattice, settings, values.data(), progress, target);
   grid = result.completed ? DistanceGrid(lattice, std::move(values)) : DistanceGrid();
   return {};

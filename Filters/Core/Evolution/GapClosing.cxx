@@ -22,7 +22,7 @@ std::array<int, 6> wholeGrid(const GridLattice& lattice)
 // reach through it.
 std::vector<char> dilationNodes(const DistanceGrid& field, double radius, bool fillCavities)
 {
-  const std::vector<float>& d = field.values();
+  const FieldValues& d = field.values();
   std::vector<char> inside(d.size());
   for (std::size_t n = 0; n < d.size(); ++n)
   {
@@ -46,7 +46,7 @@ std::vector<std::int64_t> nodesNearBoundary(
   const DistanceGrid& field, double r, const std::vector<char>& inside)
 {
   const double width = field.lattice().spacing.maxCoeff();
-  const std::vector<float>& d = field.values();
+  const FieldValues& d = field.values();
   std::vector<std::int64_t> nodes;
   for (std::size_t n = 0; n < d.size(); ++n)
   {
@@ -219,10 +219,10 @@ bool closingSites(const DistanceGrid& field, const DistanceSource* target, doubl
 // stop (reported over batches of nodes).
 bool closedValues(const DistanceGrid& field, const DistanceSource* target, double radius,
   const std::vector<char>& inside, bool fillCavities, const ClosingSites& c,
-  const std::vector<float>& e, const Progress& progress, std::vector<float>& values)
+  const FieldValues& e, const Progress& progress, FieldValues& values)
 {
   const GridLattice& lattice = field.lattice();
-  std::vector<std::int32_t> nearSlot(lattice.nodeCount(), -1);
+  LargeVector<std::int32_t> nearSlot(lattice.nodeCount(), -1);
   for (std::size_t s = 0; s < c.near.size(); ++s)
   {
     nearSlot[c.near[s]] = static_cast<std::int32_t>(s);
@@ -287,18 +287,18 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
   {
     return aborted;
   }
-  std::vector<std::int32_t> siteOfNode(lattice.nodeCount(), -1);
+  LargeVector<std::int32_t> siteOfNode(lattice.nodeCount(), -1);
   for (std::size_t s = 0; s < c.near.size(); ++s)
   {
     siteOfNode[c.near[s]] = c.found[s] ? static_cast<std::int32_t>(s) : -1;
   }
-  std::vector<float> e(lattice.nodeCount());
+  FieldValues e(lattice.nodeCount());
   if (!progress.report(0.4) ||
     !sweepClosestPoints(lattice, c.sites, siteOfNode.data(), e.data(), progress.stage(0.4, 0.9)))
   {
     return aborted;
   }
-  std::vector<float> values;
+  FieldValues values;
   if (!closedValues(
         field, target, radius, inside, fillCavities, c, e, progress.stage(0.9, 1), values))
   {

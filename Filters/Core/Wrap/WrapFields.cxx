@@ -18,7 +18,7 @@ const char* const kUnsignedEffect =
 // The given field's grid, checked: signed when it has an inside.
 Status givenGrid(const DistanceGrid& given, Notes& notes, DistanceGrid& grid, bool& isSigned)
 {
-  const std::vector<float>& values = given.values();
+  const FieldValues& values = given.values();
   if (std::all_of(values.begin(), values.end(), [](float d) { return d < 0; }))
   {
     return Status::failure("the Distance Field has no outside (every value is negative), so no "
@@ -128,7 +128,7 @@ Status pointFields(
   {
     return Status::failure("the points' distance field: " + fits.message());
   }
-  std::vector<float> values(plan.lattice.nodeCount());
+  FieldValues values(plan.lattice.nodeCount());
   SignedDistanceResult result;
   if (polygons)
   {

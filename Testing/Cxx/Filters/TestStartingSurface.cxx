@@ -374,7 +374,7 @@ void followsTheInterpolantsTopology()
   // Which corner is raised: the shallower of the two below (-0.5 against -1), and only that node.
   const shrinkwrap::DistanceGrid uneven = [] {
     shrinkwrap::DistanceGrid g = ambiguousFace(-1, 2);
-    std::vector<float> v = g.values();
+    shrinkwrap::FieldValues v = g.values();
     v[g.lattice().index(3, 3, 1)] = -0.5f;
     return shrinkwrap::DistanceGrid(g.lattice(), std::move(v));
   }();
@@ -390,7 +390,7 @@ void followsTheInterpolantsTopology()
   // Not where the raise would change the interpolant's own topology: with the second block a single
   // node, raising it would delete that blob, which the interpolant has.
   const shrinkwrap::DistanceGrid lone = [&uneven] {
-    std::vector<float> v = uneven.values();
+    shrinkwrap::FieldValues v = uneven.values();
     for (const auto& c : { std::array<int, 3>{ 4, 3, 1 }, std::array<int, 3>{ 3, 4, 1 },
            std::array<int, 3>{ 4, 4, 1 } })
     {

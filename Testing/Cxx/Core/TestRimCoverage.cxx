@@ -125,6 +125,10 @@ void holds()
   }
   SW_CHECK(holding == 3 && std::abs(atFace[t[0]] - 1.0 / 3) < 1e-9 && std::abs(sum - 1) < 1e-9,
     "a sample at a triangle's centre is held by its corners, a third each");
+  // Searched near the surface first, then over the whole reach: a sample farther out than the
+  // first search is held the same way.
+  const std::vector<double> fartherOut = rimHolds(sphere, { y[0] * 1.08 }, 0.1);
+  SW_CHECK(fartherOut == atVertex, "a sample 0.08 out, within the reach 0.1, is held by that vertex");
   SW_CHECK(rimHolds(sphere, { y[0] * 1.5 }, 0.1) == std::vector<double>(y.size(), 0.0),
     "a sample beyond the reach is held by none");
 }

@@ -21,6 +21,10 @@
 // --points) for a quicker run beside alpha wrap alone. --repeat N runs every wrap N times and
 // reports the fastest (this machine's times vary by 20% from run to run; the fastest of a few is
 // the one least disturbed), each of ours by a new filter, so that none reuses another's work.
+// --sizes N,... (issue #62's scaling) replaces both sides' sizes: ours at Target Edge Length = Gap
+// Size = diagonal / N with Resolution 1.5 N, alpha wrap at alpha = diagonal / N; --only ours|alpha runs
+// one side, so that a fresh process per run gives that run's peak resident memory (printed after
+// each row).
 // --draw K samples the points (and their noise) with other seeds: a largest distance depends on
 // where the points fall, and one draw cannot tell a trend from luck. --ramp R makes the points'
 // density fall R times along x (a scan's far side): a sample is kept with a probability from 1 at
@@ -28,6 +32,8 @@
 #include "TestUtilities.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
+
+#include <sys/resource.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -79,6 +85,14 @@ double fastestOf(int repeats, Run&& run)
     fastest = std::min(fastest, seconds(start));
   }
   return fastest;
+}
+
+// The process's peak resident memory so far, as a line under a row (--sizes).
+void peakRow()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::printf("peak resident memory: %.0f MB\n", usage.ru_maxrss / 1024.0);
 }
 
 void write(const TriangleSoup& soup, const std::string& path)
@@ -361,6 +375,8 @@ int main(int argc, char* argv[])
   bool ourVariants = true;
   bool timeOnly = false;
   bool withReconstruction = true; // --no-reconstruction
+  std::vector<int> sizes;          // --sizes: diagonal / N on both sides
+  std::string only;                // --only ours|alpha: one side
   int repeats = 1;                // --repeat: the fastest of this many runs of every wrap
   CloudSampling
     sampling; // --points (wrap that many points sampled on each mesh instead of it), --noise,
@@ -421,6 +437,18 @@ int main(int argc, char* argv[])
       ourVariants = false;
       timeOnly = true;
     }
+    else if (arg == "--sizes" && a + 1 < argc)
+    {
+      std::stringstream list(argv[++a]);
+      for (std::string n; std::getline(list, n, ',');)
+      {
+        sizes.push_back(std::max(1, std::atoi(n.c_str())));
+      }
+    }
+    else if (arg == "--only" && a + 1 < argc)
+    {
+      only = argv[++a];
+    }
     else if (arg == "--no-reconstruction")
     {
       withReconstruction = false;
@@ -457,14 +485,25 @@ int main(int argc, char* argv[])
       continue;
     }
 
-    // Ours: the defaults, then two other target edge lengths.
-    for (const double divisor :
-      ourVariants ? std::vector<double>{ 0, 25, 100 } : std::vector<double>{ 0 })
+    // Ours: the defaults, then two other target edge lengths (or the --sizes).
+    std::vector<double> divisors =
+      ourVariants ? std::vector<double>{ 0, 25, 100 } : std::vector<double>{ 0 };
+    if (!sizes.empty())
+    {
+      divisors.assign(sizes.begin(), sizes.end());
+    }
+    for (const double divisor : only == "alpha" ? std::vector<double>() : divisors)
     {
       vtkSmartPointer<vtkShrinkWrapFilter> wrap;
       const double total = fastestOf(repeats, [&] {
         wrap = configuredWrap(mesh, sets);
-        if (divisor > 0)
+        if (divisor > 0 && !sizes.empty())
+        {
+          wrap->SetTargetEdgeLength(diagonal / divisor);
+          wrap->SetGapSize(diagonal / divisor);
+          wrap->SetResolution(static_cast<int>(std::lround(1.5 * divisor)));
+        }
+        else if (divisor > 0)
         {
           wrap->SetTargetEdgeLength(diagonal / divisor);
           // The field's cell follows L: the default Resolution belongs to L = diagonal / 50 (never
@@ -489,13 +528,17 @@ int main(int argc, char* argv[])
       }
       const TriangleSoup soup = testing::triangulated(result);
       row(label, total, soup, target, status ? status->GetValue(0) : "none");
+      if (!sizes.empty())
+      {
+        peakRow();
+      }
       if (!out.empty() && divisor == 0)
       {
         write(soup, out + "/" + name + "_shrinkwrap.vtp");
       }
     }
 
-    if (timeOnly)
+    if (timeOnly || only == "ours")
     {
       continue;
     }
@@ -511,7 +554,7 @@ int main(int argc, char* argv[])
       faces.push_back({ static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]),
         static_cast<std::size_t>(t[2]) });
     }
-    for (const int divisor : { 20, 50, 100 })
+    for (const int divisor : sizes.empty() ? std::vector<int>{ 20, 50, 100 } : sizes)
     {
       const double alpha = diagonal / divisor, offset = alpha / 30;
       CgalMesh wrapped;
@@ -521,6 +564,10 @@ int main(int argc, char* argv[])
       });
       const TriangleSoup soup = soupOf(wrapped);
       row(kAlphaWrap + " diag/" + std::to_string(divisor), total, soup, target, "ok");
+      if (!sizes.empty())
+      {
+        peakRow();
+      }
       if (!out.empty())
       {
         write(soup, out + "/" + name + "_alphawrap_" + std::to_string(divisor) + ".vtp");

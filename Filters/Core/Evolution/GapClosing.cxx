@@ -217,26 +217,32 @@ bool closingSites(const DistanceGrid& field, const DistanceSource* target, doubl
 // boundary point decides (its distance bounds e from above, and equals r - d where it is clear).
 // Inside the target, where the wrap never goes, r - e only bounds d. False when `progress` asked to
 // stop (reported over batches of nodes).
+// The closed values are written over e (node by node: each reads its own e first), and the slots
+// of the near nodes are listed in `nearSlot`, a node-sized scratch (the passes' sites, no longer
+// needed): a fine field's closing holds two node arrays fewer.
 bool closedValues(const DistanceGrid& field, const DistanceSource* target, double radius,
   const std::vector<char>& inside, bool fillCavities, const ClosingSites& c,
-  const FieldValues& e, const Progress& progress, FieldValues& values)
+  LargeVector<std::int32_t>& nearSlot, const Progress& progress, FieldValues& e)
 {
   const GridLattice& lattice = field.lattice();
-  LargeVector<std::int32_t> nearSlot(lattice.nodeCount(), -1);
+  std::fill(nearSlot.begin(), nearSlot.end(), -1);
   for (std::size_t s = 0; s < c.near.size(); ++s)
   {
     nearSlot[c.near[s]] = static_cast<std::int32_t>(s);
   }
-  values = field.values();
+  const FieldValues& d = field.values();
   const float r = static_cast<float>(radius);
   const float hair = static_cast<float>(1e-3 * lattice.spacing.maxCoeff());
   return forChunks(lattice.nodeCount(), 8, progress, [&](long long b, long long end) {
     for (long long n = b; n < end; ++n)
     {
       if (!inside[n])
+      {
+        e[n] = d[n];
         continue;
+      }
       double nearest = e[n];
-      if (values[n] >= 0 && r - e[n] < values[n] - hair)
+      if (d[n] >= 0 && r - e[n] < d[n] - hair)
       {
         // A node near the boundary has its boundary point from above.
         const std::int32_t s = nearSlot[n];
@@ -249,7 +255,7 @@ bool closedValues(const DistanceGrid& field, const DistanceSource* target, doubl
           nearest = std::min(nearest, (site - lattice.position(lattice.coordinates(n))).norm());
         }
       }
-      values[n] = std::min(values[n], static_cast<float>(radius - nearest));
+      e[n] = std::min(d[n], static_cast<float>(radius - nearest));
     }
   });
 }
@@ -298,13 +304,12 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
   {
     return aborted;
   }
-  FieldValues values;
-  if (!closedValues(
-        field, target, radius, inside, fillCavities, c, e, progress.stage(0.9, 1), values))
+  if (!closedValues(field, target, radius, inside, fillCavities, c, siteOfNode,
+        progress.stage(0.9, 1), e))
   {
     return aborted;
   }
-  closed = DistanceGrid(lattice, std::move(values));
+  closed = DistanceGrid(lattice, std::move(e));
   return progress.report(1) ? Status() : aborted;
 }
 

@@ -7,10 +7,10 @@
 #include "Common/Parallel.h"
 
 #include <vtkFloatArray.h>
+#include <vtkInformation.h>
 #include <vtkInformationDoubleVectorKey.h>
 #include <vtkInformationInformationVectorKey.h>
 #include <vtkInformationVector.h>
-#include <vtkInformation.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -88,7 +88,8 @@ struct Extremes
 
 // Stores [low, high] as the array's range of one kind (all values or the finite ones), where VTK
 // keeps the range it computes: valid while the array is unmodified.
-void keepRange(vtkDataArray* values, vtkInformationInformationVectorKey* kind, double low, double high)
+void keepRange(
+  vtkDataArray* values, vtkInformationInformationVectorKey* kind, double low, double high)
 {
   vtkNew<vtkInformationVector> components;
   components->SetNumberOfInformationObjects(1);

@@ -22,9 +22,9 @@
 // reports the fastest (this machine's times vary by 20% from run to run; the fastest of a few is
 // the one least disturbed), each of ours by a new filter, so that none reuses another's work.
 // --sizes N,... (issue #62's scaling) replaces both sides' sizes: ours at Target Edge Length = Gap
-// Size = diagonal / N with Resolution 1.5 N, alpha wrap at alpha = diagonal / N; --only ours|alpha runs
-// one side, so that a fresh process per run gives that run's peak resident memory (printed after
-// each row).
+// Size = diagonal / N with Resolution 1.5 N, alpha wrap at alpha = diagonal / N; --only ours|alpha
+// runs one side, so that a fresh process per run gives that run's peak resident memory (printed
+// after each row).
 // --draw K samples the points (and their noise) with other seeds: a largest distance depends on
 // where the points fall, and one draw cannot tell a trend from luck. --ramp R makes the points'
 // density fall R times along x (a scan's far side): a sample is kept with a probability from 1 at
@@ -375,8 +375,8 @@ int main(int argc, char* argv[])
   bool ourVariants = true;
   bool timeOnly = false;
   bool withReconstruction = true; // --no-reconstruction
-  std::vector<int> sizes;          // --sizes: diagonal / N on both sides
-  std::string only;                // --only ours|alpha: one side
+  std::vector<int> sizes;         // --sizes: diagonal / N on both sides
+  std::string only;               // --only ours|alpha: one side
   int repeats = 1;                // --repeat: the fastest of this many runs of every wrap
   CloudSampling
     sampling; // --points (wrap that many points sampled on each mesh instead of it), --noise,

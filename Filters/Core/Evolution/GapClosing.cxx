@@ -304,8 +304,8 @@ Status closingField(const DistanceGrid& field, double radius, const DistanceSour
   {
     return aborted;
   }
-  if (!closedValues(field, target, radius, inside, fillCavities, c, siteOfNode,
-        progress.stage(0.9, 1), e))
+  if (!closedValues(
+        field, target, radius, inside, fillCavities, c, siteOfNode, progress.stage(0.9, 1), e))
   {
     return aborted;
   }

@@ -128,7 +128,8 @@ void holds()
   // Searched near the surface first, then over the whole reach: a sample farther out than the
   // first search is held the same way.
   const std::vector<double> fartherOut = rimHolds(sphere, { y[0] * 1.08 }, 0.1);
-  SW_CHECK(fartherOut == atVertex, "a sample 0.08 out, within the reach 0.1, is held by that vertex");
+  SW_CHECK(
+    fartherOut == atVertex, "a sample 0.08 out, within the reach 0.1, is held by that vertex");
   SW_CHECK(rimHolds(sphere, { y[0] * 1.5 }, 0.1) == std::vector<double>(y.size(), 0.0),
     "a sample beyond the reach is held by none");
 }

@@ -116,11 +116,10 @@ int TestMeshSignedDistanceFilter(int, char*[])
     double range[2], finite[2];
     values->GetRange(range);
     values->GetFiniteRange(finite);
-    SW_CHECK(range[0] == *extremes.first && range[1] == *extremes.second &&
-        finite[0] == range[0] && finite[1] == range[1],
-      "the kept ranges are the least and greatest values: [" << range[0] << ", " << range[1]
-                                                              << "], finite [" << finite[0]
-                                                              << ", " << finite[1] << "]");
+    SW_CHECK(range[0] == *extremes.first && range[1] == *extremes.second && finite[0] == range[0] &&
+        finite[1] == range[1],
+      "the kept ranges are the least and greatest values: ["
+        << range[0] << ", " << range[1] << "], finite [" << finite[0] << ", " << finite[1] << "]");
   }
   SW_CHECK(values && values->GetRange()[0] < -0.95 && values->GetRange()[0] > -1.0,
     "the centre is about one radius inside");
@@ -219,8 +218,8 @@ int TestMeshSignedDistanceFilter(int, char*[])
   auto* inverted = vtkStringArray::SafeDownCast(
     filter->GetOutput()->GetFieldData()->GetAbstractArray("DistanceStatus"));
   SW_CHECK(inverted && inverted->GetValue(0).find("face inwards") != std::string::npos,
-    "DistanceStatus says its triangles face inwards: "
-      << (inverted ? inverted->GetValue(0) : std::string("none")));
+    "DistanceStatus says its triangles face inwards: " << (inverted ? inverted->GetValue(0)
+                                                                    : std::string("none")));
   testing::checkAccuracy("inside-out sphere",
     testing::compareWithReference(
       filter->GetOutput(), testing::triangulated(sphere(32)), true, true),

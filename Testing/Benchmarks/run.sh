@@ -100,3 +100,11 @@ echo "Shrink Wrap at its defaults on a multiblock of CGAL's camel, hand, Chinese
 echo "mech-holes-shark, to its last step (block k wrapped on rank k mod ranks):"
 echo
 bash "$(dirname "$0")/mpi.sh" "$build" wrap
+
+echo
+echo "## Time and memory against size beside alpha wrap (issue #62), $(date -u +%Y-%m-%d)"
+echo
+echo "Shrink Wrap at Target Edge Length = Gap Size = diagonal / N (Resolution 1.5 N) beside alpha wrap at"
+echo "alpha = diagonal / N, each run alone in a fresh process; the last column is its peak resident memory:"
+echo
+bash "$(dirname "$0")/scaling.sh" "$build"

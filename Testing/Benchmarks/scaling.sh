@@ -14,6 +14,8 @@ bench="$build/bin/BenchShrinkWrapCGAL6"
 [ -x "$bench" ] || bench="$build/bin/BenchShrinkWrap"
 table="$build/scaling.tsv"
 printf 'mesh\tmethod\tN\tvertices\tseconds\tpeak_mb\tmean_wt\tmean_tw\n' > "$table"
+echo "| target | method | vertices | time s | mean w→t | mean t→w | max w→t | max t→w | self-int. pairs (CGAL) | closed manifold | genus | angles < 20° | status | peak memory |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for mesh in ${meshes//,/ }; do
   for n in ${sizes//,/ }; do
     for side in ours alpha; do
@@ -21,7 +23,7 @@ for mesh in ${meshes//,/ }; do
         grep '^| \(Shrink\|alpha\)\|^peak')"
       row="$(echo "$out" | grep '^|')"
       peak="$(echo "$out" | sed -n 's/^peak resident memory: \([0-9]*\) MB/\1/p')"
-      echo "| $mesh $row $peak MB |"
+      echo "| $mesh ${row%|} | $peak MB |"
       # | method | vertices | time s | mean w→t | mean t→w | ...
       echo "$row" | awk -F'|' -v m="$mesh" -v s="$side" -v n="$n" -v p="$peak" \
         '{ gsub(/ |%/, "", $3); gsub(/ |%/, "", $4); gsub(/ |%/, "", $5); gsub(/ |%/, "", $6);

@@ -33,8 +33,6 @@
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
 
-#include <sys/resource.h>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
@@ -90,9 +88,7 @@ double fastestOf(int repeats, Run&& run)
 // The process's peak resident memory so far, as a line under a row (--sizes).
 void peakRow()
 {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  std::printf("peak resident memory: %.0f MB\n", usage.ru_maxrss / 1024.0);
+  std::printf("peak resident memory: %.0f MB\n", testing::peakRssKiB() / 1024.0);
 }
 
 void write(const TriangleSoup& soup, const std::string& path)
@@ -485,14 +481,18 @@ int main(int argc, char* argv[])
       continue;
     }
 
-    // Ours: the defaults, then two other target edge lengths (or the --sizes).
-    std::vector<double> divisors =
-      ourVariants ? std::vector<double>{ 0, 25, 100 } : std::vector<double>{ 0 };
-    if (!sizes.empty())
+    // Ours: the defaults, then two other target edge lengths; or the --sizes; or none (--only
+    // alpha).
+    std::vector<double> divisors(sizes.begin(), sizes.end());
+    if (sizes.empty())
     {
-      divisors.assign(sizes.begin(), sizes.end());
+      divisors = ourVariants ? std::vector<double>{ 0, 25, 100 } : std::vector<double>{ 0 };
     }
-    for (const double divisor : only == "alpha" ? std::vector<double>() : divisors)
+    if (only == "alpha")
+    {
+      divisors.clear();
+    }
+    for (const double divisor : divisors)
     {
       vtkSmartPointer<vtkShrinkWrapFilter> wrap;
       const double total = fastestOf(repeats, [&] {

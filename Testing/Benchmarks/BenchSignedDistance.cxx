@@ -124,13 +124,6 @@ struct VdbMesh
   std::vector<openvdb::Vec3I> triangles;
 };
 
-long peakRssKiB()
-{
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss;
-}
-
 long currentRssKiB()
 {
   std::ifstream status("/proc/self/status");
@@ -282,7 +275,7 @@ int main(int argc, char* argv[])
       useCube(filter, mesh, cubeScale, memoryResolution);
     filter->Update();
     const double output = 4.0 * filter->GetOutput()->GetNumberOfPoints() / 1024;
-    const long peak = peakRssKiB();
+    const long peak = testing::peakRssKiB();
     std::printf("memory at resolution %d: output array %.1f MiB, peak RSS growth %.1f MiB = %.2f x "
                 "the output "
                 "array (mesh and process before the run: %.1f MiB)\n",

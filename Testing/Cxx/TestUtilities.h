@@ -22,6 +22,8 @@
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
 
+#include <sys/resource.h>
+
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -36,6 +38,14 @@
 namespace testing
 {
 using shrinkwrap::Vec3;
+
+// The process's peak resident memory so far, in KiB (benchmarks).
+inline long peakRssKiB()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
+}
 
 inline int& failures()
 {

@@ -31,6 +31,7 @@ public:
     , Values(std::move(values))
   {
   }
+  // A copy of plain values (the tests' grids; the filters' fields are FieldValues from the start).
   DistanceGrid(const GridLattice& lattice, const std::vector<float>& values)
     : DistanceGrid(lattice, FieldValues(values.begin(), values.end()))
   {

@@ -210,16 +210,15 @@ bool closingSites(const DistanceGrid& field, const DistanceSource* target, doubl
     });
 }
 
-// The closed field's values from the distances e to the nearest site. Inside D, e >= r - d (the
-// ball of radius r - d about a node lies in D), with equality where no other part of the target is
-// nearer than r to the node's own front point. The passes find a site near the nearest boundary
-// point, not always on it: where they leave e above r - d outside the target, the node's own
-// boundary point decides (its distance bounds e from above, and equals r - d where it is clear).
-// Inside the target, where the wrap never goes, r - e only bounds d. False when `progress` asked to
-// stop (reported over batches of nodes).
-// The closed values are written over e (node by node: each reads its own e first), and the slots
-// of the near nodes are listed in `nearSlot`, a node-sized scratch (the passes' sites, no longer
-// needed): a fine field's closing holds two node arrays fewer.
+// The closed field's values from the distances e to the nearest site, written over e (each node
+// reads its own e first: a fine field's closing holds no array of its own for them). Inside D, e >=
+// r - d (the ball of radius r - d about a node lies in D), with equality where no other part of the
+// target is nearer than r to the node's own front point. The passes find a site near the nearest
+// boundary point, not always on it: where they leave e above r - d outside the target, the node's
+// own boundary point decides (its distance bounds e from above, and equals r - d where it is
+// clear). Inside the target, where the wrap never goes, r - e only bounds d. False when `progress`
+// asked to stop (reported over batches of nodes). `nearSlot`: a node-sized scratch (the passes'
+// sites, no longer needed) for the slot of each near node in `c`.
 bool closedValues(const DistanceGrid& field, const DistanceSource* target, double radius,
   const std::vector<char>& inside, bool fillCavities, const ClosingSites& c,
   LargeVector<std::int32_t>& nearSlot, const Progress& progress, FieldValues& e)

@@ -80,6 +80,7 @@ namespace
 const convert::PropertyInfo kInputGeometry{ "InputGeometry", "Input Geometry", "",
   vtkInputGeometry::AUTOMATIC, vtkInputGeometry::POLYGONS_AND_POINTS };
 const convert::PropertyInfo kWrapPerBlock{ "WrapPerBlock", "Wrap Per Block", "", 0, 1 };
+const convert::PropertyInfo kPassTargetArrays{ "PassTargetArrays", "Pass Target Arrays", "", 0, 1 };
 }
 
 #endif

@@ -76,7 +76,8 @@ void triangulatePolygon(vtkIdType n, const vtkIdType* ids, vtkPoints* points, vt
 
 // Appends a mesh to the paper's triangle soup: polygons of any size and strips. Cells naming points
 // that do not exist are counted in badCells and left out.
-void appendToSoup(vtkPolyData* input, TriangleSoup& soup, long long& badCells)
+void appendToSoup(vtkPolyData* input, TriangleSoup& soup, long long& badCells,
+  std::vector<vtkIdType>* cells = nullptr)
 {
   vtkPoints* points = input->GetPoints();
   const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
@@ -86,9 +87,15 @@ void appendToSoup(vtkPolyData* input, TriangleSoup& soup, long long& badCells)
   {
     points->GetPoint(i, soup.points[first + i].data());
   }
+  // The cell each triangle comes of, in the mesh's numbering (vertices, lines, polygons, strips).
+  vtkIdType cell = input->GetNumberOfVerts() + input->GetNumberOfLines() - 1;
   auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
     soup.triangles.push_back(
       { static_cast<int>(first + a), static_cast<int>(first + b), static_cast<int>(first + c) });
+    if (cells)
+    {
+      cells->push_back(cell);
+    }
   };
   auto valid = [&](vtkIdType n, const vtkIdType* ids) {
     const bool ok = std::all_of(ids, ids + n, [np](vtkIdType id) { return id >= 0 && id < np; });
@@ -98,6 +105,7 @@ void appendToSoup(vtkPolyData* input, TriangleSoup& soup, long long& badCells)
   vtkNew<vtkPolygon> polygon;
   vtkNew<vtkIdList> corners;
   forEachCell(input->GetPolys(), [&](vtkIdType n, const vtkIdType* ids) {
+    ++cell;
     if (!valid(n, ids) || n < 3)
     {
       return;
@@ -110,6 +118,7 @@ void appendToSoup(vtkPolyData* input, TriangleSoup& soup, long long& badCells)
     triangulatePolygon(n, ids, points, polygon, corners, addTriangle);
   });
   forEachCell(input->GetStrips(), [&](vtkIdType n, const vtkIdType* ids) {
+    ++cell;
     const bool ok = valid(n, ids);
     for (vtkIdType k = 0; ok && k + 2 < n; ++k) // strips alternate orientation
     {
@@ -256,14 +265,22 @@ const char* geometryName(int inputGeometry)
   return names[std::clamp(inputGeometry, 0, 3)];
 }
 
-TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts)
+TriangleSoup soupOf(
+  const std::vector<vtkPolyData*>& meshes, SoupCounts& counts, std::vector<vtkIdType>* cells)
 {
   TriangleSoup soup;
+  vtkIdType firstCell = 0;
   for (vtkPolyData* mesh : meshes)
   {
     counts.lines += mesh->GetNumberOfLines();
     counts.vertices += mesh->GetNumberOfVerts();
-    appendToSoup(mesh, soup, counts.badCells);
+    const std::size_t from = cells ? cells->size() : 0;
+    appendToSoup(mesh, soup, counts.badCells, cells);
+    for (std::size_t t = from; cells && t < cells->size(); ++t)
+    {
+      (*cells)[t] += firstCell;
+    }
+    firstCell += mesh->GetNumberOfCells();
   }
   return soup;
 }

@@ -76,8 +76,11 @@ struct SoupCounts
 };
 
 // The paper's triangle soup of meshes, one after the other: polygons of any size (ear-cut by
-// vtkPolygon when n > 3, a fan where that fails) and strips.
-TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts);
+// vtkPolygon when n > 3, a fan where that fails) and strips. `cells`, if given, receives the cell
+// each triangle comes of, numbered over the meshes one after the other (a mesh's cells after the
+// previous meshes' cells).
+TriangleSoup soupOf(const std::vector<vtkPolyData*>& meshes, SoupCounts& counts,
+  std::vector<vtkIdType>* cells = nullptr);
 
 // A mesh of triangles only as a surface; fails for other polygons, strips, no triangles, invalid
 // point ids or points that are not finite.
@@ -113,18 +116,18 @@ Notes addSignStatus(const SignedDistanceResult& result, bool asked, vtkImageData
 // prefixed by `filter` ("Shrink Wrap: ...").
 void report(vtkObject* self, const char* filter, const std::vector<Note>& notes);
 
-// A filter's output object, when `request` asks for it (REQUEST_DATA_OBJECT; then true): a
-// composite of the same kind as `composite`, or, without one, a `Leaf`; the output is kept when it
-// is of that kind already.
+// A filter's output object on `port`, when `request` asks for it (REQUEST_DATA_OBJECT; then
+// true): a composite of the same kind as `composite`, or, without one, a `Leaf`; the output is
+// kept when it is of that kind already.
 template <typename Leaf>
-bool makeOutput(
-  vtkInformation* request, vtkInformationVector* outputs, vtkCompositeDataSet* composite)
+bool makeOutput(vtkInformation* request, vtkInformationVector* outputs,
+  vtkCompositeDataSet* composite, int port = 0)
 {
   if (!request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
   {
     return false;
   }
-  vtkInformation* outInfo = outputs->GetInformationObject(0);
+  vtkInformation* outInfo = outputs->GetInformationObject(port);
   vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
   if (composite ? !output || std::string(output->GetClassName()) != composite->GetClassName()
                 : !Leaf::SafeDownCast(output))

@@ -27,7 +27,7 @@ namespace convert
 {
 
 Status writeWrap(const WrapSession& session, int wanted, double timeStep, double seconds,
-  bool finished, vtkPolyData* output, Notes& notes)
+  bool finished, vtkPolyData* output, Notes& notes, const MeasureWrap& measure)
 {
   const WrapSession::Surface surface = session.surface(wanted);
   SurfaceMesh mesh;
@@ -43,6 +43,10 @@ Status writeWrap(const WrapSession& session, int wanted, double timeStep, double
   const SelfIntersections crossings = findSelfIntersections(surface.points, mesh.triangles());
   addSelfIntersections(crossings, output);
   WrapSummary summary = summarize(output, session.plan().sizes(), surface.step, seconds);
+  if (measure)
+  {
+    summary.sampled = measure(TriangleSoup{ surface.points, mesh.triangles() });
+  }
   std::optional<double> motion; // of the last step, measured once (WrapSession::meanMotion)
   std::string status = "ok";
   if (session.lastGood() >= 0 && wanted > session.lastGood())
@@ -300,6 +304,15 @@ std::string WrapSummary::text() const
     100 * this->smallAngleShare, this->selfIntersections, this->sizes.gap, length,
     this->sizes.cell);
   std::string text = line;
+  if (this->sampled)
+  {
+    const Closeness& s = *this->sampled;
+    std::snprintf(line, sizeof(line),
+      "; sampled on both surfaces, wrap to target mean %.3g largest %.3g, target to wrap mean "
+      "%.3g largest %.3g",
+      s.wrapToTarget.mean, s.wrapToTarget.largest, s.targetToWrap.mean, s.targetToWrap.largest);
+    text += line;
+  }
   if (this->leftOut.leftOut > 0)
   {
     text += "; " + leftOutText(this->leftOut);
@@ -328,6 +341,12 @@ void addSummary(const WrapSummary& summary, vtkPolyData* output)
   add("ComputeSeconds", { summary.seconds });
   add("LeftOutParts",
     { static_cast<double>(summary.leftOut.leftOut), static_cast<double>(summary.leftOut.parts) });
+  if (const std::optional<Closeness>& s = summary.sampled)
+  {
+    add("SampledDistances",
+      { s->wrapToTarget.mean, s->wrapToTarget.largest, s->targetToWrap.mean,
+        s->targetToWrap.largest });
+  }
   vtkNew<vtkStringArray> text;
   text->SetName("Summary");
   text->InsertNextValue(summary.text());

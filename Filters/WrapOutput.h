@@ -7,10 +7,12 @@
 #include "Distance/TargetDistance.h"
 #include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceMesh.h"
+#include "Wrap/Closeness.h"
 #include "Wrap/WrapPlan.h"
 #include "Wrap/WrapSession.h"
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,12 +24,17 @@ namespace shrinkwrap
 namespace convert
 {
 
+// How close the written wrap lies to its target both ways (Closeness.h), measured by the caller on
+// the wrap's surface (its triangles as a soup); none: not measured.
+using MeasureWrap = std::function<std::optional<Closeness>(const TriangleSoup& wrap)>;
+
 // Step `wanted` of `session` (the last good one after a failure) as `output`, with all the arrays
-// below; `seconds` the run's computing time so far, `timeStep` the output's time per step. Notes:
-// the surface crosses itself; with `finished`, the summary line. A failure when the step is not a
-// closed surface (an internal error).
+// below; `seconds` the run's computing time so far, `timeStep` the output's time per step;
+// `measure` (if set) adds the sampled distances both ways to the summary. Notes: the surface
+// crosses itself; with `finished`, the summary line. A failure when the step is not a closed
+// surface (an internal error).
 Status writeWrap(const WrapSession& session, int wanted, double timeStep, double seconds,
-  bool finished, vtkPolyData* output, Notes& notes);
+  bool finished, vtkPolyData* output, Notes& notes, const MeasureWrap& measure = {});
 
 // The wrap's surface as `output`: points x, triangles, point data Distance, AdvectionAlignment
 // (from `samples`, the target's field at x), MeanCurvature, CoVolume, Normals, TangentialVelocity;
@@ -52,8 +59,11 @@ struct WrapSummary
   double smallAngleShare = 0; // of the triangles
   long long selfIntersections = 0;
   int vertices = 0, steps = 0;
-  double seconds = 0;       // computing (fields, start and steps) in this session
-  LeftOutParts leftOut;     // of the target, at the last step (WrapSession::leftOut)
+  double seconds = 0;   // computing (fields, start and steps) in this session
+  LeftOutParts leftOut; // of the target, at the last step (WrapSession::leftOut)
+  // Sampled on both surfaces (Closeness.h): mean and largest distance, wrap to target and target
+  // to wrap, in the target's units; none where not measured.
+  std::optional<Closeness> sampled;
   std::string text() const; // one line: what the output messages show at the end of a run
 };
 WrapSummary summarize(vtkPolyData* output, const WrapSizes& sizes, int steps, double seconds);
@@ -70,8 +80,9 @@ std::string notLanded(const WrapSummary& summary, const std::optional<double>& m
 std::string leftOutText(const LeftOutParts& parts);
 std::string leftOutWarning(const WrapSummary& summary);
 // As field data: DistancePercentiles, DistancePercentilesInCells (3 each), FieldCellSize, GapSize,
-// TargetEdgeLength, SmallAngleShare, ComputeSeconds, LeftOutParts (left out, of parts), Summary
-// (the text).
+// TargetEdgeLength, SmallAngleShare, ComputeSeconds, LeftOutParts (left out, of parts),
+// SampledDistances (wrap to target mean and largest, target to wrap mean and largest; when
+// measured), Summary (the text).
 void addSummary(const WrapSummary& summary, vtkPolyData* output);
 
 // Field data of the wrap's output: StepIndex, Time and Status; and the output's DATA_TIME_STEP.

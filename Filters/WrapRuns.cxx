@@ -256,6 +256,9 @@ bool WrapRuns::start(Run& run, const WrapInputs& inputs, vtkMTimeType key, int i
     status = startWrap(target, *plan, contour, progress, notes, run.session);
   }
   run.key = status ? key : 0;
+  run.polygons = target.polygons;
+  run.cloud = target.polygons ? nullptr : target.points;
+  run.measuredOn = run.session ? run.session->fields().target.exactShared() : nullptr;
   return status.ok();
 }
 

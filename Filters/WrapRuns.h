@@ -7,6 +7,8 @@
 
 #include "Common/Notes.h"
 #include "Common/Status.h"
+#include "TargetData.h"
+#include "Wrap/Closeness.h"
 #include "Wrap/WrapPlan.h"
 #include "Wrap/WrapSession.h"
 
@@ -67,6 +69,14 @@ public:
     std::unique_ptr<WrapSession> session;
     vtkMTimeType key = 0;
     double seconds = 0; // computing: fields, start and steps
+    // The target as wrapped: its triangles, or its points wrapped alone (cloud); how its data is
+    // read on the wrap, made when first needed (TargetData.h); the session's distance to it, held
+    // until the last step's closeness is measured (kept in `closeness`).
+    std::shared_ptr<const TriangleSoup> polygons;
+    std::shared_ptr<const PointCloud> cloud;
+    std::unique_ptr<TargetCarrier> carrier;
+    std::shared_ptr<const DistanceSource> measuredOn;
+    std::optional<Closeness> closeness;
   };
   // The key of a filter's properties and inputs: its modification time and what its inputs on its
   // first `ports` ports hold (their content: an input that runs again to the same data keeps the

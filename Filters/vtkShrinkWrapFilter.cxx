@@ -3,16 +3,20 @@
 #include "PropertyBinding.h"
 #include "RankInputs.h"
 #include "ShrinkWrapProperties.h"
+#include "TargetData.h"
 #include "VTKConversions.h"
 #include "WrapOutput.h"
 #include "WrapRuns.h"
 
 #include "Common/Parallel.h"
+#include "Distance/DistanceSource.h"
 #include "Wrap/AutomaticSizes.h"
 
+#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -26,6 +30,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -49,7 +55,7 @@ vtkShrinkWrapFilter::vtkShrinkWrapFilter()
   : Runs(new convert::WrapRuns)
 {
   this->SetNumberOfInputPorts(3);
-  this->SetNumberOfOutputPorts(1);
+  this->SetNumberOfOutputPorts(2); // the wrap, the target as measured
   this->SetProperties(WrapSettings());
   this->SetProgressText("Shrink Wrap");
   this->SetController(vtkMultiProcessController::GetGlobalController());
@@ -62,7 +68,7 @@ vtkShrinkWrapFilter::~vtkShrinkWrapFilter()
 
 std::vector<convert::PropertyInfo> vtkShrinkWrapFilter::DescribeProperties()
 {
-  std::vector<convert::PropertyInfo> described{ kInputGeometry, kWrapPerBlock };
+  std::vector<convert::PropertyInfo> described{ kInputGeometry, kWrapPerBlock, kPassTargetArrays };
   const WrapSettings settings;
   vtkNew<vtkShrinkWrapFilter> filter;
   BindProperties(*filter.Get(), settings,
@@ -103,6 +109,16 @@ WrapSettings vtkShrinkWrapFilter::CoreSettings() const
   return settings;
 }
 
+void vtkShrinkWrapFilter::SetPassTargetArrays(bool pass)
+{
+  if (pass != this->PassTargetArrays)
+  {
+    // Not a change of the wrap: the next update writes the cached steps again, with or without.
+    this->PassTargetArrays = pass;
+    this->RunAgain = true;
+  }
+}
+
 int vtkShrinkWrapFilter::GetNumberOfComputedSteps() const
 {
   return this->Runs->computedSteps();
@@ -136,9 +152,14 @@ vtkTypeBool vtkShrinkWrapFilter::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // A composite target gives a composite of the same kind (a wrap per block), else a surface.
-  vtkCompositeDataSet* blocks = this->WrapPerBlock ? convert::compositeOf(inputVector[0]) : nullptr;
-  return convert::makeOutput<vtkPolyData>(request, outputVector, blocks) ||
-    this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  // The target as measured is a composite of the same kind for a composite target.
+  vtkCompositeDataSet* composite = convert::compositeOf(inputVector[0]);
+  vtkCompositeDataSet* blocks = this->WrapPerBlock ? composite : nullptr;
+  if (convert::makeOutput<vtkPolyData>(request, outputVector, blocks))
+  {
+    return convert::makeOutput<vtkPolyData>(request, outputVector, composite, 1);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
 int vtkShrinkWrapFilter::ComputePipelineMTime(vtkInformation* request,
@@ -147,7 +168,9 @@ int vtkShrinkWrapFilter::ComputePipelineMTime(vtkInformation* request,
 {
   const int result = this->Superclass::ComputePipelineMTime(
     request, inInfoVec, outInfoVec, requestFromOutputPort, mtime);
-  if (this->RunAgain)
+  // Asked of the wrap (port 0): the target as measured, updated after it in the same update (a
+  // proxy's UpdatePipeline updates every port), is what that run measured.
+  if (this->RunAgain && requestFromOutputPort <= 0)
   {
     this->RunAgainTime.Modified();
     this->RunAgain = false;
@@ -164,9 +187,12 @@ int vtkShrinkWrapFilter::RequestInformation(
   {
     return 1; // RequestData says why
   }
-  // Every evolution step is a time step of the output.
-  convert::advertiseSteps(
-    outputVector->GetInformationObject(0), this->NumberOfSteps, this->TimePerStep);
+  // Every evolution step is a time step of both outputs.
+  for (int port = 0; port < 2; ++port)
+  {
+    convert::advertiseSteps(
+      outputVector->GetInformationObject(port), this->NumberOfSteps, this->TimePerStep);
+  }
   // ParaView reads information properties after RequestInformation, not after RequestData: the
   // panel's sizes are planned here from the inputs as they stand (0 while the target has not been
   // computed, and for a composite wrapped block by block); RequestData then shows the run's.
@@ -206,11 +232,15 @@ vtkMTimeType vtkShrinkWrapFilter::SessionKey()
 }
 
 int vtkShrinkWrapFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+  // The time and piece asked for are the asking port's (the target as measured is shown alone too).
+  const int asking = std::clamp(request->Get(vtkExecutive::FROM_OUTPUT_PORT()), 0, 1);
+  vtkInformation* outInfo = outputVector->GetInformationObject(asking);
+  vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
+  vtkDataObject* measured = vtkDataObject::GetData(outputVector, 1);
   output->Initialize();
+  measured->Initialize();
   if (const Status checked = this->CheckProperties(); !checked)
   {
     vtkErrorMacro(<< "Cannot wrap: " << checked.message() << ".");
@@ -222,16 +252,18 @@ int vtkShrinkWrapFilter::RequestData(
   {
     if (blocks)
     {
-      this->ExecuteBlocks(blocks, inputVector, outInfo, vtkCompositeDataSet::SafeDownCast(output));
+      this->ExecuteBlocks(
+        blocks, inputVector, outInfo, vtkCompositeDataSet::SafeDownCast(output), measured);
     }
     else
     {
-      this->ExecuteWhole(inputVector, outInfo, vtkPolyData::SafeDownCast(output));
+      this->ExecuteWhole(inputVector, outInfo, vtkPolyData::SafeDownCast(output), measured);
     }
   }
   catch (const std::exception& e) // std::bad_alloc, threads that cannot start under the same limits
   {
     output->Initialize();
+    measured->Initialize();
     this->Runs->clear(); // a half-made step is not kept; the next update starts over
     if (dynamic_cast<const std::bad_alloc*>(&e))
     {
@@ -242,6 +274,12 @@ int vtkShrinkWrapFilter::RequestData(
       vtkErrorMacro("Shrink Wrap failed: " << e.what() << ".");
     }
   }
+  // The target as measured stands at the wrap's time, whichever port asked.
+  if (output->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    measured->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(),
+      output->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()));
+  }
   return 1;
 }
 
@@ -249,7 +287,8 @@ int vtkShrinkWrapFilter::RequestData(
 // under MPI the blocks are shared out among the pieces by their expected cost (piecesOfBlocks; the
 // other pieces leave a block empty), so the ranks wrap them in parallel.
 void vtkShrinkWrapFilter::ExecuteBlocks(vtkCompositeDataSet* blocks,
-  vtkInformationVector** inputVector, vtkInformation* outInfo, vtkCompositeDataSet* output)
+  vtkInformationVector** inputVector, vtkInformation* outInfo, vtkCompositeDataSet* output,
+  vtkDataObject* measured)
 {
   output->CopyStructure(blocks);
   if (this->GetNumberOfInputConnections(1) > 0 || this->GetNumberOfInputConnections(2) > 0 ||
@@ -271,19 +310,33 @@ void vtkShrinkWrapFilter::ExecuteBlocks(vtkCompositeDataSet* blocks,
           : std::vector<int>(targets.size(), 0);
       });
     });
+  std::map<unsigned int, vtkSmartPointer<vtkPolyData>> measuredLeaves;
   convert::computeLeaves<vtkPolyData>(blocks, output, wrappedOn, request.piece,
     [&](vtkDataSet* target, unsigned int index, vtkPolyData* wrap, double first, double share) {
       this->SetProgressShiftScale(first, share); // one progress bar over the blocks
-      this->Execute(1 + index, { target, nullptr, nullptr }, outInfo, wrap);
+      auto& leaf = measuredLeaves[index] = vtkSmartPointer<vtkPolyData>::New();
+      this->Execute(1 + index, { target, nullptr, nullptr }, outInfo, wrap, leaf);
     });
+  // The target as measured: each block against its own wrap, empty where another piece wraps it.
+  if (auto* measuredBlocks = vtkCompositeDataSet::SafeDownCast(measured))
+  {
+    measuredBlocks->CopyStructure(blocks);
+    auto at = vtkSmartPointer<vtkCompositeDataIterator>::Take(blocks->NewIterator());
+    for (at->InitTraversal(); !at->IsDoneWithTraversal(); at->GoToNextItem())
+    {
+      const auto found = measuredLeaves.find(at->GetCurrentFlatIndex());
+      measuredBlocks->SetDataSet(
+        at, found != measuredLeaves.end() ? found->second : vtkSmartPointer<vtkPolyData>::New());
+    }
+  }
   this->SetProgressShiftScale(0, 1);
   this->ShowSizes({}); // each block had sizes of its own
 }
 
 // Every rank takes part (the target is made whole on each); piece 0 wraps it, under MPI the other
 // pieces are empty.
-void vtkShrinkWrapFilter::ExecuteWhole(
-  vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output)
+void vtkShrinkWrapFilter::ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo,
+  vtkPolyData* output, vtkDataObject* measured)
 {
   convert::WrapInputs inputs;
   std::optional<GridLattice> lattice;
@@ -296,7 +349,7 @@ void vtkShrinkWrapFilter::ExecuteWhole(
     convert::wholeInput(one ? inputs.target : nullptr, this->Controller, this->Gathered);
   if (one && convert::pieceRequest(outInfo).piece == 0)
   {
-    this->Execute(0, inputs, outInfo, output);
+    this->Execute(0, inputs, outInfo, output, measured);
   }
 }
 
@@ -313,7 +366,7 @@ shrinkwrap::Progress vtkShrinkWrapFilter::ProgressOf(double begin, double end)
 // The run of `slot`, started on `inputs` when there is none for the inputs and properties as they
 // are (any change drops its cache), advanced to the step asked for, into `output`.
 void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& inputs,
-  vtkInformation* outInfo, vtkPolyData* output)
+  vtkInformation* outInfo, vtkPolyData* output, vtkDataObject* measured)
 {
   const vtkMTimeType key = this->SessionKey();
   convert::WrapRuns::Run& run = this->Runs->run(slot);
@@ -352,8 +405,35 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
   const bool finished = wanted == this->NumberOfSteps && run.session->computedSteps() > computed;
   if (advanced)
   {
+    // The target is measured against the written wrap: sampled distances for the summary of its
+    // last step, then its data carried over and the target as measured.
+    const vtkSmartPointer<vtkDataObject> whole = convert::wholeTarget(inputs.target);
+    const bool pass = this->PassTargetArrays && convert::hasArraysToPass(whole);
+    if (pass && run.polygons && !run.carrier)
+    {
+      // Before the closeness lets the session's distance go: the carrier reads through it.
+      run.carrier = convert::makeCarrier(whole, run.polygons, run.measuredOn);
+    }
+    const bool last = run.session->shown(wanted) == this->NumberOfSteps;
+    std::unique_ptr<TriangleSource> wrap;
+    const convert::MeasureWrap measure = [&](const TriangleSoup& surface) {
+      std::optional<Closeness> closeness;
+      onAllCores([&] {
+        wrap = std::make_unique<TriangleSource>(surface);
+        if (last)
+        {
+          closeness = this->LastCloseness(slot, whole, surface, *wrap);
+        }
+      });
+      return closeness;
+    };
     const Status written = convert::writeWrap(
-      *run.session, wanted, this->TimePerStep, run.seconds, finished, output, notes);
+      *run.session, wanted, this->TimePerStep, run.seconds, finished, output, notes, measure);
+    if (written && wrap)
+    {
+      this->CarryAndMeasure(slot, inputs.target, pass ? whole.Get() : nullptr, *wrap, last,
+        finished, output, measured, notes);
+    }
     this->ShowSizes(run.session->plan().sizes());
     convert::report(this, "Shrink Wrap", notes);
     if (!written)
@@ -370,6 +450,83 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
     vtkWarningMacro(
       "Properties or inputs changed during the run; they apply from the next update.");
   }
+}
+
+Closeness vtkShrinkWrapFilter::LastCloseness(
+  unsigned int slot, vtkDataObject* whole, const TriangleSoup& surface, const DistanceSource& wrap)
+{
+  convert::WrapRuns::Run& run = this->Runs->run(slot);
+  if (!run.closeness)
+  {
+    // From the wrap to the target: the session's distance while it holds the target's, else the
+    // target's triangles (or points) anew.
+    const DistanceSource* source = run.measuredOn ? run.measuredOn.get()
+      : run.cloud                                 ? run.cloud->points.get()
+                                                  : nullptr;
+    std::unique_ptr<AABBTree> tree;
+    if (!source && run.polygons)
+    {
+      tree = std::make_unique<AABBTree>(*run.polygons);
+    }
+    const SquaredDistance toTarget = [&](const Vec3& p) {
+      return source
+        ? source->closestPoint(p, std::numeric_limits<double>::infinity()).squaredDistance
+        : tree ? tree->closestPoint(p).squaredDistance
+               : 0.0;
+    };
+    run.closeness = measureCloseness(surface, wrap, toTarget, run.polygons.get(),
+      run.cloud ? run.cloud->points.get() : nullptr, convert::kSummarySamples);
+    run.measuredOn.reset(); // its tree goes with the session's, if the session let it go
+  }
+  return *run.closeness;
+}
+
+void vtkShrinkWrapFilter::CarryAndMeasure(unsigned int slot, vtkDataObject* target,
+  vtkDataObject* whole, const DistanceSource& wrap, bool last, bool finished, vtkPolyData* output,
+  vtkDataObject* measured, Notes& notes)
+{
+  convert::WrapRuns::Run& run = this->Runs->run(slot);
+  const double gap = run.session->plan().sizes().gap;
+  onAllCores([&] {
+    if (whole) // arrays to pass
+    {
+      std::vector<std::string> renamed;
+      convert::passTargetArrays(whole, run.carrier.get(), run.cloud.get(), output, renamed);
+      if (finished && !renamed.empty())
+      {
+        std::string names;
+        for (const std::string& name : renamed)
+        {
+          names += (names.empty() ? "" : ", ") + name;
+        }
+        inform(notes,
+          "the target's arrays " + names +
+            " have names the wrap uses: they are passed with \" (target)\" added");
+      }
+    }
+    if (auto* blocks = vtkCompositeDataSet::SafeDownCast(measured))
+    {
+      // A composite wrapped as one: each block measured against the one wrap.
+      auto* composite = vtkCompositeDataSet::SafeDownCast(target);
+      if (!composite)
+      {
+        return; // gathered from the ranks as one dataset: no blocks to measure
+      }
+      blocks->CopyStructure(composite);
+      auto at = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
+      for (at->InitTraversal(); !at->IsDoneWithTraversal(); at->GoToNextItem())
+      {
+        if (auto* leaf = vtkDataSet::SafeDownCast(at->GetCurrentDataObject()))
+        {
+          blocks->SetDataSet(at, convert::measureTarget(leaf, wrap, gap, last));
+        }
+      }
+    }
+    else if (auto* one = vtkDataSet::SafeDownCast(target))
+    {
+      measured->ShallowCopy(convert::measureTarget(one, wrap, gap, last));
+    }
+  });
 }
 
 // Computes the missing steps up to `step`; false when the run was aborted.
@@ -405,6 +562,7 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   const WrapSettings unused;
   BindProperties(*this, unused, convert::propertyPrinter(os, indent));
   os << indent << "WrapPerBlock: " << this->WrapPerBlock << "\n";
+  os << indent << "PassTargetArrays: " << this->PassTargetArrays << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "FieldCellSize: " << this->FieldCellSize << "\n";
   os << indent << "ChosenGapSize: " << this->ChosenGapSize << "\n";

@@ -23,7 +23,17 @@
  * JacobianCondition and SelfIntersecting, and field data StepIndex, Time, Status ("ok", or why not:
  * "failed: ...", "self-intersecting: ...", "not landed: ...", "left out: N of the target's M parts
  * ...") and the run's summary (Summary, DistancePercentiles, FieldCellSize, GapSize,
- * TargetEdgeLength, LeftOutParts, ...).
+ * TargetEdgeLength, LeftOutParts, SampledDistances, ...). With PassTargetArrays, the target's own
+ * point arrays read at each vertex's closest point on the target (barycentric on its triangle; for
+ * points, weighted as the fit that placed the vertex), its cell arrays from the closest cell, and
+ * its field data; names the wrap has already get " (target)".
+ *
+ * Output port 1, the target as measured: the target (a mesh as it is, other data by its outer
+ * surface; a composite leaf by leaf) with point array DistanceToWrap (signed: > 0 outside the
+ * wrap, < 0 inside), cell array FarFromWrap (the share of the cell farther than the Gap Size
+ * from the wrap: what the wrap bridged or cut off) and, at the last step, field data
+ * LargestDistanceToWrap (over the whole surface: inside a large triangle it exceeds the largest at
+ * the points).
  *
  * The properties are those of the panel, whose documentation (Plugin/ShrinkWrap.xml) is the
  * reference: the defaults come from the core's settings (Wrap/WrapSettings.h), where they are
@@ -54,7 +64,10 @@ struct GatheredInput;
 struct WrapInputs;
 class WrapRuns;
 }
+class DistanceSource;
+struct Closeness;
 struct GridLattice;
+struct TriangleSoup;
 struct Note;
 class Progress;
 class Status;
@@ -211,6 +224,11 @@ public:
   vtkSetMacro(WrapPerBlock, bool);
   vtkGetMacro(WrapPerBlock, bool);
   vtkBooleanMacro(WrapPerBlock, bool);
+  /// Pass Target Arrays: the target's point, cell and field arrays on the wrap (default on).
+  /// Switching it keeps the computed steps.
+  void SetPassTargetArrays(bool pass);
+  vtkGetMacro(PassTargetArrays, bool);
+  vtkBooleanMacro(PassTargetArrays, bool);
   /// The MPI ranks that share a composite's blocks and gather a distributed target. Default: the
   /// global controller; set none to wrap in one process alone.
   void SetController(vtkMultiProcessController* controller);
@@ -253,7 +271,7 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   void ExecuteBlocks(vtkCompositeDataSet* blocks, vtkInformationVector** inputVector,
-    vtkInformation* outInfo, vtkCompositeDataSet* output);
+    vtkInformation* outInfo, vtkCompositeDataSet* output, vtkDataObject* measured);
   void SetProperties(const shrinkwrap::WrapSettings& settings); // the defaults are stated there
   /// Why a property is outside the panel's range, naming its label and the range; ok when none is.
   shrinkwrap::Status CheckProperties() const;
@@ -292,6 +310,7 @@ protected:
   int Resolution;
   double CacheMemoryMiB;
   bool WrapPerBlock = true;
+  bool PassTargetArrays = true;
   vtkMultiProcessController* Controller = nullptr;
 
 private:
@@ -302,6 +321,7 @@ private:
   // (ComputePipelineMTime), without touching the MTime that keys the cache.
   bool RunAgain = false;
   vtkTimeStamp RunAgainTime;
+
   double FieldCellSize = 0; // planned in RequestInformation, the run's in RequestData; as are
   double ChosenGapSize = 0; // these two
   double ChosenEdgeLength = 0;
@@ -312,10 +332,20 @@ private:
 
   vtkMTimeType SessionKey(); // the newest modification of the filter and its inputs
   // One surface: of the target, or of all a composite target's blocks together.
-  void ExecuteWhole(
-    vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output);
+  void ExecuteWhole(vtkInformationVector** inputVector, vtkInformation* outInfo,
+    vtkPolyData* output, vtkDataObject* measured);
+  // `measured`: output port 1's object for this target (a surface, or a composite for one).
   void Execute(unsigned int slot, const shrinkwrap::convert::WrapInputs& inputs,
-    vtkInformation* outInfo, vtkPolyData* output);
+    vtkInformation* outInfo, vtkPolyData* output, vtkDataObject* measured);
+  // The target's arrays onto the written wrap, and the target measured against it (port 1).
+  // `whole`: the target as one dataset (convert::wholeTarget) when its arrays are to be passed;
+  // `last`: the run's last step (its largest distance is measured).
+  void CarryAndMeasure(unsigned int slot, vtkDataObject* target, vtkDataObject* whole,
+    const shrinkwrap::DistanceSource& wrap, bool last, bool finished, vtkPolyData* output,
+    vtkDataObject* measured, std::vector<shrinkwrap::Note>& notes);
+  // The summary's sampled distances of the run's last step (measured once per run).
+  shrinkwrap::Closeness LastCloseness(unsigned int slot, vtkDataObject* whole,
+    const shrinkwrap::TriangleSoup& surface, const shrinkwrap::DistanceSource& wrap);
   void ShowSizes(const shrinkwrap::WrapSizes& sizes);
   shrinkwrap::Progress ProgressOf(double begin, double end);
   // progressFrom: where the steps' progress begins (after a setup's, kSetupShare).

@@ -6,16 +6,20 @@
 #include "pqApplicationCore.h"
 #include "pqDataRepresentation.h"
 #include "pqObjectBuilder.h"
+#include "pqOutputPort.h"
 #include "pqPVApplicationCore.h"
 #include "pqPipelineSource.h"
 #include "pqServerManagerModel.h"
 #include "pqView.h"
+#include "vtkNew.h"
 #include "vtkPVArrayInformation.h"
 #include "vtkPVDataInformation.h"
 #include "vtkPVDataSetAttributesInformation.h"
 #include "vtkSMPVRepresentationProxy.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMSourceProxy.h"
+#include "vtkSMTransferFunctionManager.h"
+#include "vtkSMTransferFunctionProxy.h"
 
 #include <QTimer>
 #include <QVariant>
@@ -75,18 +79,47 @@ vtkSMProxy* targetOf(vtkSMProxy* wrap)
   return nullptr;
 }
 
-// The shown wrap coloured by Distance over its range, with its legend; the target beside it in grey,
-// a mesh as its edges, so that where it leaves the wrap shows.
+// The colour map of the target as measured (output port 1, shown when the user turns it on, as
+// ParaView colours it: by its active scalars, DistanceToWrap): diverging, centred at 0 over the
+// largest distance either way, kept there as the animation moves.
+void prepareMeasuredColours(pqPipelineSource* wrap, vtkSMProxy* representation, pqView* view)
+{
+  // Port 1 is shown by no view yet: brought to the view's time, as the wrap is.
+  auto* source = vtkSMSourceProxy::SafeDownCast(wrap->getProxy());
+  source->UpdatePipeline(vtkSMPropertyHelper(view->getProxy(), "ViewTime").GetAsDouble());
+  pqOutputPort* port = wrap->getOutputPort(1);
+  vtkPVDataInformation* info = port ? port->getDataInformation() : nullptr;
+  vtkPVArrayInformation* distance =
+    info ? info->GetPointDataInformation()->GetArrayInformation("DistanceToWrap") : nullptr;
+  if (!distance)
+  {
+    return;
+  }
+  const double* range = distance->GetComponentRange(0);
+  const double largest = std::max({ std::abs(range[0]), std::abs(range[1]), 1e-12 });
+  vtkNew<vtkSMTransferFunctionManager> colours;
+  vtkSMProxy* lut =
+    colours->GetColorTransferFunction("DistanceToWrap", representation->GetSessionProxyManager());
+  vtkSMTransferFunctionProxy::ApplyPreset(lut, "Cool to Warm", false);
+  vtkSMTransferFunctionProxy::RescaleTransferFunction(lut, -largest, largest, false);
+  vtkSMPropertyHelper(lut, "AutomaticRescaleRangeMode").Set(vtkSMTransferFunctionManager::NEVER);
+  lut->UpdateVTKObjects();
+}
+
+// The shown wrap coloured by Distance over its range, with its legend; the target beside it in
+// grey, a mesh as its edges, so that where it leaves the wrap shows.
 void present(pqPipelineSource* wrap, pqDataRepresentation* representation, pqView* view)
 {
+  prepareMeasuredColours(wrap, representation->getProxy(), view);
   vtkSMProxy* proxy = representation->getProxy();
   if (vtkSMPVRepresentationProxy::SetScalarColoring(proxy, "Distance", 0))
   {
     vtkSMPVRepresentationProxy::RescaleTransferFunctionToDataRange(proxy, false, false);
     vtkSMPVRepresentationProxy::SetScalarBarVisibility(proxy, view->getProxy(), true);
   }
-  auto* target = pqApplicationCore::instance()->getServerManagerModel()->findItem<pqPipelineSource*>(
-    targetOf(wrap->getProxy()));
+  auto* target =
+    pqApplicationCore::instance()->getServerManagerModel()->findItem<pqPipelineSource*>(
+      targetOf(wrap->getProxy()));
   pqDataRepresentation* shown = target ? target->getRepresentation(view) : nullptr;
   if (shown && shown->isVisible())
   {
@@ -148,8 +181,7 @@ void pqShrinkWrapStarter::updated(pqPipelineSource* source)
   // After the Apply that updated it: then the wrap has its representation in the view.
   QPointer<pqPipelineSource> shown = source;
   QTimer::singleShot(0, this, [shown, view] {
-    pqDataRepresentation* representation =
-      shown && view ? shown->getRepresentation(view) : nullptr;
+    pqDataRepresentation* representation = shown && view ? shown->getRepresentation(view) : nullptr;
     if (representation && representation->isVisible())
     {
       present(shown, representation, view);

@@ -4,10 +4,11 @@
  *
  * After the first Apply the view shows the finished wrap: the animation goes to the wrap's last
  * step (Play then shows the evolution from its start), the wrap is coloured by Distance over the
- * shown wrap's range with its legend, and the target beside it is drawn grey (a mesh by its edges).
- * Created with a mesh and its distance field selected (both go to Input), the panel's Distance
- * Field shows the field. Scripts (pvpython, the Python shell) keep their own control of time
- * and colour.
+ * shown wrap's range with its legend, and the target beside it is drawn grey (a mesh by its edges);
+ * the target as measured (output port 1, hidden until the user shows it) gets its colours ready,
+ * DistanceToWrap on a diverging map centred at 0. Created with a mesh and its distance field
+ * selected (both go to Input), the panel's Distance Field shows the field. Scripts (pvpython, the
+ * Python shell) keep their own control of time and colour.
  */
 #ifndef pqShrinkWrapStarter_h
 #define pqShrinkWrapStarter_h

@@ -1,8 +1,8 @@
 // How a wrap is judged (issue #10), for the tests and the benchmark alike: points sampled uniformly
 // by area on both surfaces (plus their vertices), one-sided distances to the other surface through
-// an AABB tree (mean and largest, in percent of the target's bounding-box diagonal),
-// self-intersections, closed and manifold, genus, the share of triangles with a minimum angle below
-// 20 degrees.
+// an AABB tree (mean and largest, in percent of the target's bounding-box diagonal; Closeness.h,
+// as the run summary measures them), self-intersections, closed and manifold, genus, the share of
+// triangles with a minimum angle below 20 degrees.
 #ifndef ShrinkWrap_WrapEvaluation_h
 #define ShrinkWrap_WrapEvaluation_h
 
@@ -11,9 +11,9 @@
 #include "Surface/MeshQuality.h"
 #include "Surface/SelfIntersections.h"
 #include "Surface/SurfaceMesh.h"
+#include "Wrap/Closeness.h"
 
 #include <functional>
-#include <random>
 #include <set>
 
 namespace testing
@@ -35,54 +35,15 @@ struct WrapFigures
   double smallAngles = 0; // percent of triangles with a minimum angle below 20 degrees
 };
 
-// The soup's vertices, then `count` points uniformly by area on it.
-inline std::vector<shrinkwrap::Vec3> samplePoints(
-  const shrinkwrap::TriangleSoup& soup, int count, unsigned seed = 1)
-{
-  using shrinkwrap::Vec3;
-  std::vector<double> areas;
-  for (const auto& t : soup.triangles)
-  {
-    areas.push_back(0.5 *
-      (soup.points[t[1]] - soup.points[t[0]]).cross(soup.points[t[2]] - soup.points[t[0]]).norm());
-  }
-  std::vector<Vec3> samples(soup.points);
-  if (areas.empty())
-  {
-    return samples;
-  }
-  std::mt19937_64 random(seed);
-  std::discrete_distribution<int> pick(areas.begin(), areas.end());
-  std::uniform_real_distribution<double> unit(0, 1);
-  for (int k = 0; k < count; ++k)
-  {
-    const auto& t = soup.triangles[pick(random)];
-    double u = unit(random), v = unit(random);
-    if (u + v > 1)
-    {
-      u = 1 - u;
-      v = 1 - v;
-    }
-    samples.push_back(soup.points[t[0]] + u * (soup.points[t[1]] - soup.points[t[0]]) +
-      v * (soup.points[t[2]] - soup.points[t[0]]));
-  }
-  return samples;
-}
+// The soup's vertices, then `count` points uniformly by area on it (as the run summary samples).
+using shrinkwrap::samplePoints;
 
+// From each point to the nearest point of `to`, in percent of `diagonal`.
 inline OneSided oneSided(
   const std::vector<shrinkwrap::Vec3>& from, const shrinkwrap::TriangleSoup& to, double diagonal)
 {
-  const shrinkwrap::AABBTree tree(to);
-  OneSided d;
-  for (const auto& p : from)
-  {
-    const double distance = std::sqrt(tree.closestPoint(p).squaredDistance);
-    d.mean += distance;
-    d.largest = std::max(d.largest, distance);
-  }
-  d.mean = 100 * d.mean / std::max<std::size_t>(from.size(), 1) / diagonal;
-  d.largest = 100 * d.largest / diagonal;
-  return d;
+  const shrinkwrap::OneSided d = shrinkwrap::oneSided(from, shrinkwrap::AABBTree(to));
+  return { 100 * d.mean / diagonal, 100 * d.largest / diagonal };
 }
 
 inline WrapFigures evaluateWrap(const shrinkwrap::TriangleSoup& wrap,

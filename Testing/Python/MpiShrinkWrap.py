@@ -1,6 +1,7 @@
 """Shrink Wrap under ParaView's MPI engine: piece 0 holds the surface, the other ranks' pieces are
 empty, so the gathered data has the surface once. A multiblock target (issue #14): every block is
-wrapped on one rank only, in parallel, and equals its wrap in one process.
+wrapped on one rank only, in parallel, and equals its wrap in one process. The target's data carried
+onto the wrap and the target as measured (issue #64) equal one process's.
 
 Usage: mpiexec -np 2 pvbatch --symmetric MpiShrinkWrap.py <ShrinkWrap plugin .so> <mesh>
 """
@@ -42,4 +43,41 @@ for k in range(4):
           "block %d %s (%d points)" % (k, "wrapped here" if here else "left to another rank", ours.GetNumberOfPoints()))
     wrapped_here.append(1 if here else 0)
 check(sums(wrapped_here) == [1, 1, 1, 1] and 0 < sum(wrapped_here) < 4, "every block wrapped on one rank, some here")
+
+# The target's data on the wrap and the target as measured (issue #64): a point field computed on the
+# mesh, read where the ranks hold it, gathered and carried onto the wrap on piece 0 as in one process.
+field = Calculator(Input=OpenDataFile(mesh), ResultArrayName="p", Function="coordsX^2+3*coordsY")
+carried = ShrinkWrap(Input=field, **settings)
+carried.UpdatePipeline(10 * carried.TimePerStep)
+ours = carried.GetClientSideObject().GetOutputDataObject(0)
+ours_measured = carried.GetClientSideObject().GetOutputDataObject(1)
+alone = ShrinkWrap(Input=field, **settings).GetClientSideObject()
+alone.UpdatePiece(0, 1, 0)  # in this process only
+reference, reference_measured = alone.GetOutputDataObject(0), alone.GetOutputDataObject(1)
+
+
+def values(data, name):
+    array = data.GetPointData().GetArray(name)
+    return [array.GetTuple1(i) for i in range(array.GetNumberOfTuples())] if array else None
+
+
+if rank == 0:
+    check(ours.GetNumberOfPoints() > 0 and values(ours, "p") == values(reference, "p"),
+          "p on the wrap equals the wrap's in one process (%d points)" % ours.GetNumberOfPoints())
+    check(ours_measured.GetNumberOfPoints() == reference_measured.GetNumberOfPoints() and
+          sorted(values(ours_measured, "DistanceToWrap") or [0]) ==
+          sorted(values(reference_measured, "DistanceToWrap") or [1]),
+          "DistanceToWrap equals the one process's (%d target points)" % ours_measured.GetNumberOfPoints())
+else:
+    check(ours.GetNumberOfPoints() == 0 and ours_measured.GetNumberOfPoints() == 0,
+          "the other pieces are empty on both ports")
+per_block = ShrinkWrap(Input=GroupDatasets(Input=[field, Sphere(Center=[3, 0, 0])]), **settings)
+per_block.UpdatePipeline(10 * per_block.TimePerStep)
+mine, measured = per_block.GetClientSideObject().GetOutputDataObject(0), \
+    per_block.GetClientSideObject().GetOutputDataObject(1)
+here = [k for k in range(2) if mine.GetBlock(k).GetNumberOfPoints() > 0]
+check(all(measured.GetBlock(k).GetPointData().GetArray("DistanceToWrap") is not None for k in here) and
+      all(mine.GetBlock(k).GetPointData().GetArray("p") is not None for k in here if k == 0) and
+      sums([len(here)]) == [2],
+      "per block, each rank measures the blocks it wraps (%s here)" % here)
 finish()

@@ -13,17 +13,18 @@ namespace shrinkwrap
 
 namespace
 {
-TriangleSoup weldedAndOriented(const TriangleSoup& soup, long long& reoriented)
+TriangleSoup weldedAndOriented(
+  const TriangleSoup& soup, long long& reoriented, std::vector<int>& kept)
 {
   TriangleSoup welded = weldDuplicatePoints(soup);
-  dropRepeatedTriangles(welded);
+  dropRepeatedTriangles(welded, &kept);
   reoriented = orientConsistently(welded);
   return welded;
 }
 } // namespace
 
 TriangleSource::TriangleSource(const TriangleSoup& soup)
-  : Soup(weldedAndOriented(soup, this->Reoriented))
+  : Soup(weldedAndOriented(soup, this->Reoriented, this->Kept))
   , Tree(this->Soup)
   , Normals(this->Soup)
 {

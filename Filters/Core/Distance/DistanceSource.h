@@ -101,6 +101,11 @@ public:
   // Edges of one triangle (welded), and edges of two whose normals differ by more than creaseAngle.
   std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override;
   const TriangleSoup* triangles() const override { return &this->Soup; }
+  // The index in the soup it was made of of one of its triangles (SourcePoint::element).
+  int inputTriangle(int element) const
+  {
+    return this->Kept.empty() || element < 0 ? element : this->Kept[element];
+  }
   // Whether the triangles face into what `field` signs inside: a vote, over up to a few thousand
   // triangles, of the field's side one cell along each normal against one cell against it.
   bool facesInward(const DistanceGrid& field) const;
@@ -109,6 +114,7 @@ private:
   const WindingNumber& winding() const;
 
   long long Reoriented = 0; // before Soup: set while Soup is made
+  std::vector<int> Kept;    // inputTriangle() (empty: every triangle kept); set while Soup is made
   TriangleSoup Soup;
   AABBTree Tree;
   PseudoNormals Normals;

@@ -437,6 +437,41 @@ SourcePoint PointSurface::nearestPoint(const Vec3& x, double maxSquaredDistance)
   return p.found ? p : this->Points->closestPoint(x, maxSquaredDistance);
 }
 
+void PointSurface::fitWeights(
+  const Vec3& x, std::vector<int>& ids, std::vector<double>& weights) const
+{
+  ids.clear();
+  weights.clear();
+  const SourcePoint nearest = this->nearestPoint(x, std::numeric_limits<double>::infinity());
+  if (!nearest.found)
+  {
+    return;
+  }
+  // Centred on x's surface point (where the fit is trusted), else on the nearest point.
+  const Patch patch = this->patchAt(nearest.element);
+  const SourcePoint foot = this->closestPoint(x, std::numeric_limits<double>::infinity());
+  const Vec3 centre = foot.found && foot.trust > 0 ? foot.point : nearest.point;
+  const Scale& finest = *this->Scales.front(); // every point, by its input index
+  const double width = patch.width > 0 ? patch.width : finest.width;
+  const double inverse = 1 / (width * width);
+  double total = 0;
+  finest.grid.forEachWithin(centre, kCutoff * width, [&](int id, const Vec3& point) {
+    ids.push_back(id);
+    weights.push_back(std::exp(-(point - centre).squaredNorm() * inverse));
+    total += weights.back();
+  });
+  if (!(total > 0))
+  {
+    ids.assign(1, nearest.element);
+    weights.assign(1, 1.0);
+    return;
+  }
+  for (double& w : weights)
+  {
+    w /= total;
+  }
+}
+
 SourcePoint PointSurface::closestPoint(const Vec3& x, double maxSquaredDistance) const
 {
   const SourcePoint nearest = this->nearestPoint(x, maxSquaredDistance);

@@ -48,6 +48,10 @@ public:
   // leave a rim's angular gap, and lie close to their plane; each is given as its foot on that
   // plane (a noisy point's noise left out). Points have no creases: `creaseAngle` is not used.
   std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override;
+  // The input points that the fit under x weighs, at that fit's width (the finest where no plane
+  // fits there), centred on x's surface point: those within the fit's cutoff, with its Gaussian
+  // weights scaled to sum to 1; how a value given at the points is read at x's surface point.
+  void fitWeights(const Vec3& x, std::vector<int>& ids, std::vector<double>& weights) const;
   // The index of the finest width (h, 2 h, 4 h) at which most of the points look flat (measured on
   // one point in 256 when made): above 0, noise hides the plane at h on most of the cloud.
   int typicalFlatScale() const { return this->TypicalScale; }

@@ -39,7 +39,7 @@ TriangleSoup weldDuplicatePoints(const TriangleSoup& soup)
   return welded;
 }
 
-long long dropRepeatedTriangles(TriangleSoup& welded)
+long long dropRepeatedTriangles(TriangleSoup& welded, std::vector<int>* kept)
 {
   const int n = static_cast<int>(welded.triangles.size());
   auto cornersOf = [&](int t) {
@@ -65,16 +65,20 @@ long long dropRepeatedTriangles(TriangleSoup& welded)
   }
   if (dropped > 0)
   {
-    std::vector<std::array<int, 3>> kept;
-    kept.reserve(n - dropped);
+    std::vector<std::array<int, 3>> remaining;
+    remaining.reserve(n - dropped);
     for (int t = 0; t < n; ++t)
     {
       if (!repeated[t])
       {
-        kept.push_back(welded.triangles[t]);
+        remaining.push_back(welded.triangles[t]);
+        if (kept)
+        {
+          kept->push_back(t);
+        }
       }
     }
-    welded.triangles.swap(kept);
+    welded.triangles.swap(remaining);
   }
   return dropped;
 }

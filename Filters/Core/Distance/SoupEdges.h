@@ -16,8 +16,9 @@ namespace shrinkwrap
 // change (a triangle that then repeats an index is kept: as a segment it still has distances).
 TriangleSoup weldDuplicatePoints(const TriangleSoup& soup);
 // Drops every triangle whose three point ids an earlier one has, in either orientation: the back
-// faces of a double-sided mesh, whose winding numbers would cancel the front's. Returns how many.
-long long dropRepeatedTriangles(TriangleSoup& welded);
+// faces of a double-sided mesh, whose winding numbers would cancel the front's. Returns how many;
+// `kept`, if given, receives each remaining triangle's index before (left empty when none dropped).
+long long dropRepeatedTriangles(TriangleSoup& welded, std::vector<int>* kept = nullptr);
 
 // A triangle's unit normal, or zero where it is too thin for its normal to mean anything (a needle
 // or a cap, as the slivers at a parametric surface's seams: their cross product is rounding noise).

@@ -29,6 +29,7 @@ public:
   DistanceSample sample(const Vec3& x) const;
   // The target itself, where the near field is exact (else null).
   const DistanceSource* exact() const { return this->Exact.get(); }
+  const std::shared_ptr<const DistanceSource>& exactShared() const { return this->Exact; }
   // The target's triangles face inwards (TriangleSource::facesInward): the near field takes the
   // side opposite their pseudonormals, as the grid's sign does.
   void setFacesInward(bool inward) { this->Inward = inward; }

@@ -246,6 +246,7 @@ int TestPropertyDefaults(int argc, char* argv[])
       { "SetGapSize", [&] { return one(w->GetGapSize()); } },
       { "SetCloseHoles", [&] { return one(w->GetCloseHoles()); } },
       { "SetWrapPerBlock", [&] { return one(w->GetWrapPerBlock()); } },
+      { "SetPassTargetArrays", [&] { return one(w->GetPassTargetArrays()); } },
       { "SetRemeshing", [&] { return one(w->GetRemeshing()); } },
       { "SetTargetEdgeLength", [&] { return one(w->GetTargetEdgeLength()); } },
       { "SetEdgeLengthRange",

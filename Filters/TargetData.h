@@ -60,7 +60,7 @@ void passTargetArrays(vtkDataObject* whole, const TargetCarrier* carrier, const 
   vtkPolyData* wrap, std::vector<std::string>& renamed);
 
 // The run summary's sampled distances both ways between the wrap and its target.
-constexpr int kSummarySamples = 10000;
+constexpr int kSummarySamples = 5000;
 
 // `target` measured against the wrap (a closed surface as a distance source): the dataset (a
 // mesh as it is, other data by its outer surface) with point array DistanceToWrap (signed: > 0

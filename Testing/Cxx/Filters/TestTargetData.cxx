@@ -46,6 +46,21 @@ int sector(const Vec3& x)
   return std::min(2, static_cast<int>(a / (2 * M_PI / 3)));
 }
 
+// The mean of a cell's points.
+Vec3 centroidOf(vtkPolyData* mesh, vtkIdType cell)
+{
+  vtkNew<vtkIdList> ids;
+  mesh->GetCellPoints(cell, ids);
+  Vec3 centroid = Vec3::Zero();
+  for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+  {
+    Vec3 x;
+    mesh->GetPoint(ids->GetId(k), x.data());
+    centroid += x / ids->GetNumberOfIds();
+  }
+  return centroid;
+}
+
 // A sphere of radius 1 about `centre`, triangles of about `edge`, with point array p (`field`) and
 // cell array part (`sector` of each triangle's centroid about the centre, plus `firstPart`).
 vtkSmartPointer<vtkPolyData> sphere(const Vec3& centre, const Field& field, int firstPart)
@@ -68,18 +83,9 @@ vtkSmartPointer<vtkPolyData> sphere(const Vec3& centre, const Field& field, int 
   mesh->GetPointData()->AddArray(p);
   vtkNew<vtkIntArray> part;
   part->SetName("part");
-  vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
   {
-    mesh->GetCellPoints(c, ids);
-    Vec3 centroid = Vec3::Zero();
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      Vec3 x;
-      mesh->GetPoint(ids->GetId(k), x.data());
-      centroid += x / ids->GetNumberOfIds();
-    }
-    part->InsertNextValue(firstPart + sector(centroid - centre));
+    part->InsertNextValue(firstPart + sector(centroidOf(mesh, c) - centre));
   }
   mesh->GetCellData()->AddArray(part);
   return mesh;
@@ -450,17 +456,9 @@ void slot()
   }
   double slotArea = 0, slotFlagged = 0, outerFlagged = 0;
   int deepCells = 0, deepFlagged = 0;
-  vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < measured->GetNumberOfCells(); ++c)
   {
-    measured->GetCellPoints(c, ids);
-    Vec3 centroid = Vec3::Zero();
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      Vec3 x;
-      measured->GetPoint(ids->GetId(k), x.data());
-      centroid += x / ids->GetNumberOfIds();
-    }
+    const Vec3 centroid = centroidOf(measured, c);
     const bool inSlot = std::abs(centroid.x()) < 0.06;
     (inSlot ? slotArea : outerFlagged) += inSlot ? 1 : far->GetTuple1(c);
     slotFlagged += inSlot && far->GetTuple1(c) > 0.5;

@@ -197,7 +197,8 @@ void readOnPoints(vtkDataObject* whole, const TargetFeet& feet, vtkPointData* po
     {
       ids->SetId(k - b, feet.points[k]);
     }
-    points->InterpolatePoint(data->GetPointData(), i, ids, const_cast<double*>(&feet.weights[b]));
+    points->InterpolatePoint(
+      data->GetPointData(), i, ids, const_cast<double*>(feet.weights.data() + b));
   }
 }
 } // namespace

@@ -72,15 +72,15 @@ NearestOnSoup TargetCarrier::nearest() const
   };
 }
 
-bool hasArraysToPass(vtkDataObject* whole)
+bool hasArraysToPass(vtkDataObject* target)
 {
   auto counts = [](vtkFieldData* data) {
     int n = data ? data->GetNumberOfArrays() : 0;
     n -= data && data->HasArray(vtkDataSetAttributes::GhostArrayName()) ? 1 : 0;
     return n;
   };
-  int arrays = whole ? counts(whole->GetFieldData()) : 0;
-  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(whole))
+  int arrays = target ? counts(target->GetFieldData()) : 0;
+  for (vtkDataSet* leaf : vtkCompositeDataSet::GetDataSets(target))
   {
     arrays += counts(leaf->GetPointData()) + counts(leaf->GetCellData());
   }

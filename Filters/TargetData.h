@@ -45,8 +45,9 @@ struct TargetCarrier
 std::unique_ptr<TargetCarrier> makeCarrier(vtkDataObject* whole,
   std::shared_ptr<const TriangleSoup> triangles, std::shared_ptr<const DistanceSource> source);
 
-// Whether `whole` has arrays to pass: point, cell or field arrays besides the ghost marks.
-bool hasArraysToPass(vtkDataObject* whole);
+// Whether `target` (a dataset or a composite) has arrays to pass: point, cell or field arrays
+// besides the ghost marks.
+bool hasArraysToPass(vtkDataObject* target);
 
 // The target as one dataset: itself, or a composite's leaves appended (as the run converts it).
 vtkSmartPointer<vtkDataObject> wholeTarget(vtkDataObject* target);

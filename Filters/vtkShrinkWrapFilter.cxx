@@ -407,8 +407,9 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
   {
     // The target is measured against the written wrap: sampled distances for the summary of its
     // last step, then its data carried over and the target as measured.
-    const vtkSmartPointer<vtkDataObject> whole = convert::wholeTarget(inputs.target);
-    const bool pass = this->PassTargetArrays && convert::hasArraysToPass(whole);
+    const bool pass = this->PassTargetArrays && convert::hasArraysToPass(inputs.target);
+    const vtkSmartPointer<vtkDataObject> whole =
+      pass ? convert::wholeTarget(inputs.target) : nullptr;
     if (pass && run.polygons && !run.carrier)
     {
       // Before the closeness lets the session's distance go: the carrier reads through it.
@@ -422,7 +423,7 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
         wrap = std::make_unique<TriangleSource>(surface);
         if (last)
         {
-          closeness = this->LastCloseness(slot, whole, surface, *wrap);
+          closeness = this->LastCloseness(slot, surface, *wrap);
         }
       });
       return closeness;
@@ -431,8 +432,8 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
       *run.session, wanted, this->TimePerStep, run.seconds, finished, output, notes, measure);
     if (written && wrap)
     {
-      this->CarryAndMeasure(slot, inputs.target, pass ? whole.Get() : nullptr, *wrap, last,
-        finished, output, measured, notes);
+      this->CarryAndMeasure(
+        slot, inputs.target, whole, *wrap, last, finished, output, measured, notes);
     }
     this->ShowSizes(run.session->plan().sizes());
     convert::report(this, "Shrink Wrap", notes);
@@ -453,7 +454,7 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
 }
 
 Closeness vtkShrinkWrapFilter::LastCloseness(
-  unsigned int slot, vtkDataObject* whole, const TriangleSoup& surface, const DistanceSource& wrap)
+  unsigned int slot, const TriangleSoup& surface, const DistanceSource& wrap)
 {
   convert::WrapRuns::Run& run = this->Runs->run(slot);
   if (!run.closeness)

@@ -344,8 +344,8 @@ private:
     const shrinkwrap::DistanceSource& wrap, bool last, bool finished, vtkPolyData* output,
     vtkDataObject* measured, std::vector<shrinkwrap::Note>& notes);
   // The summary's sampled distances of the run's last step (measured once per run).
-  shrinkwrap::Closeness LastCloseness(unsigned int slot, vtkDataObject* whole,
-    const shrinkwrap::TriangleSoup& surface, const shrinkwrap::DistanceSource& wrap);
+  shrinkwrap::Closeness LastCloseness(unsigned int slot, const shrinkwrap::TriangleSoup& surface,
+    const shrinkwrap::DistanceSource& wrap);
   void ShowSizes(const shrinkwrap::WrapSizes& sizes);
   shrinkwrap::Progress ProgressOf(double begin, double end);
   // progressFrom: where the steps' progress begins (after a setup's, kSetupShare).

@@ -89,16 +89,6 @@ bool hasArraysToPass(vtkDataObject* target)
 
 namespace
 {
-std::vector<Vec3> pointsOfMesh(vtkPolyData* mesh)
-{
-  std::vector<Vec3> x(mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    mesh->GetPoint(i, x[i].data());
-  }
-  return x;
-}
-
 // The name of a passed array on the wrap: its own, or with `suffix` where the wrap has that name.
 std::string freeName(
   const char* name, vtkFieldData* taken, const char* suffix, std::vector<std::string>& renamed)
@@ -206,7 +196,7 @@ void readOnPoints(vtkDataObject* whole, const TargetFeet& feet, vtkPointData* po
 void passTargetArrays(vtkDataObject* whole, const TargetCarrier* carrier, const PointCloud* cloud,
   vtkPolyData* wrap, std::vector<std::string>& renamed)
 {
-  const std::vector<Vec3> x = pointsOfMesh(wrap);
+  const std::vector<Vec3> x = pointsOf<std::vector<Vec3>>(wrap);
   vtkNew<vtkPointData> points, cells;
   if (carrier)
   {
@@ -304,7 +294,7 @@ vtkSmartPointer<vtkPolyData> measureTarget(
   vtkDataSet* target, const DistanceSource& wrap, double gap, bool largest)
 {
   vtkSmartPointer<vtkPolyData> surface = surfaceWithData(target);
-  const std::vector<Vec3> x = pointsOfMesh(surface);
+  const std::vector<Vec3> x = pointsOf<std::vector<Vec3>>(surface);
   const std::vector<double> d = signedDistances(x.data(), x.size(), wrap);
   vtkNew<vtkDoubleArray> distance;
   distance->SetName("DistanceToWrap");

@@ -251,7 +251,7 @@ vtkSmartPointer<vtkPolyData> surfaceWithData(vtkDataSet* target)
 }
 
 // Per cell: the share of its area farther than `gap` (from its triangles' shares); for cells
-// without area (vertices, lines), the share of its points.
+// without area (vertices, lines), the share of its existing points.
 vtkSmartPointer<vtkDoubleArray> farFromWrap(vtkPolyData* surface, const TriangleSoup& soup,
   const std::vector<vtkIdType>& cellOf, const std::vector<double>& distance,
   const DistanceSource& wrap, double gap)
@@ -279,12 +279,17 @@ vtkSmartPointer<vtkDoubleArray> farFromWrap(vtkPolyData* surface, const Triangle
       continue;
     }
     surface->GetCellPoints(c, ids);
-    int beyond = 0;
+    int beyond = 0, named = 0; // a cell may name points that do not exist: those are left out
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
     {
-      beyond += std::abs(distance[ids->GetId(k)]) > gap;
+      const vtkIdType id = ids->GetId(k);
+      if (id >= 0 && id < static_cast<vtkIdType>(distance.size()))
+      {
+        beyond += std::abs(distance[id]) > gap;
+        ++named;
+      }
     }
-    result->SetValue(c, ids->GetNumberOfIds() > 0 ? double(beyond) / ids->GetNumberOfIds() : 0.0);
+    result->SetValue(c, named > 0 ? double(beyond) / named : 0.0);
   }
   return result;
 }

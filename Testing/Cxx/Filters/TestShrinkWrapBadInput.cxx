@@ -1,14 +1,16 @@
 // Shrink Wrap and Mesh Signed Distance fed what crashed them (issue #8): composite inputs on every
 // port, a starved step cache, corrupt starting surfaces, absurd step counts and request times,
-// short or non-finite distance fields, coordinates too large for the field, aborts. Each gets a
-// correct result or a clear error and an empty output, and the filter computes a good input
-// afterwards. Run under AddressSanitizer and UBSan in CI.
+// short or non-finite distance fields, coordinates too large for the field, aborts, cells naming
+// points that do not exist. Each gets a correct result or a clear error and an empty output, and
+// the filter computes a good input afterwards. Run under AddressSanitizer and UBSan in CI.
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
 
 #include <vtkAppendPolyData.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDataObjectTypes.h>
 #include <vtkInformation.h>
@@ -648,6 +650,37 @@ void aborts()
   SW_CHECK(stepOf(wrap->GetOutput()) == 30 && wrap->GetNumberOfComputedSteps() == 30,
     "a change runs normally");
 }
+
+// A target whose vertex and line cells name points that do not exist (ids past the end, negative):
+// the wrap does not use such cells (a polygon naming one is refused), and Target Measured keeps
+// them with the share of the points they do name (none: 0).
+void cellsNamingNoPoint()
+{
+  vtkSmartPointer<vtkPolyData> target = sphere();
+  const vtkIdType n = target->GetNumberOfPoints();
+  vtkNew<vtkCellArray> verts, lines;
+  const vtkIdType vert[] = { vtkIdType(1) << 40 }, line[] = { 0, -7, n };
+  verts->InsertNextCell(1, vert);
+  lines->InsertNextCell(3, line);
+  target->SetVerts(verts);
+  target->SetLines(lines);
+  auto wrap = wrapOf(target);
+  const Said said = whileSaying(wrap, [&] { wrap->Update(); });
+  std::cout << "Cells naming no point: " << said.text << std::endl;
+  SW_CHECK(wrap->GetOutput()->GetNumberOfPoints() == 162, "cells naming no point: the wrap");
+  auto* measured = vtkPolyData::SafeDownCast(wrap->GetOutputDataObject(1));
+  vtkDataArray* far = measured ? measured->GetCellData()->GetArray("FarFromWrap") : nullptr;
+  SW_CHECK(far && far->GetNumberOfTuples() == target->GetNumberOfCells(),
+    "cells naming no point: FarFromWrap on every cell of Target Measured");
+  bool shares = far != nullptr;
+  for (vtkIdType c = 0; far && c < far->GetNumberOfTuples(); ++c)
+  {
+    shares = shares && far->GetTuple1(c) >= 0 && far->GetTuple1(c) <= 1;
+  }
+  SW_CHECK(shares && far->GetTuple1(0) == 0,
+    "cells naming no point: every share within [0, 1], the vertex naming none 0");
+  livesOn(wrap, "cells naming no point");
+}
 } // namespace
 
 int TestShrinkWrapBadInput(int, char*[])
@@ -661,5 +694,6 @@ int TestShrinkWrapBadInput(int, char*[])
   badDistanceFields();
   coordinatesTooLarge();
   aborts();
+  cellsNamingNoPoint();
   return testing::finish("TestShrinkWrapBadInput");
 }

@@ -231,6 +231,73 @@ const WrapPlan* WrapRuns::plan(vtkDataObject* data, const std::optional<GridLatt
   return p.status ? &p.plan : nullptr;
 }
 
+void WrapRuns::keepFramesFor(vtkMTimeType key)
+{
+  if (key != this->FramesKey)
+  {
+    this->Frames.clear();
+    for (auto& slot : this->Runs)
+    {
+      slot.second = Run();
+    }
+    this->FramesKey = key;
+  }
+}
+
+bool WrapRuns::startFrame(Run& run, int frame, const WrapInputs& inputs, vtkMTimeType key,
+  int inputGeometry, WrapSettings settings, const Progress& progress, Notes& notes,
+  Status& status, FrameReport& report)
+{
+  Run::Series series = std::move(run.series);
+  if (series.newestFrame != frame - 1)
+  {
+    series = Run::Series(); // the series starts over
+  }
+  run = Run();
+  if (!inputs.target)
+  {
+    status = Status::failure("there is no target");
+    return false;
+  }
+  if (series.sizes) // the first frame's
+  {
+    settings.gapSize = series.sizes->gap;
+    settings.targetEdgeLength = series.sizes->edgeLength;
+  }
+  const ConvertedTarget& converted = this->TargetOf(inputs.target, inputGeometry);
+  notes.insert(notes.end(), converted.notes.begin(), converted.notes.end());
+  WrapTarget target = converted.target;
+  status = converted.status;
+  if (status)
+  {
+    status = readGiven(inputs, target);
+  }
+  WrapPlan plan; // planned for this frame alone: the sizes differ from the panel's plan
+  if (status)
+  {
+    status = planWrap(target, settings, plan);
+  }
+  if (status)
+  {
+    const FollowedWrap* previous = series.newest ? &*series.newest : nullptr;
+    status = wrapFrame(
+      target, plan, previous, FollowSettings(), contour, progress, notes, run.session, report);
+  }
+  run.key = status ? key : 0;
+  run.polygons = target.polygons;
+  run.cloud = target.polygons ? nullptr : target.points;
+  run.measuredOn = run.session ? run.session->fields().target.exactShared() : nullptr;
+  if (status)
+  {
+    const std::int64_t nextTrack = series.newest ? series.newest->nextTrack : 0;
+    series.newest = followedWrap(*run.session, report.steps, target.polygons, nextTrack);
+    series.newestFrame = frame;
+    series.sizes = series.sizes ? series.sizes : plan.sizes();
+  }
+  run.series = std::move(series);
+  return status.ok();
+}
+
 bool WrapRuns::start(Run& run, const WrapInputs& inputs, vtkMTimeType key, int inputGeometry,
   const WrapSettings& settings, const Progress& progress, Notes& notes, Status& status)
 {

@@ -9,9 +9,11 @@
 #include "Common/Status.h"
 #include "TargetData.h"
 #include "Wrap/Closeness.h"
+#include "Wrap/FollowedFrames.h"
 #include "Wrap/WrapPlan.h"
 #include "Wrap/WrapSession.h"
 
+#include <vtkSmartPointer.h>
 #include <vtkType.h>
 
 #include <cstdint>
@@ -77,6 +79,21 @@ public:
     std::unique_ptr<TargetCarrier> carrier;
     std::shared_ptr<const DistanceSource> measuredOn;
     std::optional<Closeness> closeness;
+    // A followed series (Time Mode): each frame's wrap as written (without the target's arrays)
+    // and its target as measured; the newest frame's wrap, which the next frame starts from; the
+    // sizes of the series' first frame, which every frame keeps (the same edges, the same gaps).
+    struct Frame
+    {
+      vtkSmartPointer<vtkPolyData> wrap;
+      vtkSmartPointer<vtkDataObject> measured;
+    };
+    struct Series
+    {
+      std::map<int, Frame> frames;
+      std::optional<FollowedWrap> newest;
+      int newestFrame = -1;
+      std::optional<WrapSizes> sizes;
+    } series;
   };
   // The key of a filter's properties and inputs: its modification time and what its inputs on its
   // first `ports` ports hold (their content: an input that runs again to the same data keeps the
@@ -96,6 +113,13 @@ public:
   const WrapPlan* plan(vtkDataObject* target, const std::optional<GridLattice>& field,
     bool givenStart, vtkMTimeType key, int inputGeometry, const WrapSettings& settings);
   const Status& status() const { return this->Planned.status; }
+  // The target as the core takes it (converted once while the data and Input Geometry stay); null
+  // when it cannot be wrapped.
+  const WrapTarget* converted(vtkDataObject* data, int inputGeometry)
+  {
+    const ConvertedTarget& c = this->TargetOf(data, inputGeometry);
+    return c.status ? &c.target : nullptr;
+  }
   const Notes& targetNotes() const { return this->Converted.notes; }
 
   // Starts `run` on `inputs` (Wrap.h: the plan, then its fields, start and session); false, with
@@ -103,6 +127,16 @@ public:
   // should know.
   bool start(Run& run, const WrapInputs& inputs, vtkMTimeType key, int inputGeometry,
     const WrapSettings& settings, const Progress& progress, Notes& notes, Status& status);
+
+  // Wraps frame `frame` of a followed series into `run` (FollowedFrames.h: from the run's newest
+  // frame when it is the one before, else afresh); false, with `status`, when it cannot.
+  bool startFrame(Run& run, int frame, const WrapInputs& inputs, vtkMTimeType key,
+    int inputGeometry, WrapSettings settings, const Progress& progress, Notes& notes,
+    Status& status, FrameReport& report);
+  // The followed series' frames, and the key of the properties and pipeline they were made with.
+  FrameSchedule& frames() { return this->Frames; }
+  // Forgets every run's frames when `key` is not the one they were made for.
+  void keepFramesFor(vtkMTimeType key);
 
   // The piece that wraps each block, as `share()` gives it, made once per key and piece count.
   template <typename Share>
@@ -145,6 +179,8 @@ private:
     vtkMTimeType time;
     std::uint64_t digest;
   };
+  FrameSchedule Frames;
+  vtkMTimeType FramesKey = 0;
   std::vector<InputDigest> Digests;
   std::map<unsigned int, Run> Runs;
   vtkMTimeType BlocksKey = 0;

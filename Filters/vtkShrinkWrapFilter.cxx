@@ -15,6 +15,9 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
@@ -26,6 +29,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 
 #include <algorithm>
 #include <chrono>
@@ -68,7 +72,8 @@ vtkShrinkWrapFilter::~vtkShrinkWrapFilter()
 
 std::vector<convert::PropertyInfo> vtkShrinkWrapFilter::DescribeProperties()
 {
-  std::vector<convert::PropertyInfo> described{ kInputGeometry, kWrapPerBlock, kPassTargetArrays };
+  std::vector<convert::PropertyInfo> described{ kInputGeometry, kWrapPerBlock, kPassTargetArrays,
+    kTimeMode };
   const WrapSettings settings;
   vtkNew<vtkShrinkWrapFilter> filter;
   BindProperties(*filter.Get(), settings,
@@ -79,6 +84,10 @@ std::vector<convert::PropertyInfo> vtkShrinkWrapFilter::DescribeProperties()
 Status vtkShrinkWrapFilter::CheckProperties() const
 {
   Status status = convert::checkProperty(kInputGeometry, this->InputGeometry);
+  if (status)
+  {
+    status = convert::checkProperty(kTimeMode, this->TimeMode);
+  }
   const WrapSettings unused;
   BindProperties(
     *this, unused, [&](const convert::PropertyInfo& info, const auto& property, const auto&) {
@@ -168,6 +177,7 @@ int vtkShrinkWrapFilter::ComputePipelineMTime(vtkInformation* request,
 {
   const int result = this->Superclass::ComputePipelineMTime(
     request, inInfoVec, outInfoVec, requestFromOutputPort, mtime);
+  this->PipelineTime = *mtime; // the filter's and its inputs' pipelines: what keys the frames
   // Asked of the wrap (port 0): the target as measured, updated after it in the same update (a
   // proxy's UpdatePipeline updates every port), is what that run measured.
   if (this->RunAgain && requestFromOutputPort <= 0)
@@ -187,11 +197,37 @@ int vtkShrinkWrapFilter::RequestInformation(
   {
     return 1; // RequestData says why
   }
-  // Every evolution step is a time step of both outputs.
+  // Every evolution step is a time step of both outputs, or every frame of the target.
+  vtkInformation* in = inputVector[0]->GetInformationObject(0);
+  const int frames = in ? in->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) : 0;
+  this->FollowsTarget = this->TimeMode == TIME_FOLLOW_TARGET ||
+    (this->TimeMode == TIME_AUTOMATIC && frames > 0);
+  std::vector<double> times;
+  if (frames > 0)
+  {
+    const double* t = in->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    times.assign(t, t + frames);
+  }
+  this->Runs->frames().follow(this->FollowsTarget && times.empty() ? std::vector<double>{ 0.0 }
+                                                                 : times);
   for (int port = 0; port < 2; ++port)
   {
-    convert::advertiseSteps(
-      outputVector->GetInformationObject(port), this->NumberOfSteps, this->TimePerStep);
+    vtkInformation* out = outputVector->GetInformationObject(port);
+    if (!this->FollowsTarget)
+    {
+      convert::advertiseSteps(out, this->NumberOfSteps, this->TimePerStep);
+    }
+    else if (frames > 0)
+    {
+      out->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), frames);
+      const double range[2] = { times.front(), times.back() };
+      out->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+    }
+    else
+    {
+      out->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+      out->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+    }
   }
   // ParaView reads information properties after RequestInformation, not after RequestData: the
   // panel's sizes are planned here from the inputs as they stand (0 while the target has not been
@@ -219,10 +255,43 @@ void vtkShrinkWrapFilter::ShowSizes(const WrapSizes& sizes)
 }
 
 int vtkShrinkWrapFilter::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // The whole target, field and starting surface, whatever time is asked of the output.
+  // The whole target, field and starting surface: whatever time is asked of the output, or
+  // following the target, each frame in turn up to the one at the time asked.
   convert::askWholeInputs(inputVector, 3, true);
+  if (!this->FollowsTarget)
+  {
+    return 1;
+  }
+  FrameSchedule& schedule = this->Runs->frames();
+  this->Runs->keepFramesFor(this->PipelineTime);
+  if (!this->FrameContinues) // an update begins
+  {
+    const int port = std::clamp(request->Get(vtkExecutive::FROM_OUTPUT_PORT()), 0, 1);
+    vtkInformation* out = outputVector->GetInformationObject(port);
+    const double asked = out->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      ? out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      : std::nan("");
+    this->FrameWanted = schedule.frameAt(asked);
+    this->FrameAsked = this->FrameFirst = schedule.next(this->FrameWanted);
+  }
+  vtkInformation* in = inputVector[0]->GetInformationObject(0);
+  if (in && in->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    const double time = schedule.times()[this->FrameAsked];
+    for (int port = 0; port < 2; ++port) // the target, and a distance field that has times
+    {
+      for (int c = 0; c < inputVector[port]->GetNumberOfInformationObjects(); ++c)
+      {
+        vtkInformation* info = inputVector[port]->GetInformationObject(c);
+        if (info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+        {
+          info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), time);
+        }
+      }
+    }
+  }
   return 1;
 }
 
@@ -273,6 +342,10 @@ int vtkShrinkWrapFilter::RequestData(
     {
       vtkErrorMacro("Shrink Wrap failed: " << e.what() << ".");
     }
+  }
+  if (this->FollowsTarget)
+  {
+    this->NextFrame(request, outputVector);
   }
   // The target as measured stands at the wrap's time, whichever port asked.
   if (output->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
@@ -368,6 +441,11 @@ shrinkwrap::Progress vtkShrinkWrapFilter::ProgressOf(double begin, double end)
 void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& inputs,
   vtkInformation* outInfo, vtkPolyData* output, vtkDataObject* measured)
 {
+  if (this->FollowsTarget)
+  {
+    this->ExecuteFrame(slot, inputs, output, measured);
+    return;
+  }
   const vtkMTimeType key = this->SessionKey();
   convert::WrapRuns::Run& run = this->Runs->run(slot);
   const auto begin = std::chrono::steady_clock::now();
@@ -450,6 +528,226 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
     this->RunAgain = true;
     vtkWarningMacro(
       "Properties or inputs changed during the run; they apply from the next update.");
+  }
+}
+
+namespace
+{
+// A copy of `data` that shares its arrays but not its field data's list (arrays added to one do not
+// show on the other).
+template <typename T>
+vtkSmartPointer<T> copyOf(T* data)
+{
+  auto copy = vtkSmartPointer<T>::New();
+  copy->ShallowCopy(data);
+  vtkNew<vtkFieldData> fields;
+  fields->ShallowCopy(data->GetFieldData());
+  copy->SetFieldData(fields);
+  return copy;
+}
+
+// TrackId, Displacement and Velocity (Displacement over `dt`; zero where dt is not positive) of a
+// followed frame, as point arrays of `output` (its points in the wrap's order).
+void addMotion(const FollowedWrap& wrap, double dt, vtkPolyData* output)
+{
+  const vtkIdType n = output->GetNumberOfPoints();
+  const VertexProperty<TrackId> tracks = wrap.mesh.vertexProperty<TrackId>(kTrackProperty);
+  if (!tracks || static_cast<vtkIdType>(wrap.displacement.size()) != n)
+  {
+    return;
+  }
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("TrackId");
+  ids->SetNumberOfTuples(n);
+  vtkNew<vtkDoubleArray> displacement, velocity;
+  displacement->SetName("Displacement");
+  velocity->SetName("Velocity");
+  for (vtkDoubleArray* a : { displacement.Get(), velocity.Get() })
+  {
+    a->SetNumberOfComponents(3);
+    a->SetNumberOfTuples(n);
+  }
+  const double rate = dt > 0 ? 1 / dt : 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    ids->SetValue(i, static_cast<vtkIdType>(tracks[static_cast<int>(i)].id));
+    const Vec3& d = wrap.displacement[i];
+    displacement->SetTuple3(i, d.x(), d.y(), d.z());
+    velocity->SetTuple3(i, rate * d.x(), rate * d.y(), rate * d.z());
+  }
+  output->GetPointData()->AddArray(ids);
+  output->GetPointData()->AddArray(displacement);
+  output->GetPointData()->AddArray(velocity);
+}
+
+// The field data value `name` of `data` set to `value` (a one-value array).
+void setField(vtkDataObject* data, const char* name, double value)
+{
+  if (auto* a = vtkDoubleArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name)))
+  {
+    a->SetValue(0, value);
+  }
+}
+} // namespace
+
+void vtkShrinkWrapFilter::ExecuteFrame(unsigned int slot, const convert::WrapInputs& inputs,
+  vtkPolyData* output, vtkDataObject* measured)
+{
+  const int frame = this->FrameAsked;
+  const FrameSchedule& schedule = this->Runs->frames();
+  const bool timed = schedule.times().size() > 1 || this->GetInputInformation(0, 0)->Has(
+                                                       vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  const double time = timed ? schedule.times()[frame] : 0;
+  convert::WrapRuns::Run& run = this->Runs->run(slot);
+  Notes notes;
+  if (!run.series.frames.count(frame))
+  {
+    const double share = 1.0 / std::max(this->FrameWanted - this->FrameFirst + 1, 1);
+    const double from = std::clamp((frame - this->FrameFirst) * share, 0.0, 1.0 - share);
+    const auto begin = std::chrono::steady_clock::now();
+    Status status;
+    FrameReport report;
+    bool started = false;
+    onAllCores([&] {
+      started = this->Runs->startFrame(run, frame, inputs, this->SessionKey(), this->InputGeometry,
+        this->CoreSettings(), this->ProgressOf(from, from + share), notes, status, report);
+    });
+    convert::report(this, "Shrink Wrap", notes);
+    notes.clear();
+    if (!started)
+    {
+      this->FrameStopped = true;
+      if (this->GetAbortExecute())
+      {
+        this->AbortExecute = 0;
+        vtkWarningMacro("Shrink Wrap was aborted at frame "
+          << frame << "; the output is empty (the frames before it stay cached).");
+      }
+      else
+      {
+        vtkErrorMacro("Cannot wrap frame " << frame << ": " << status.message() << ".");
+      }
+      return;
+    }
+    run.seconds = secondsSince(begin);
+    const bool wanted = frame == this->FrameWanted;
+    std::unique_ptr<TriangleSource> wrap;
+    const convert::MeasureWrap measure = [&](const TriangleSoup& surface) {
+      std::optional<Closeness> closeness;
+      onAllCores([&] {
+        wrap = std::make_unique<TriangleSource>(surface);
+        if (wanted)
+        {
+          closeness = this->LastCloseness(slot, surface, *wrap);
+        }
+      });
+      return closeness;
+    };
+    const Status written = convert::writeWrap(*run.session, report.steps, this->TimePerStep,
+      run.seconds, wanted, output, notes, measure);
+    if (!written || !wrap)
+    {
+      this->FrameStopped = true;
+      vtkErrorMacro("Internal error: " << written.message() << ".");
+      return;
+    }
+    const double before = frame > 0 && timed ? schedule.times()[frame - 1] : time;
+    addMotion(*run.series.newest, report.carried ? time - before : 0.0, output);
+    setField(output, "Time", time);
+    if (!report.fresh.empty())
+    {
+      auto* statuses = vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("Status"));
+      if (statuses && statuses->GetValue(0) == "ok")
+      {
+        statuses->SetValue(0, "started afresh: " + report.fresh);
+      }
+      warn(notes, "Frame " + std::to_string(frame) + " started afresh: " + report.fresh +
+          " (its vertices get new TrackIds)");
+    }
+    this->CarryAndMeasure(slot, inputs.target, nullptr, *wrap, true, wanted, output, measured, notes);
+    convert::report(this, "Shrink Wrap", notes);
+    this->ShowSizes(run.session->plan().sizes());
+    run.series.frames[frame] = { copyOf(output), copyOf(measured) };
+    run.session.reset(); // the frame's fields: the next frame makes its own
+    run.measuredOn.reset();
+    this->ThinFrames(slot);
+  }
+  else
+  {
+    const auto& cached = run.series.frames[frame];
+    output->ShallowCopy(copyOf(cached.wrap.Get()));
+    measured->ShallowCopy(copyOf(cached.measured.Get()));
+  }
+  // The target's arrays, read from this frame's target.
+  const WrapTarget* target = this->PassTargetArrays && convert::hasArraysToPass(inputs.target)
+    ? this->Runs->converted(inputs.target, this->InputGeometry)
+    : nullptr;
+  if (target)
+  {
+    const vtkSmartPointer<vtkDataObject> whole = convert::wholeTarget(inputs.target);
+    const auto carrier =
+      target->polygons ? convert::makeCarrier(whole, target->polygons, nullptr) : nullptr;
+    std::vector<std::string> renamed;
+    onAllCores([&] {
+      convert::passTargetArrays(whole, carrier.get(),
+        target->polygons ? nullptr : target->points.get(), output, renamed);
+    });
+  }
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+}
+
+// Keeps the frames' outputs within Cache Memory (MiB): the oldest are dropped but the first and
+// the newest (a frame dropped is computed again, from the first, when asked for).
+void vtkShrinkWrapFilter::ThinFrames(unsigned int slot)
+{
+  auto& frames = this->Runs->run(slot).series.frames;
+  auto kib = [](const convert::WrapRuns::Run::Frame& f) {
+    return static_cast<double>(f.wrap->GetActualMemorySize() + f.measured->GetActualMemorySize());
+  };
+  double total = 0;
+  for (const auto& f : frames)
+  {
+    total += kib(f.second);
+  }
+  for (auto f = std::next(frames.begin()); total > this->CacheMemoryMiB * 1024 && frames.size() > 2 &&
+       f != std::prev(frames.end());)
+  {
+    total -= kib(f->second);
+    this->Runs->frames().forget(f->first);
+    f = frames.erase(f);
+  }
+}
+
+void vtkShrinkWrapFilter::NextFrame(vtkInformation* request, vtkInformationVector* outputVector)
+{
+  const int frame = this->FrameAsked;
+  FrameSchedule& schedule = this->Runs->frames();
+  if (frame < 0)
+  {
+    return;
+  }
+  if (!this->FrameStopped && !schedule.done(frame))
+  {
+    schedule.markDone(frame);
+  }
+  if (!this->FrameStopped && frame < this->FrameWanted)
+  {
+    request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+    this->FrameAsked = frame + 1;
+    this->FrameContinues = true;
+  }
+  else
+  {
+    request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+    this->FrameAsked = -1;
+    this->FrameContinues = false;
+    this->FrameStopped = false;
+  }
+  vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
+  if (schedule.times().size() > static_cast<std::size_t>(frame) &&
+    this->GetInputInformation(0, 0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), schedule.times()[frame]);
   }
 }
 
@@ -564,6 +862,8 @@ void vtkShrinkWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   BindProperties(*this, unused, convert::propertyPrinter(os, indent));
   os << indent << "WrapPerBlock: " << this->WrapPerBlock << "\n";
   os << indent << "PassTargetArrays: " << this->PassTargetArrays << "\n";
+  os << indent << "TimeMode: " << this->TimeMode << "\n";
+  os << indent << "FollowsTarget: " << this->FollowsTarget << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "FieldCellSize: " << this->FieldCellSize << "\n";
   os << indent << "ChosenGapSize: " << this->ChosenGapSize << "\n";

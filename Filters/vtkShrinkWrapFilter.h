@@ -229,6 +229,21 @@ public:
   void SetPassTargetArrays(bool pass);
   vtkGetMacro(PassTargetArrays, bool);
   vtkBooleanMacro(PassTargetArrays, bool);
+  /// Time Mode: what the output's times are. Automatic (default): Follow Target Time when the
+  /// target has time steps, else Evolution Steps. Evolution Steps: every evolution step is a time
+  /// (the target read at one time). Follow Target Time: the target's own times; the wrap of each
+  /// frame starts from the previous frame's, carried with the target's motion, and evolves until
+  /// it lands; a time asked for gives the frame at or before it (the first before the first).
+  enum TimeModes
+  {
+    TIME_AUTOMATIC = 0,
+    TIME_EVOLUTION_STEPS = 1,
+    TIME_FOLLOW_TARGET = 2
+  };
+  vtkSetMacro(TimeMode, int);
+  vtkGetMacro(TimeMode, int);
+  /// 1 when the output follows the target's times (Time Mode, as the last information pass found).
+  vtkGetMacro(FollowsTarget, int);
   /// The MPI ranks that share a composite's blocks and gather a distributed target. Default: the
   /// global controller; set none to wrap in one process alone.
   void SetController(vtkMultiProcessController* controller);
@@ -311,6 +326,7 @@ protected:
   double CacheMemoryMiB;
   bool WrapPerBlock = true;
   bool PassTargetArrays = true;
+  int TimeMode = TIME_AUTOMATIC;
   vtkMultiProcessController* Controller = nullptr;
 
 private:
@@ -321,6 +337,18 @@ private:
   // (ComputePipelineMTime), without touching the MTime that keys the cache.
   bool RunAgain = false;
   vtkTimeStamp RunAgainTime;
+
+  // A followed series (Time Mode): whether the output follows the target's times; in an update,
+  // the frame asked of the target now, the one wanted, the first computed by this update (the
+  // pipeline runs RequestData once per frame, CONTINUE_EXECUTING); the pipeline's modification
+  // time, which keys the frames.
+  int FollowsTarget = 0;
+  int FrameAsked = -1;
+  int FrameWanted = -1;
+  int FrameFirst = -1;
+  bool FrameStopped = false;   // aborted or failed: the update ends
+  bool FrameContinues = false; // the pipeline runs again for the next frame
+  vtkMTimeType PipelineTime = 0;
 
   double FieldCellSize = 0; // planned in RequestInformation, the run's in RequestData; as are
   double ChosenGapSize = 0; // these two
@@ -337,6 +365,14 @@ private:
   // `measured`: output port 1's object for this target (a surface, or a composite for one).
   void Execute(unsigned int slot, const shrinkwrap::convert::WrapInputs& inputs,
     vtkInformation* outInfo, vtkPolyData* output, vtkDataObject* measured);
+  // Frame FrameAsked of a followed series into `output` and `measured`: from the cache, else
+  // wrapped from the frame before (FollowedFrames.h) with TrackId, Displacement and Velocity.
+  void ExecuteFrame(unsigned int slot, const shrinkwrap::convert::WrapInputs& inputs,
+    vtkPolyData* output, vtkDataObject* measured);
+  // Keeps the frames' outputs of `slot` within Cache Memory (MiB).
+  void ThinFrames(unsigned int slot);
+  // After a frame: the next one asked of the pipeline, or the update's end.
+  void NextFrame(vtkInformation* request, vtkInformationVector* outputVector);
   // The target's arrays onto the written wrap, and the target measured against it (port 1).
   // `whole`: the target as one dataset (convert::wholeTarget) when its arrays are to be passed;
   // `last`: the run's last step (its largest distance is measured).

@@ -15,6 +15,14 @@ namespace shrinkwrap
 
 namespace detail
 {
+// The value a split gives its new vertex: interpolated. A type may say otherwise by a function
+// between(a, b, t) of its own, found beside the type (a track id is new, say).
+template <typename T>
+T between(const T& a, const T& b, double t)
+{
+  return (1 - t) * a + t * b;
+}
+
 // One property's values, whatever their type, as the mesh's edits move them.
 class PropertyArray
 {
@@ -22,7 +30,7 @@ public:
   virtual ~PropertyArray() = default;
   virtual std::unique_ptr<PropertyArray> clone() const = 0;
   virtual void resize(std::size_t n) = 0;                 // new vertices get the default value
-  virtual void appendBetween(int a, int b, double t) = 0; // (1 - t) value(a) + t value(b)
+  virtual void appendBetween(int a, int b, double t) = 0; // between(value(a), value(b), t)
   virtual void move(int from, int to) = 0;                // value(to) = value(from)
 };
 
@@ -41,8 +49,8 @@ public:
   void resize(std::size_t n) override { this->Values.resize(n, this->Default); }
   void appendBetween(int a, int b, double t) override
   {
-    const T between = (1 - t) * this->Values[a] + t * this->Values[b];
-    this->Values.push_back(between);
+    using detail::between;
+    this->Values.push_back(between(this->Values[a], this->Values[b], t));
   }
   void move(int from, int to) override { this->Values[to] = this->Values[from]; }
 

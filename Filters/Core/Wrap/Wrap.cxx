@@ -57,17 +57,18 @@ Status startWrap(const WrapTarget& target, const WrapPlan& plan, const Contour& 
 {
   notes.insert(notes.end(), plan.notes.begin(), plan.notes.end());
   WrapFields fields;
-  Status status = makeWrapFields(target, plan, progress.stage(0, kFieldsShare), notes, fields);
+  const Status made = makeWrapFields(target, plan, progress.stage(0, kFieldsShare), notes, fields);
+  return made ? startSession(
+                  target, plan, std::move(fields), contour, progress.stage(kFieldsShare, 1), session)
+              : made;
+}
+
+Status startSession(const WrapTarget& target, const WrapPlan& plan, WrapFields fields,
+  const Contour& contour, const Progress& progress, std::unique_ptr<WrapSession>& session)
+{
   SurfaceMesh start;
-  if (status)
-  {
-    status = startOf(target, plan, fields, contour, progress.stage(kFieldsShare, 1), start);
-  }
-  if (status)
-  {
-    status = WrapSession::create(std::move(fields), plan, start, session);
-  }
-  return status;
+  const Status started = startOf(target, plan, fields, contour, progress, start);
+  return started ? WrapSession::create(std::move(fields), plan, start, session) : started;
 }
 
 Status wrap(const WrapTarget& target, const WrapSettings& settings, const Contour& contour,

@@ -30,6 +30,9 @@ Status makeTarget(TriangleSoup polygons, PointList points, WrapTarget& target);
 // offset start). Notes tell the user what the setup found (an unsigned field, specks left out).
 Status startWrap(const WrapTarget& target, const WrapPlan& plan, const Contour& contour,
   const Progress& progress, Notes& notes, std::unique_ptr<WrapSession>& session);
+// The start and the session on fields made for the plan (startWrap's second half).
+Status startSession(const WrapTarget& target, const WrapPlan& plan, WrapFields fields,
+  const Contour& contour, const Progress& progress, std::unique_ptr<WrapSession>& session);
 
 // A wrap from its target to its last step.
 struct WrapResult

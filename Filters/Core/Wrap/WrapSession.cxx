@@ -139,7 +139,7 @@ void WrapSession::releaseIfOver()
 {
   const int last = this->LastGood >= 0 ? this->LastGood : this->Plan.settings.steps;
   const TriangleSoup* target = this->targetTriangles();
-  if (!target || this->Computed == 0)
+  if (!target || this->Computed == 0 || this->KeepEvolver)
   {
     return;
   }

@@ -51,6 +51,8 @@ public:
   // out), where the target's triangles outnumber the cached vertices, so that a large target's
   // tree does not outlive its use. Its steps are still shown; edit() and evolver() then fail.
   bool released() const { return !this->Evolving; }
+  // Keeps the evolver after the last step (a followed frame reads its mesh's vertex properties).
+  void keepEvolver() { this->KeepEvolver = true; }
   // How far step k moved the surface from step k - 1, on average along its normals (the change of
   // the enclosed volume over the area), in cells of the field; none unless both steps are cached.
   std::optional<double> meanMotion(int k) const;
@@ -89,6 +91,7 @@ private:
   std::string Failure;
   int Computed = 0;
   bool Stopped = false; // a step was stopped midway: the evolver restarts from the cache
+  bool KeepEvolver = false;
   struct LeftOutOf
   {
     const StepCache::Step* surface = nullptr;

@@ -1,0 +1,275 @@
+#include "Wrap/FollowedFrames.h"
+
+#include "Common/Parallel.h"
+#include "Distance/AABBTree.h"
+#include "Surface/SelfIntersections.h"
+#include "Wrap/TargetFeet.h"
+#include "Wrap/Wrap.h"
+#include "Wrap/WrapFields.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace shrinkwrap
+{
+
+namespace
+{
+// The progress of a frame: its fields, then its start, then its steps.
+constexpr double kFieldsShare = 0.4;
+constexpr double kStartShare = 0.5;
+
+// The unit normal of a triangle; zero when it is degenerate.
+Vec3 unitNormal(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 n = (b - a).cross(c - a);
+  const double length = n.norm();
+  return length > 0 ? Vec3(n / length) : Vec3(Vec3::Zero());
+}
+
+bool inside(const Box& domain, const std::vector<Vec3>& points)
+{
+  return std::all_of(
+    points.begin(), points.end(), [&](const Vec3& p) { return domain.squaredDistance(p) == 0; });
+}
+
+// Whether the carried start lies on the target already: 95% of its vertices within
+// follow.carriedCells cells of it.
+bool landedAsCarried(const WrapSession& session, const FollowSettings& follow)
+{
+  const std::vector<DistanceSample>& samples = session.targetSamples(session.surface(0));
+  if (samples.empty())
+  {
+    return false;
+  }
+  std::vector<double> d(samples.size());
+  std::transform(samples.begin(), samples.end(), d.begin(),
+    [](const DistanceSample& s) { return std::abs(s.value); });
+  const auto rank = d.begin() + static_cast<std::ptrdiff_t>(0.95 * (d.size() - 1));
+  std::nth_element(d.begin(), rank, d.end());
+  return *rank <= follow.carriedCells * session.plan().lattice.spacing.maxCoeff();
+}
+
+// Steps a carried start until it lands (FollowSettings); false when progress asked to stop. A
+// failed step leaves the session's lastGood() set.
+bool land(WrapSession& session, const FollowSettings& follow, const Progress& progress, int& steps)
+{
+  steps = 0;
+  if (landedAsCarried(session, follow))
+  {
+    return true;
+  }
+  const int most = session.plan().settings.steps;
+  for (steps = 1; steps <= most; ++steps)
+  {
+    if (!session.advanceTo(steps, progress.stage(double(steps - 1) / most, double(steps) / most)))
+    {
+      return false;
+    }
+    if (session.lastGood() >= 0)
+    {
+      return true;
+    }
+    const std::optional<double> motion = session.meanMotion(steps);
+    if (steps >= follow.minSteps && motion && *motion < follow.landedCells)
+    {
+      return true;
+    }
+  }
+  steps = most;
+  return true;
+}
+} // namespace
+
+bool carryWithTarget(
+  const TriangleSoup& before, const TriangleSoup& after, std::vector<Vec3>& points)
+{
+  if (before.points.size() != after.points.size() || before.triangles != after.triangles ||
+    before.triangles.empty() || points.empty())
+  {
+    return false;
+  }
+  const AABBTree tree(before);
+  const std::vector<Vec3> from = points;
+  parallelFor(0, static_cast<Index>(points.size()), kQueryGrain, [&](Index b, Index e) {
+    for (Index i = b; i < e; ++i)
+    {
+      const ClosestHit hit = tree.closestPoint(from[i]);
+      const auto& t = before.triangles[hit.triangle];
+      const std::array<double, 3> w = barycentric(
+        hit.point, before.points[t[0]], before.points[t[1]], before.points[t[2]]);
+      const Vec3 foot =
+        w[0] * after.points[t[0]] + w[1] * after.points[t[1]] + w[2] * after.points[t[2]];
+      const Vec3 n0 = unitNormal(before.points[t[0]], before.points[t[1]], before.points[t[2]]);
+      const Vec3 n1 = unitNormal(after.points[t[0]], after.points[t[1]], after.points[t[2]]);
+      const Vec3 offset = from[i] - hit.point;
+      const double along = offset.dot(n0); // the rest (off a rim or corner) keeps its direction
+      points[i] = foot + along * n1 + (offset - along * n0);
+    }
+  });
+  return true;
+}
+
+Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedWrap* previous,
+  const FollowSettings& follow, const Contour& contour, const Progress& progress, Notes& notes,
+  std::unique_ptr<WrapSession>& session, FrameReport& report)
+{
+  report = FrameReport();
+  session.reset();
+  notes.insert(notes.end(), plan.notes.begin(), plan.notes.end());
+  WrapFields fields;
+  if (Status made = makeWrapFields(target, plan, progress.stage(0, kFieldsShare), notes, fields);
+      !made)
+  {
+    return made;
+  }
+  const Progress steps = progress.stage(kStartShare, 1);
+  bool spent = false;
+  if (previous)
+  {
+    SurfaceMesh start = previous->mesh;
+    const std::vector<Vec3> before = start.points();
+    report.moved = previous->target && target.polygons &&
+      carryWithTarget(*previous->target, *target.polygons, start.points());
+    if (report.moved) // where the carried surface would pass through itself, it stays
+    {
+      holdNewCrossings(before, start.points(), start.triangles());
+    }
+    if (inside(fields.driving.grid().lattice().bounds(), start.points()))
+    {
+      std::unique_ptr<WrapSession> carried;
+      spent = true; // a fresh start after this one makes its fields again (rare: no copy kept)
+      if (WrapSession::create(std::move(fields), plan, start, carried))
+      {
+        carried->keepEvolver();
+        if (!land(*carried, follow, steps, report.steps))
+        {
+          return Status::failure("aborted");
+        }
+        if (carried->lastGood() < 0)
+        {
+          report.carried = true;
+          session = std::move(carried);
+          return {};
+        }
+        report.fresh = "the carried wrap failed: " + carried->failure();
+      }
+      else
+      {
+        report.fresh = "the carried wrap cannot evolve";
+      }
+    }
+    else
+    {
+      report.fresh = "the target moved out of the carried wrap's field";
+    }
+    report.moved = false;
+  }
+  if (spent)
+  {
+    fields = WrapFields();
+    if (Status made = makeWrapFields(target, plan, progress.stage(0, kFieldsShare), notes, fields);
+        !made)
+    {
+      return made;
+    }
+  }
+  const Status started = startSession(
+    target, plan, std::move(fields), contour, progress.stage(kFieldsShare, kStartShare), session);
+  if (!started)
+  {
+    return started;
+  }
+  session->keepEvolver();
+  if (!session->advanceTo(plan.settings.steps, steps))
+  {
+    return Status::failure("aborted");
+  }
+  report.steps = session->shown(plan.settings.steps);
+  return {};
+}
+
+FollowedWrap followedWrap(const WrapSession& session, int step,
+  std::shared_ptr<const TriangleSoup> target, std::int64_t nextTrack)
+{
+  FollowedWrap followed;
+  followed.target = std::move(target);
+  const WrapSession::Surface surface = session.surface(step);
+  if (!SurfaceMesh::build(surface.points, *surface.cached->triangles, followed.mesh))
+  {
+    followed.nextTrack = nextTrack;
+    return followed; // (the session's surfaces are closed 2-manifolds)
+  }
+  std::vector<TrackId> tracks;
+  std::vector<Vec3> origins;
+  if (!session.released() && session.evolver().mesh().vertexCount() == followed.mesh.vertexCount())
+  {
+    tracks = session.evolver().mesh().vertexValues<TrackId>(kTrackProperty);
+    origins = session.evolver().mesh().vertexValues<Vec3>(kOriginProperty);
+  }
+  followed.displacement.assign(surface.points.size(), Vec3::Zero());
+  for (std::size_t i = 0; i < origins.size() && i < surface.points.size(); ++i)
+  {
+    followed.displacement[i] = surface.points[i] - origins[i];
+  }
+  tracks.resize(surface.points.size());
+  for (TrackId& track : tracks)
+  {
+    if (track.id < 0)
+    {
+      track.id = nextTrack++;
+    }
+  }
+  followed.mesh.addVertexProperty<TrackId>(kTrackProperty, {}).values() = std::move(tracks);
+  followed.mesh.addVertexProperty<Vec3>(kOriginProperty, Vec3::Zero()).values() = surface.points;
+  followed.nextTrack = nextTrack;
+  return followed;
+}
+
+void FrameSchedule::follow(const std::vector<double>& times)
+{
+  if (times != this->Times)
+  {
+    this->Times = times;
+    this->clear();
+  }
+}
+
+int FrameSchedule::frameAt(double time) const
+{
+  const int last = static_cast<int>(this->Times.size()) - 1;
+  if (std::isnan(time))
+  {
+    return last;
+  }
+  const auto after = std::upper_bound(this->Times.begin(), this->Times.end(), time);
+  return std::clamp(static_cast<int>(after - this->Times.begin()) - 1, 0, std::max(last, 0));
+}
+
+int FrameSchedule::next(int wanted) const
+{
+  if (this->done(wanted))
+  {
+    return wanted;
+  }
+  return this->Newest >= 0 && this->Newest < wanted ? this->Newest + 1 : 0;
+}
+
+void FrameSchedule::markDone(int frame)
+{
+  if (frame != this->Newest + 1)
+  {
+    this->Done.clear();
+  }
+  this->Done.insert(frame);
+  this->Newest = frame;
+}
+
+void FrameSchedule::clear()
+{
+  this->Done.clear();
+  this->Newest = -1;
+}
+
+} // namespace shrinkwrap

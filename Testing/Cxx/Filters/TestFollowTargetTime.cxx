@@ -1,0 +1,253 @@
+// Shrink Wrap following a target through time (Time Mode): a sphere that translates gives every
+// vertex the translation as its Displacement and keeps every TrackId; times between frames, before
+// the first and after the last give the frame at or before them, as ParaView's readers do; the
+// frames are computed in order and cached (going back asks the target for that frame alone), a
+// property edit starts the series over, an abort leaves the frames before it cached; a static
+// target still animates its evolution, and Evolution Steps reads a moving target at one time.
+#include "TestUtilities.h"
+#include "vtkShrinkWrapFilter.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyDataAlgorithm.h>
+#include <vtkSphereSource.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkStringArray.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace
+{
+// A sphere of radius 1 at velocity * t, with time steps 0, 1, ..., frames - 1; it records the
+// times it is asked for.
+class MovingSphere : public vtkPolyDataAlgorithm
+{
+public:
+  static MovingSphere* New();
+  vtkTypeMacro(MovingSphere, vtkPolyDataAlgorithm);
+  double Velocity[3] = { 0.1, 0, 0 };
+  int Frames = 5;
+  std::vector<double> Asked;
+
+protected:
+  MovingSphere() { this->SetNumberOfInputPorts(0); }
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    std::vector<double> times(this->Frames);
+    for (int k = 0; k < this->Frames; ++k)
+    {
+      times[k] = k;
+    }
+    vtkInformation* info = out->GetInformationObject(0);
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), this->Frames);
+    const double range[2] = { 0.0, this->Frames - 1.0 };
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+    return 1;
+  }
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  {
+    vtkInformation* info = out->GetInformationObject(0);
+    const double t = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      : 0.0;
+    this->Asked.push_back(t);
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetThetaResolution(32);
+    sphere->SetPhiResolution(32);
+    vtkNew<vtkTransform> move;
+    move->Translate(this->Velocity[0] * t, this->Velocity[1] * t, this->Velocity[2] * t);
+    vtkNew<vtkTransformPolyDataFilter> moved;
+    moved->SetInputConnection(sphere->GetOutputPort());
+    moved->SetTransform(move);
+    moved->Update();
+    vtkPolyData* output = vtkPolyData::GetData(out);
+    output->ShallowCopy(moved->GetOutput());
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
+    return 1;
+  }
+};
+vtkStandardNewMacro(MovingSphere);
+
+// The wrap at time t (through the pipeline, as a view asks for it).
+vtkPolyData* wrapAt(vtkShrinkWrapFilter* wrap, double t)
+{
+  wrap->UpdateTimeStep(t);
+  return vtkPolyData::SafeDownCast(wrap->GetOutputDataObject(0));
+}
+
+double fieldValue(vtkDataObject* data, const char* name)
+{
+  vtkDataArray* a = vtkDataArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
+  return a ? a->GetTuple1(0) : std::nan("");
+}
+
+std::string statusOf(vtkDataObject* data)
+{
+  auto* a = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("Status"));
+  return a ? a->GetValue(0) : "";
+}
+
+std::map<vtkIdType, vtkIdType> tracksOf(vtkPolyData* wrap)
+{
+  std::map<vtkIdType, vtkIdType> tracks; // id -> vertex
+  if (auto* ids = vtkIdTypeArray::SafeDownCast(wrap->GetPointData()->GetArray("TrackId")))
+  {
+    for (vtkIdType i = 0; i < ids->GetNumberOfTuples(); ++i)
+    {
+      tracks[ids->GetValue(i)] = i;
+    }
+  }
+  return tracks;
+}
+
+void translation()
+{
+  vtkNew<MovingSphere> source;
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputConnection(source->GetOutputPort());
+  wrap->UpdateInformation();
+  vtkInformation* out = wrap->GetOutputInformation(0);
+  SW_CHECK(wrap->GetFollowsTarget() == 1 &&
+      out->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) == 5 &&
+      out->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[4] == 4.0,
+    "Automatic follows a target with times: the output's times are the target's");
+
+  vtkNew<vtkPolyData> frame2, frame3;
+  frame2->DeepCopy(wrapAt(wrap, 2));
+  SW_CHECK(source->Asked == std::vector<double>({ 0, 1, 2 }),
+    "frame 2 asked the target for frames 0, 1, 2 in order (asked " << source->Asked.size() << ")");
+  frame3->DeepCopy(wrapAt(wrap, 3));
+  const double edge = wrap->GetChosenEdgeLength();
+  std::cout << "frame 3: " << frame3->GetNumberOfPoints() << " vertices, L " << edge << ", "
+            << statusOf(frame3) << std::endl;
+  SW_CHECK(frame3->GetNumberOfPoints() > 100 && statusOf(frame3) == "ok", "frame 3 wrapped, ok");
+  SW_CHECK(fieldValue(frame3, "Time") == 3.0 &&
+      frame3->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()) == 3.0,
+    "frame 3 stands at time 3");
+
+  // Every vertex moved by the translation (0.1, 0, 0) since frame 2, and kept its track.
+  vtkDataArray* displacement = frame3->GetPointData()->GetArray("Displacement");
+  vtkDataArray* velocity = frame3->GetPointData()->GetArray("Velocity");
+  SW_CHECK(displacement && velocity, "Displacement and Velocity on the wrap");
+  double worst = 0, worstVelocity = 0;
+  for (vtkIdType i = 0; displacement && velocity && i < frame3->GetNumberOfPoints(); ++i)
+  {
+    const double* d = displacement->GetTuple3(i);
+    worst = std::max(worst, std::hypot(d[0] - 0.1, d[1], d[2]));
+    const double* v = velocity->GetTuple3(i);
+    worstVelocity = std::max(worstVelocity, std::hypot(v[0] - 0.1, v[1], v[2]));
+  }
+  const std::map<vtkIdType, vtkIdType> before = tracksOf(frame2), after = tracksOf(frame3);
+  int kept = 0;
+  for (const auto& [id, vertex] : after)
+  {
+    kept += before.count(id);
+  }
+  std::cout << "largest |Displacement - translation| " << worst << " (" << worst / edge
+            << " L), |Velocity - v| " << worstVelocity << "; TrackIds kept " << kept << " of "
+            << after.size() << " (frame 2: " << before.size() << ")" << std::endl;
+  SW_CHECK(worst <= 0.05 * edge, "Displacement equals the translation within 0.05 L everywhere");
+  SW_CHECK(worstVelocity <= 0.05 * edge, "Velocity equals the translation per unit time");
+  SW_CHECK(static_cast<vtkIdType>(after.size()) == frame3->GetNumberOfPoints() &&
+      kept == static_cast<int>(after.size()) && before.size() == after.size(),
+    "every vertex keeps its TrackId (unique ids)");
+
+  // The frame at or before the time asked, as readers give it.
+  const struct
+  {
+    double asked, frame;
+  } times[] = { { 2.5, 2 }, { -1, 0 }, { 10, 4 } };
+  for (const auto& t : times)
+  {
+    vtkPolyData* w = wrapAt(wrap, t.asked);
+    SW_CHECK(fieldValue(w, "Time") == t.frame &&
+        w->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()) == t.frame,
+      "time " << t.asked << " gives frame " << t.frame << " (gave " << fieldValue(w, "Time")
+              << ")");
+  }
+  // Going back: frame 2 from the cache, the target asked for frame 2 alone.
+  source->Asked.clear();
+  vtkPolyData* again = wrapAt(wrap, 2);
+  SW_CHECK(source->Asked == std::vector<double>({ 2 }) &&
+      again->GetNumberOfPoints() == frame2->GetNumberOfPoints() &&
+      again->GetPoint(7)[0] == frame2->GetPoint(7)[0],
+    "going back to frame 2: the cached wrap, the target asked at 2 only");
+  // A property edit starts the series over.
+  source->Asked.clear();
+  wrap->SetSmoothing(wrap->GetSmoothing() * 1.1);
+  wrapAt(wrap, 1);
+  SW_CHECK(source->Asked == std::vector<double>({ 0, 1 }), "an edit starts the series over");
+  // An abort at frame 3 stops the series there; frames 0-2 stay.
+  // Aborted once, at frame 3's first progress event, as a user would (the executive's closing
+  // event must not abort again).
+  struct Abort
+  {
+    MovingSphere* source;
+    bool done = false;
+  } once{ source };
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetClientData(&once);
+  abort->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    auto* a = static_cast<Abort*>(data);
+    if (!a->done && !a->source->Asked.empty() && a->source->Asked.back() == 3)
+    {
+      a->done = true;
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  });
+  const unsigned long observer = wrap->AddObserver(vtkCommand::ProgressEvent, abort);
+  source->Asked.clear();
+  vtkPolyData* aborted = wrapAt(wrap, 4);
+  wrap->RemoveObserver(observer);
+  SW_CHECK(aborted->GetNumberOfPoints() == 0 && source->Asked.size() == 2 &&
+      source->Asked.back() == 3,
+    "an abort at frame 3: an empty output, frame 4 not asked");
+  // (An aborted update's empty output stands until the time asked, a property or an input
+  // changes, as for an aborted evolution.)
+  source->Asked.clear();
+  vtkPolyData* resumed = wrapAt(wrap, 3);
+  SW_CHECK(resumed->GetNumberOfPoints() > 0 && fieldValue(resumed, "Time") == 3 &&
+      std::all_of(source->Asked.begin(), source->Asked.end(), [](double t) { return t == 3; }),
+    "asked again: the series resumes at frame 3 (the target still holds it)");
+}
+
+void staticAndEvolutionSteps()
+{
+  vtkNew<vtkSphereSource> sphere;
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputConnection(sphere->GetOutputPort());
+  wrap->UpdateInformation();
+  vtkInformation* out = wrap->GetOutputInformation(0);
+  SW_CHECK(wrap->GetFollowsTarget() == 0 &&
+      out->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) == wrap->GetNumberOfSteps() + 1,
+    "a static target: its evolution's steps are the times");
+  vtkNew<MovingSphere> source;
+  wrap->SetInputConnection(source->GetOutputPort());
+  wrap->SetTimeMode(vtkShrinkWrapFilter::TIME_EVOLUTION_STEPS);
+  wrap->UpdateInformation();
+  SW_CHECK(wrap->GetFollowsTarget() == 0 &&
+      out->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) == wrap->GetNumberOfSteps() + 1,
+    "Evolution Steps on a moving target: the steps are the times");
+  wrapAt(wrap, 2);
+  SW_CHECK(source->Asked.size() == 1, "... and the target is read once");
+}
+} // namespace
+
+int TestFollowTargetTime(int, char*[])
+{
+  translation();
+  staticAndEvolutionSteps();
+  return testing::finish("TestFollowTargetTime");
+}

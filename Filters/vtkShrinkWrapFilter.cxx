@@ -12,6 +12,7 @@
 #include "Distance/DistanceSource.h"
 #include "Wrap/AutomaticSizes.h"
 
+#include "vtkCommunicator.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
@@ -372,7 +373,8 @@ void vtkShrinkWrapFilter::ExecuteBlocks(vtkCompositeDataSet* blocks,
     return;
   }
   const convert::PieceRequest request = convert::pieceRequest(outInfo);
-  this->Runs->keepBlocksFor(this->SessionKey());
+  // (A followed series keeps its blocks' frames while the pipeline stays: RequestUpdateExtent.)
+  this->Runs->keepBlocksFor(this->FollowsTarget ? this->PipelineTime : this->SessionKey());
   const std::vector<vtkDataSet*> targets = convert::leavesOf(blocks);
   // Shared out once per target and properties, not at every time asked for.
   const std::vector<int> wrappedOn =
@@ -725,6 +727,13 @@ void vtkShrinkWrapFilter::NextFrame(vtkInformation* request, vtkInformationVecto
   if (frame < 0)
   {
     return;
+  }
+  // Every rank goes on to the next frame together (each takes part in gathering the target).
+  if (this->Controller && this->Controller->GetNumberOfProcesses() > 1)
+  {
+    int stopped = this->FrameStopped, anywhere = 0;
+    this->Controller->AllReduce(&stopped, &anywhere, 1, vtkCommunicator::MAX_OP);
+    this->FrameStopped = anywhere != 0;
   }
   if (!this->FrameStopped && !schedule.done(frame))
   {

@@ -247,6 +247,7 @@ int TestPropertyDefaults(int argc, char* argv[])
       { "SetCloseHoles", [&] { return one(w->GetCloseHoles()); } },
       { "SetWrapPerBlock", [&] { return one(w->GetWrapPerBlock()); } },
       { "SetPassTargetArrays", [&] { return one(w->GetPassTargetArrays()); } },
+      { "SetTimeMode", [&] { return one(w->GetTimeMode()); } },
       { "SetRemeshing", [&] { return one(w->GetRemeshing()); } },
       { "SetTargetEdgeLength", [&] { return one(w->GetTargetEdgeLength()); } },
       { "SetEdgeLengthRange",

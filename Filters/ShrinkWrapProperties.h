@@ -81,8 +81,8 @@ const convert::PropertyInfo kInputGeometry{ "InputGeometry", "Input Geometry", "
   vtkInputGeometry::AUTOMATIC, vtkInputGeometry::POLYGONS_AND_POINTS };
 const convert::PropertyInfo kWrapPerBlock{ "WrapPerBlock", "Wrap Per Block", "", 0, 1 };
 const convert::PropertyInfo kPassTargetArrays{ "PassTargetArrays", "Pass Target Arrays", "", 0, 1 };
-const convert::PropertyInfo kTimeMode{ "TimeMode", "Time Mode", "", vtkShrinkWrapFilter::TIME_AUTOMATIC,
-  vtkShrinkWrapFilter::TIME_FOLLOW_TARGET };
+const convert::PropertyInfo kTimeMode{ "TimeMode", "Time Mode", "",
+  vtkShrinkWrapFilter::TIME_AUTOMATIC, vtkShrinkWrapFilter::TIME_FOLLOW_TARGET };
 }
 
 #endif

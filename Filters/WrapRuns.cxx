@@ -245,8 +245,8 @@ void WrapRuns::keepFramesFor(vtkMTimeType key)
 }
 
 bool WrapRuns::startFrame(Run& run, int frame, const WrapInputs& inputs, vtkMTimeType key,
-  int inputGeometry, WrapSettings settings, const Progress& progress, Notes& notes,
-  Status& status, FrameReport& report)
+  int inputGeometry, WrapSettings settings, const Progress& progress, Notes& notes, Status& status,
+  FrameReport& report)
 {
   Run::Series series = std::move(run.series);
   if (series.newestFrame != frame - 1)

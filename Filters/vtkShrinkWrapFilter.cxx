@@ -16,11 +16,11 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
-#include "vtkDemandDrivenPipeline.h"
-#include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -201,16 +201,16 @@ int vtkShrinkWrapFilter::RequestInformation(
   // Every evolution step is a time step of both outputs, or every frame of the target.
   vtkInformation* in = inputVector[0]->GetInformationObject(0);
   const int frames = in ? in->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) : 0;
-  this->FollowsTarget = this->TimeMode == TIME_FOLLOW_TARGET ||
-    (this->TimeMode == TIME_AUTOMATIC && frames > 0);
+  this->FollowsTarget =
+    this->TimeMode == TIME_FOLLOW_TARGET || (this->TimeMode == TIME_AUTOMATIC && frames > 0);
   std::vector<double> times;
   if (frames > 0)
   {
     const double* t = in->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
     times.assign(t, t + frames);
   }
-  this->Runs->frames().follow(this->FollowsTarget && times.empty() ? std::vector<double>{ 0.0 }
-                                                                 : times);
+  this->Runs->frames().follow(
+    this->FollowsTarget && times.empty() ? std::vector<double>{ 0.0 } : times);
   for (int port = 0; port < 2; ++port)
   {
     vtkInformation* out = outputVector->GetInformationObject(port);
@@ -597,8 +597,8 @@ void vtkShrinkWrapFilter::ExecuteFrame(unsigned int slot, const convert::WrapInp
 {
   const int frame = this->FrameAsked;
   const FrameSchedule& schedule = this->Runs->frames();
-  const bool timed = schedule.times().size() > 1 || this->GetInputInformation(0, 0)->Has(
-                                                       vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  const bool timed = schedule.times().size() > 1 ||
+    this->GetInputInformation(0, 0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   const double time = timed ? schedule.times()[frame] : 0;
   convert::WrapRuns::Run& run = this->Runs->run(slot);
   Notes notes;
@@ -645,8 +645,8 @@ void vtkShrinkWrapFilter::ExecuteFrame(unsigned int slot, const convert::WrapInp
       });
       return closeness;
     };
-    const Status written = convert::writeWrap(*run.session, report.steps, this->TimePerStep,
-      run.seconds, wanted, output, notes, measure);
+    const Status written = convert::writeWrap(
+      *run.session, report.steps, this->TimePerStep, run.seconds, wanted, output, notes, measure);
     if (!written || !wrap)
     {
       this->FrameStopped = true;
@@ -658,15 +658,20 @@ void vtkShrinkWrapFilter::ExecuteFrame(unsigned int slot, const convert::WrapInp
     setField(output, "Time", time);
     if (!report.fresh.empty())
     {
-      auto* statuses = vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("Status"));
+      auto* statuses =
+        vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("Status"));
       if (statuses && statuses->GetValue(0) == "ok")
       {
         statuses->SetValue(0, "started afresh: " + report.fresh);
       }
-      warn(notes, "Frame " + std::to_string(frame) + " started afresh: " + report.fresh +
+      warn(notes,
+        "Frame " + std::to_string(frame) + " started afresh: " + report.fresh +
           " (its vertices get new TrackIds)");
     }
-    this->CarryAndMeasure(slot, inputs.target, nullptr, *wrap, true, wanted, output, measured, notes);
+    // The largest distance over the target's surface for the frame asked for (frames on the way to
+    // it go without: its search is the costliest part of the measuring).
+    this->CarryAndMeasure(
+      slot, inputs.target, nullptr, *wrap, wanted, wanted, output, measured, notes);
     convert::report(this, "Shrink Wrap", notes);
     this->ShowSizes(run.session->plan().sizes());
     run.series.frames[frame] = { copyOf(output), copyOf(measured) };
@@ -691,8 +696,8 @@ void vtkShrinkWrapFilter::ExecuteFrame(unsigned int slot, const convert::WrapInp
       target->polygons ? convert::makeCarrier(whole, target->polygons, nullptr) : nullptr;
     std::vector<std::string> renamed;
     onAllCores([&] {
-      convert::passTargetArrays(whole, carrier.get(),
-        target->polygons ? nullptr : target->points.get(), output, renamed);
+      convert::passTargetArrays(
+        whole, carrier.get(), target->polygons ? nullptr : target->points.get(), output, renamed);
     });
   }
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
@@ -711,8 +716,8 @@ void vtkShrinkWrapFilter::ThinFrames(unsigned int slot)
   {
     total += kib(f.second);
   }
-  for (auto f = std::next(frames.begin()); total > this->CacheMemoryMiB * 1024 && frames.size() > 2 &&
-       f != std::prev(frames.end());)
+  for (auto f = std::next(frames.begin());
+       total > this->CacheMemoryMiB * 1024 && frames.size() > 2 && f != std::prev(frames.end());)
   {
     total -= kib(f->second);
     this->Runs->frames().forget(f->first);

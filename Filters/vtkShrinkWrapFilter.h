@@ -6,9 +6,10 @@
  * evolves by eq. (2), dF/dt = eps(d) Laplace-Beltrami(F) + eta(d) N + v_T, towards the target's
  * distance d, remeshed after every step. Every step is a time step of the output: the filter
  * advertises the times {0, tau, ..., N_t tau} and returns the surface at the time asked (the last
- * one when none is asked). Computed steps are cached: going back is instant, going forward resumes
- * from the newest cached step; a change of an input or a property drops the cache. An aborted run
- * leaves an empty output and its steps cached.
+ * one when none is asked); a target with times of its own is followed instead (below). Computed
+ * steps are cached: going back is instant, going forward resumes from the newest cached step; a
+ * change of an input or a property drops the cache. An aborted run leaves an empty output and its
+ * steps cached.
  *
  * Inputs: port 0, the target: polygons, or any dataset with cells (its outer surface), or points
  * (InputGeometry); it may also hold the target's distance field (an image with SignedDistance, as
@@ -34,6 +35,15 @@
  * from the wrap: what the wrap bridged or cut off) and, at the last step, field data
  * LargestDistanceToWrap (over the whole surface: inside a large triangle it exceeds the largest at
  * the points).
+ *
+ * Time (TimeMode): a target with time steps is followed by default: the output's times are the
+ * target's, frame k's wrap starts from frame k - 1's carried with the target (where its triangles
+ * stay the same) and evolves until it lands, and the output gets point arrays TrackId (a vertex
+ * keeps its id from frame to frame; a split makes a new one), Displacement (since the previous
+ * frame, target units) and Velocity (Displacement over the frames' time difference). A frame the
+ * carried wrap cannot follow starts afresh (Status "started afresh: ..."). The frames up to the one
+ * asked for are computed in order (the pipeline runs once per frame: CONTINUE_EXECUTING) and
+ * cached within Cache Memory; a property change starts the series over.
  *
  * The properties are those of the panel, whose documentation (Plugin/ShrinkWrap.xml) is the
  * reference: the defaults come from the core's settings (Wrap/WrapSettings.h), where they are

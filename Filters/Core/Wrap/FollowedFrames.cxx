@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <utility>
 
 namespace shrinkwrap
@@ -34,6 +36,45 @@ bool inside(const Box& domain, const std::vector<Vec3>& points)
     points.begin(), points.end(), [&](const Vec3& p) { return domain.squaredDistance(p) == 0; });
 }
 
+// The largest ratio of an edge's length after the carry to before (or before to after).
+double stretch(const SurfaceMesh& mesh, const std::vector<Vec3>& before)
+{
+  double most = 1;
+  for (const auto& t : mesh.triangles())
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = t[k], b = t[(k + 1) % 3];
+      const double now = (mesh.points()[a] - mesh.points()[b]).norm();
+      const double was = (before[a] - before[b]).norm();
+      most = std::max(most, std::max(now, was) / std::max(std::min(now, was), 1e-300));
+    }
+  }
+  return most;
+}
+
+// How far the vertices of the session's current surface lie from the target closed over its gaps
+// (what the wrap lands on): on average and the largest, in cells of the field.
+struct Off
+{
+  double mean = 0, largest = 0;
+};
+Off offTarget(const WrapSession& session)
+{
+  const WrapSession::Surface surface = session.surface(session.computedSteps());
+  Off off;
+  for (const Vec3& x : surface.points)
+  {
+    const double d = std::abs(session.fields().driving.sample(x).value);
+    off.mean += d;
+    off.largest = std::max(off.largest, d);
+  }
+  const double cell = session.plan().lattice.spacing.maxCoeff();
+  off.mean /= std::max<std::size_t>(surface.points.size(), 1) * cell;
+  off.largest /= cell;
+  return off;
+}
+
 // Whether the carried start lies on the target already: 95% of its vertices within
 // follow.carriedCells cells of it.
 bool landedAsCarried(const WrapSession& session, const FollowSettings& follow)
@@ -53,14 +94,16 @@ bool landedAsCarried(const WrapSession& session, const FollowSettings& follow)
 
 // Steps a carried start until it lands (FollowSettings); false when progress asked to stop. A
 // failed step leaves the session's lastGood() set.
-bool land(WrapSession& session, const FollowSettings& follow, const Progress& progress, int& steps)
+bool land(WrapSession& session, const FollowSettings& follow, bool kept, const Progress& progress,
+  int& steps)
 {
   steps = 0;
-  if (landedAsCarried(session, follow))
+  if (kept && landedAsCarried(session, follow))
   {
     return true;
   }
   const int most = session.plan().settings.steps;
+  double before = std::numeric_limits<double>::infinity(); // the largest off, a step before
   for (steps = 1; steps <= most; ++steps)
   {
     if (!session.advanceTo(steps, progress.stage(double(steps - 1) / most, double(steps) / most)))
@@ -71,11 +114,15 @@ bool land(WrapSession& session, const FollowSettings& follow, const Progress& pr
     {
       return true;
     }
+    // Still on average, and landed everywhere or no nearer where it is farthest.
+    const double off = offTarget(session).largest;
     const std::optional<double> motion = session.meanMotion(steps);
-    if (steps >= follow.minSteps && motion && *motion < follow.landedCells)
+    if (steps >= follow.minSteps && motion && *motion < follow.stillCells &&
+      (off <= follow.landedCells || off > follow.stall * before))
     {
       return true;
     }
+    before = off;
   }
   steps = most;
   return true;
@@ -97,8 +144,8 @@ bool carryWithTarget(
     {
       const ClosestHit hit = tree.closestPoint(from[i]);
       const auto& t = before.triangles[hit.triangle];
-      const std::array<double, 3> w = barycentric(
-        hit.point, before.points[t[0]], before.points[t[1]], before.points[t[2]]);
+      const std::array<double, 3> w =
+        barycentric(hit.point, before.points[t[0]], before.points[t[1]], before.points[t[2]]);
       const Vec3 foot =
         w[0] * after.points[t[0]] + w[1] * after.points[t[1]] + w[2] * after.points[t[2]];
       const Vec3 n0 = unitNormal(before.points[t[0]], before.points[t[1]], before.points[t[2]]);
@@ -136,6 +183,22 @@ Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedW
     {
       holdNewCrossings(before, start.points(), start.triangles());
     }
+    // Onto this frame's target (closed over its gaps) along its gradient, where that does not
+    // make the surface pass through itself.
+    const std::vector<Vec3> carried = start.points();
+    for (int pass = 0; pass < follow.projections; ++pass)
+    {
+      parallelFor(0, static_cast<Index>(carried.size()), kQueryGrain, [&](Index b, Index e) {
+        for (Index i = b; i < e; ++i)
+        {
+          Vec3& x = start.points()[i];
+          const DistanceSample d = fields.driving.sample(x);
+          x -= d.value * d.gradient;
+        }
+      });
+    }
+    holdNewCrossings(carried, start.points(), start.triangles());
+    const bool kept = stretch(start, before) <= follow.stretch; // its edges as they were
     if (inside(fields.driving.grid().lattice().bounds(), start.points()))
     {
       std::unique_ptr<WrapSession> carried;
@@ -143,17 +206,24 @@ Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedW
       if (WrapSession::create(std::move(fields), plan, start, carried))
       {
         carried->keepEvolver();
-        if (!land(*carried, follow, steps, report.steps))
+        if (!land(*carried, follow, kept, steps, report.steps))
         {
           return Status::failure("aborted");
         }
-        if (carried->lastGood() < 0)
+        const double off = carried->lastGood() < 0 ? offTarget(*carried).largest : 0;
+        if (carried->lastGood() < 0 && off <= follow.fitCells)
         {
           report.carried = true;
           session = std::move(carried);
           return {};
         }
-        report.fresh = "the carried wrap failed: " + carried->failure();
+        char why[200];
+        std::snprintf(why, sizeof why,
+          "the carried wrap lies up to %.3g cells off the target (parts came apart, or a hole "
+          "opened)",
+          off);
+        report.fresh = carried->lastGood() >= 0 ? "the carried wrap failed: " + carried->failure()
+                                                : std::string(why);
       }
       else
       {

@@ -1,9 +1,10 @@
 // A wrap that follows a target through time: frame k's wrap starts from frame k - 1's, carried with
-// the target's own motion where its triangles correspond (the same triangles on points that moved),
-// and evolves until it lands; the first frame, and a frame the carried wrap cannot follow, start as
-// a single wrap does. Every vertex keeps a track id from frame to frame (a split makes a new one,
-// a collapse keeps the survivor's), and the place it was carried from, so that its displacement
-// since the previous frame is its own motion plus the remeshing's slide along the surface.
+// the target's own motion where its triangles correspond (the same triangles on points that moved)
+// and projected onto the frame's target, and evolves until it lands; the first frame, and a frame
+// the carried wrap cannot follow, start as a single wrap does. Every vertex keeps a track id from
+// frame to frame (a split makes a new one, a collapse keeps the survivor's), and the place it was
+// carried from, so that its displacement since the previous frame is its own motion plus the
+// remeshing's slide along the surface.
 #ifndef ShrinkWrap_FollowedFrames_h
 #define ShrinkWrap_FollowedFrames_h
 
@@ -83,11 +84,22 @@ struct FollowSettings
   // A carried start takes no step when 95% of its vertices lie this near the target, in cells of
   // the field (a fresh wrap's lie within about 0.05).
   double carriedCells = 0.1;
-  // A carried frame's steps end when the surface moved less than this on average in a step, in
-  // cells of the field (WrapSession::meanMotion), after at least minSteps; at most the wrap's
-  // Number Of Steps.
-  double landedCells = 0.02;
-  int minSteps = 2;
+  // Newton steps x -= d grad d that bring the carried start onto the frame's target first.
+  int projections = 2;
+  // ... and the carry kept its edges within this ratio of their lengths.
+  double stretch = 1.2;
+  // A carried wrap that lands with a vertex farther than this from the target closed over its
+  // gaps, in cells, does not fit the frame (parts came apart, a hole opened): the frame starts
+  // afresh.
+  double fitCells = 1.5;
+  // A carried frame's steps end, after at least minSteps and at most the wrap's Number Of Steps,
+  // when a step moved the surface less than stillCells cells on average (WrapSession::meanMotion)
+  // and every vertex lies within landedCells cells of the target closed over its gaps, or the
+  // farthest came no nearer than `stall` times its distance.
+  double stillCells = 0.02;
+  double landedCells = 0.5;
+  double stall = 0.95;
+  int minSteps = 6;
 };
 
 // How a frame was wrapped.

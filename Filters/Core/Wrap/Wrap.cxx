@@ -58,8 +58,8 @@ Status startWrap(const WrapTarget& target, const WrapPlan& plan, const Contour& 
   notes.insert(notes.end(), plan.notes.begin(), plan.notes.end());
   WrapFields fields;
   const Status made = makeWrapFields(target, plan, progress.stage(0, kFieldsShare), notes, fields);
-  return made ? startSession(
-                  target, plan, std::move(fields), contour, progress.stage(kFieldsShare, 1), session)
+  return made ? startSession(target, plan, std::move(fields), contour,
+                  progress.stage(kFieldsShare, 1), session)
               : made;
 }
 

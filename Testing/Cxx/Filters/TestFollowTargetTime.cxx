@@ -43,7 +43,8 @@ public:
 
 protected:
   MovingSphere() { this->SetNumberOfInputPorts(0); }
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  int RequestInformation(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
   {
     std::vector<double> times(this->Frames);
     for (int k = 0; k < this->Frames; ++k)
@@ -211,8 +212,8 @@ void translation()
   source->Asked.clear();
   vtkPolyData* aborted = wrapAt(wrap, 4);
   wrap->RemoveObserver(observer);
-  SW_CHECK(aborted->GetNumberOfPoints() == 0 && source->Asked.size() == 2 &&
-      source->Asked.back() == 3,
+  SW_CHECK(
+    aborted->GetNumberOfPoints() == 0 && source->Asked.size() == 2 && source->Asked.back() == 3,
     "an abort at frame 3: an empty output, frame 4 not asked");
   // (An aborted update's empty output stands until the time asked, a property or an input
   // changes, as for an aborted evolution.)

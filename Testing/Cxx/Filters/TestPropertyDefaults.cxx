@@ -1,5 +1,5 @@
-// The panel (Plugin/ShrinkWrap.xml, which ParaView pushes to a new filter, and whose documentation is
-// the parameter reference) against the filters: every settable property's default equals the
+// The panel (Plugin/ShrinkWrap.xml, which ParaView pushes to a new filter, and whose documentation
+// is the parameter reference) against the filters: every settable property's default equals the
 // filter's own (which come from the core's settings structs), and its name, label, the unit its
 // documentation states and the range its domain allows are those the filter describes and checks
 // (DescribeProperties, CheckProperties). A default, a label or a
@@ -122,7 +122,7 @@ std::vector<XmlProperty> xmlProperties(const std::string& xml, const std::string
   auto attribute = [](const std::string& tag, const char* key) {
     std::smatch m;
     return std::regex_search(tag, m, std::regex(std::string(key) + R"x(="([^"]*)")x")) ? m[1].str()
-                                                                                      : "";
+                                                                                       : "";
   };
   for (auto it = std::sregex_iterator(proxy.begin(), proxy.end(), element);
        it != std::sregex_iterator(); ++it)
@@ -159,10 +159,11 @@ void compareTerms(const std::string& proxy, const std::vector<XmlProperty>& xml,
     {
       continue;
     }
-    SW_CHECK(p.command == "Set" + p.name, proxy << ": " << p.name << " is set by Set" << p.name
-                                               << ", not " << p.command);
+    SW_CHECK(p.command == "Set" + p.name,
+      proxy << ": " << p.name << " is set by Set" << p.name << ", not " << p.command);
     SW_CHECK(p.label == d->label,
-      proxy << ": " << p.name << "'s label is '" << p.label << "', the filter's '" << d->label << "'");
+      proxy << ": " << p.name << "'s label is '" << p.label << "', the filter's '" << d->label
+            << "'");
     SW_CHECK(p.documentation.find(d->unit) != std::string::npos,
       proxy << ": " << p.name << "'s documentation states its unit, " << d->unit);
     const double lowest = p.min, highest = p.max; // what the filter refuses is what the panel does
@@ -256,8 +257,10 @@ int TestPropertyDefaults(int argc, char* argv[])
           return std::vector<double>(r, r + 2);
         } },
       { "SetTangentialRedistribution", [&] { return one(w->GetTangentialRedistribution()); } },
-      { "SetSmoothing", [&] { return one(w->GetSmoothing()); } }, { "SetSmoothingFalloff", [&] { return one(w->GetSmoothingFalloff()); } },
-      { "SetAdvectionSpeed", [&] { return one(w->GetAdvectionSpeed()); } }, { "SetConcavityPush", [&] { return one(w->GetConcavityPush()); } },
+      { "SetSmoothing", [&] { return one(w->GetSmoothing()); } },
+      { "SetSmoothingFalloff", [&] { return one(w->GetSmoothingFalloff()); } },
+      { "SetAdvectionSpeed", [&] { return one(w->GetAdvectionSpeed()); } },
+      { "SetConcavityPush", [&] { return one(w->GetConcavityPush()); } },
       { "SetAngleWeight", [&] { return one(w->GetAngleWeight()); } },
       { "SetVolumeWeight", [&] { return one(w->GetVolumeWeight()); } },
       { "SetDistanceWeighting", [&] { return one(w->GetDistanceWeighting()); } },

@@ -34,6 +34,8 @@ for k, t in enumerate(times):
     source.SetUResolution(60)
     source.SetVResolution(30)
     closed = vtkCleanPolyData()  # the parametric seam's points merged: a closed torus
+    closed.ToleranceIsAbsoluteOn()
+    closed.SetAbsoluteTolerance(1e-6)
     closed.SetInputConnection(source.GetOutputPort())
     triangles = vtkTriangleFilter()
     triangles.SetInputConnection(closed.GetOutputPort())

@@ -75,33 +75,27 @@ Off offTarget(const WrapSession& session)
   return off;
 }
 
-// Whether the carried start lies on the target already: 95% of its vertices within
+// Whether `points` lie on the target already (what the wrap lands on: `field`): 95% within
 // follow.carriedCells cells of it.
-bool landedAsCarried(const WrapSession& session, const FollowSettings& follow)
+bool onTarget(const std::vector<Vec3>& points, const TargetDistance& field, double cell,
+  const FollowSettings& follow)
 {
-  const std::vector<DistanceSample>& samples = session.targetSamples(session.surface(0));
-  if (samples.empty())
+  if (points.empty())
   {
     return false;
   }
-  std::vector<double> d(samples.size());
-  std::transform(samples.begin(), samples.end(), d.begin(),
-    [](const DistanceSample& s) { return std::abs(s.value); });
+  std::vector<double> d(points.size());
+  std::transform(points.begin(), points.end(), d.begin(),
+    [&](const Vec3& x) { return std::abs(field.sample(x).value); });
   const auto rank = d.begin() + static_cast<std::ptrdiff_t>(0.95 * (d.size() - 1));
   std::nth_element(d.begin(), rank, d.end());
-  return *rank <= follow.carriedCells * session.plan().lattice.spacing.maxCoeff();
+  return *rank <= follow.carriedCells * cell;
 }
 
 // Steps a carried start until it lands (FollowSettings); false when progress asked to stop. A
 // failed step leaves the session's lastGood() set.
-bool land(WrapSession& session, const FollowSettings& follow, bool kept, const Progress& progress,
-  int& steps)
+bool land(WrapSession& session, const FollowSettings& follow, const Progress& progress, int& steps)
 {
-  steps = 0;
-  if (kept && landedAsCarried(session, follow))
-  {
-    return true;
-  }
   const int most = session.plan().settings.steps;
   double before = std::numeric_limits<double>::infinity(); // the largest off, a step before
   for (steps = 1; steps <= most; ++steps)
@@ -183,12 +177,16 @@ Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedW
     {
       holdNewCrossings(before, start.points(), start.triangles());
     }
-    // Onto this frame's target (closed over its gaps) along its gradient, where that does not
-    // make the surface pass through itself.
-    const std::vector<Vec3> carried = start.points();
-    for (int pass = 0; pass < follow.projections; ++pass)
+    // Landed as carried (on the target, its edges as they were): no step. Else onto this frame's
+    // target (closed over its gaps) along its gradient first, where that does not make the
+    // surface pass through itself.
+    const double cell = plan.lattice.spacing.maxCoeff();
+    const bool landed = stretch(start, before) <= follow.stretch &&
+      onTarget(start.points(), fields.driving, cell, follow);
+    const std::vector<Vec3> unprojected = start.points();
+    for (int pass = 0; !landed && pass < follow.projections; ++pass)
     {
-      parallelFor(0, static_cast<Index>(carried.size()), kQueryGrain, [&](Index b, Index e) {
+      parallelFor(0, static_cast<Index>(unprojected.size()), kQueryGrain, [&](Index b, Index e) {
         for (Index i = b; i < e; ++i)
         {
           Vec3& x = start.points()[i];
@@ -197,8 +195,10 @@ Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedW
         }
       });
     }
-    holdNewCrossings(carried, start.points(), start.triangles());
-    const bool kept = stretch(start, before) <= follow.stretch; // its edges as they were
+    if (!landed)
+    {
+      holdNewCrossings(unprojected, start.points(), start.triangles());
+    }
     if (inside(fields.driving.grid().lattice().bounds(), start.points()))
     {
       std::unique_ptr<WrapSession> carried;
@@ -206,7 +206,8 @@ Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedW
       if (WrapSession::create(std::move(fields), plan, start, carried))
       {
         carried->keepEvolver();
-        if (!land(*carried, follow, kept, steps, report.steps))
+        report.steps = 0;
+        if (!landed && !land(*carried, follow, steps, report.steps))
         {
           return Status::failure("aborted");
         }

@@ -13,6 +13,7 @@
 // the analytic motion: twist and apart, |D - D_true| over |D_true| on average, D_true the motion
 // of the target's point under the vertex; blobs, the component along the normal (the surface's
 // motion along its normal is all a contour defines). Times: the whole series, both ways.
+#include "SeriesSource.h"
 #include "TestUtilities.h"
 #include "WrapEvaluation.h"
 #include "vtkShrinkWrapFilter.h"
@@ -53,46 +54,7 @@ double seconds(const std::chrono::steady_clock::time_point& begin)
 
 // A series: the target at frame k of n.
 using Frame = std::function<vtkSmartPointer<vtkPolyData>(int k)>;
-
-// A source whose time steps are 0, 1, ..., n - 1 and whose output at time t is frame(t).
-class SeriesSource : public vtkPolyDataAlgorithm
-{
-public:
-  static SeriesSource* New();
-  vtkTypeMacro(SeriesSource, vtkPolyDataAlgorithm);
-  Frame Make;
-  int Frames = 0;
-
-protected:
-  SeriesSource() { this->SetNumberOfInputPorts(0); }
-  int RequestInformation(
-    vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
-  {
-    std::vector<double> times(this->Frames);
-    for (int k = 0; k < this->Frames; ++k)
-    {
-      times[k] = k;
-    }
-    vtkInformation* info = out->GetInformationObject(0);
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), this->Frames);
-    const double range[2] = { 0.0, this->Frames - 1.0 };
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-    return 1;
-  }
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
-  {
-    vtkInformation* info = out->GetInformationObject(0);
-    const double t = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-      ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-      : 0.0;
-    const int k = std::clamp(static_cast<int>(std::lround(t)), 0, this->Frames - 1);
-    vtkPolyData* output = vtkPolyData::GetData(out);
-    output->ShallowCopy(this->Make(k));
-    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), double(k));
-    return 1;
-  }
-};
-vtkStandardNewMacro(SeriesSource);
+using testing::SeriesSource;
 
 vtkSmartPointer<vtkPolyData> withPoints(vtkPolyData* mesh, const std::vector<Vec3>& x)
 {

@@ -8,17 +8,16 @@ $SHRINKWRAP_FRAMES/checks.txt ("ok ..." or "FAIL ..." lines), and ParaView's tes
 final view with Testing/Baseline/GuiFollowEnd.png. A Python error leaves the view empty and the
 comparison fails.
 """
-import math
 import os
+import sys
 import traceback
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
-from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkTriangleFilter
-from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+# The test helpers (a --script has no __file__ to find them by).
+sys.path.insert(0, os.environ["SHRINKWRAP_PYTHON"])
+from series import torus, write_series  # noqa: E402
 
 FRAMES = 12
 
@@ -28,50 +27,13 @@ def bent(x, y, z, phase):
     return (x + 1.2 * phase, y, z + 0.6 * phase * x * x)
 
 
-def write_series(folder):
-    torus = vtkParametricTorus()
-    torus.SetRingRadius(1.0)
-    torus.SetCrossSectionRadius(0.35)
-    source = vtkParametricFunctionSource()
-    source.SetParametricFunction(torus)
-    source.SetUResolution(72)
-    source.SetVResolution(24)
-    closed = vtkCleanPolyData()  # the parametric seam's points merged: a closed torus
-    closed.ToleranceIsAbsoluteOn()
-    closed.SetAbsoluteTolerance(1e-6)
-    closed.SetInputConnection(source.GetOutputPort())
-    triangles = vtkTriangleFilter()
-    triangles.SetInputConnection(closed.GetOutputPort())
-    triangles.Update()
-    rest = triangles.GetOutput()
-    entries = []
-    for k in range(FRAMES):
-        frame = rest.NewInstance()
-        frame.DeepCopy(rest)
-        points = vtkPoints()
-        for i in range(rest.GetNumberOfPoints()):
-            points.InsertNextPoint(bent(*rest.GetPoint(i), k / (FRAMES - 1)))
-        frame.SetPoints(points)
-        writer = vtkXMLPolyDataWriter()
-        writer.SetInputData(frame)
-        writer.SetDataModeToAscii()  # raw appended data does not read back under newer Expat
-        name = "bent_%02d.vtp" % k
-        writer.SetFileName(os.path.join(folder, name))
-        writer.Write()
-        entries.append('    <DataSet timestep="%g" file="%s"/>' % (k, name))
-    series = os.path.join(folder, "bent.pvd")
-    with open(series, "w") as pvd:
-        pvd.write('<VTKFile type="Collection" version="0.1">\n  <Collection>\n%s\n  </Collection>\n'
-                  "</VTKFile>\n" % "\n".join(entries))
-    return series
-
-
 frames = os.environ["SHRINKWRAP_FRAMES"]
 os.makedirs(frames, exist_ok=True)
 checks = []
 try:
     GetLayout().SetSize(600, 400)
-    reader = OpenDataFile(write_series(frames))
+    reader = OpenDataFile(write_series(frames, "bent", torus(0.35, 72, 24), range(FRAMES),
+                                       lambda p, k: bent(*p, k / (FRAMES - 1))))
     wrap = ShrinkWrap(Input=reader)
     view = GetActiveView()
     view.OrientationAxesVisibility = 0

@@ -4,58 +4,22 @@ four torus frames at times 0, 10, 20 and 30, moving along x by 0.2 a frame.
 Usage: pvpython TestFollowTime.py <ShrinkWrap plugin .so> <unused mesh>
 """
 import math
-import os
 import shutil
 import sys
 import tempfile
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
-from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
-from vtkmodules.vtkCommonTransforms import vtkTransform
-from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkTriangleFilter
-from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
-from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 from checks import check, finish
+from series import torus, write_series
 
 plugin = sys.argv[1]
 folder = tempfile.mkdtemp(prefix="shrinkwrap_series_")
 times = [0, 10, 20, 30]
 shift = 0.2
-entries = []
-for k, t in enumerate(times):
-    torus = vtkParametricTorus()
-    torus.SetRingRadius(1.0)
-    torus.SetCrossSectionRadius(0.4)
-    source = vtkParametricFunctionSource()
-    source.SetParametricFunction(torus)
-    source.SetUResolution(60)
-    source.SetVResolution(30)
-    closed = vtkCleanPolyData()  # the parametric seam's points merged: a closed torus
-    closed.ToleranceIsAbsoluteOn()
-    closed.SetAbsoluteTolerance(1e-6)
-    closed.SetInputConnection(source.GetOutputPort())
-    triangles = vtkTriangleFilter()
-    triangles.SetInputConnection(closed.GetOutputPort())
-    move = vtkTransform()
-    move.Translate(shift * k, 0, 0)
-    moved = vtkTransformPolyDataFilter()
-    moved.SetInputConnection(triangles.GetOutputPort())
-    moved.SetTransform(move)
-    writer = vtkXMLPolyDataWriter()
-    writer.SetInputConnection(moved.GetOutputPort())
-    name = "torus_%d.vtp" % k
-    writer.SetFileName(os.path.join(folder, name))
-    writer.SetDataModeToAscii()
-    writer.Write()
-    del writer
-    entries.append('    <DataSet timestep="%g" file="%s"/>' % (t, name))
-series = os.path.join(folder, "torus.pvd")
-with open(series, "w") as pvd:
-    pvd.write('<VTKFile type="Collection" version="0.1">\n  <Collection>\n%s\n  </Collection>\n'
-              "</VTKFile>\n" % "\n".join(entries))
+series = write_series(folder, "torus", torus(0.4, 60, 30), times,
+                      lambda p, k: (p[0] + shift * k, p[1], p[2]))
 
 LoadPlugin(plugin, ns=globals())
 reader = OpenDataFile(series)

@@ -4,6 +4,7 @@
 // frames are computed in order and cached (going back asks the target for that frame alone), a
 // property edit starts the series over, an abort leaves the frames before it cached; a static
 // target still animates its evolution, and Evolution Steps reads a moving target at one time.
+#include "SeriesSource.h"
 #include "TestUtilities.h"
 #include "vtkShrinkWrapFilter.h"
 
@@ -30,56 +31,28 @@
 
 namespace
 {
-// A sphere of radius 1 at velocity * t, with time steps 0, 1, ..., frames - 1; it records the
-// times it is asked for.
-class MovingSphere : public vtkPolyDataAlgorithm
+// A sphere of radius 1 at (0.1, 0, 0) t, t = 0, 1, ..., 4.
+vtkSmartPointer<vtkPolyData> movedSphere(int t)
 {
-public:
-  static MovingSphere* New();
-  vtkTypeMacro(MovingSphere, vtkPolyDataAlgorithm);
-  double Velocity[3] = { 0.1, 0, 0 };
-  int Frames = 5;
-  std::vector<double> Asked;
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(32);
+  vtkNew<vtkTransform> move;
+  move->Translate(0.1 * t, 0, 0);
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetInputConnection(sphere->GetOutputPort());
+  moved->SetTransform(move);
+  moved->Update();
+  return moved->GetOutput();
+}
 
-protected:
-  MovingSphere() { this->SetNumberOfInputPorts(0); }
-  int RequestInformation(
-    vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
-  {
-    std::vector<double> times(this->Frames);
-    for (int k = 0; k < this->Frames; ++k)
-    {
-      times[k] = k;
-    }
-    vtkInformation* info = out->GetInformationObject(0);
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), this->Frames);
-    const double range[2] = { 0.0, this->Frames - 1.0 };
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-    return 1;
-  }
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
-  {
-    vtkInformation* info = out->GetInformationObject(0);
-    const double t = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-      ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-      : 0.0;
-    this->Asked.push_back(t);
-    vtkNew<vtkSphereSource> sphere;
-    sphere->SetThetaResolution(32);
-    sphere->SetPhiResolution(32);
-    vtkNew<vtkTransform> move;
-    move->Translate(this->Velocity[0] * t, this->Velocity[1] * t, this->Velocity[2] * t);
-    vtkNew<vtkTransformPolyDataFilter> moved;
-    moved->SetInputConnection(sphere->GetOutputPort());
-    moved->SetTransform(move);
-    moved->Update();
-    vtkPolyData* output = vtkPolyData::GetData(out);
-    output->ShallowCopy(moved->GetOutput());
-    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
-    return 1;
-  }
-};
-vtkStandardNewMacro(MovingSphere);
+vtkSmartPointer<testing::SeriesSource> movingSphere()
+{
+  auto source = vtkSmartPointer<testing::SeriesSource>::New();
+  source->Make = movedSphere;
+  source->Frames = 5;
+  return source;
+}
 
 // The wrap at time t (through the pipeline, as a view asks for it).
 vtkPolyData* wrapAt(vtkShrinkWrapFilter* wrap, double t)
@@ -115,7 +88,7 @@ std::map<vtkIdType, vtkIdType> tracksOf(vtkPolyData* wrap)
 
 void translation()
 {
-  vtkNew<MovingSphere> source;
+  vtkSmartPointer<testing::SeriesSource> source = movingSphere();
   vtkNew<vtkShrinkWrapFilter> wrap;
   wrap->SetInputConnection(source->GetOutputPort());
   wrap->UpdateInformation();
@@ -195,9 +168,9 @@ void translation()
   // event must not abort again).
   struct Abort
   {
-    MovingSphere* source;
+    testing::SeriesSource* source;
     bool done = false;
-  } once{ source };
+  } once{ source.Get() };
   vtkNew<vtkCallbackCommand> abort;
   abort->SetClientData(&once);
   abort->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
@@ -234,7 +207,7 @@ void staticAndEvolutionSteps()
   SW_CHECK(wrap->GetFollowsTarget() == 0 &&
       out->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) == wrap->GetNumberOfSteps() + 1,
     "a static target: its evolution's steps are the times");
-  vtkNew<MovingSphere> source;
+  vtkSmartPointer<testing::SeriesSource> source = movingSphere();
   wrap->SetInputConnection(source->GetOutputPort());
   wrap->SetTimeMode(vtkShrinkWrapFilter::TIME_EVOLUTION_STEPS);
   wrap->UpdateInformation();

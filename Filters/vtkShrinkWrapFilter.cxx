@@ -497,19 +497,8 @@ void vtkShrinkWrapFilter::Execute(unsigned int slot, const convert::WrapInputs& 
     }
     const bool last = run.session->shown(wanted) == this->NumberOfSteps;
     std::unique_ptr<TriangleSource> wrap;
-    const convert::MeasureWrap measure = [&](const TriangleSoup& surface) {
-      std::optional<Closeness> closeness;
-      onAllCores([&] {
-        wrap = std::make_unique<TriangleSource>(surface);
-        if (last)
-        {
-          closeness = this->LastCloseness(slot, surface, *wrap);
-        }
-      });
-      return closeness;
-    };
-    const Status written = convert::writeWrap(
-      *run.session, wanted, this->TimePerStep, run.seconds, finished, output, notes, measure);
+    const Status written = convert::writeWrap(*run.session, wanted, this->TimePerStep, run.seconds,
+      finished, output, notes, this->MeasureWrap(slot, last, wrap));
     if (written && wrap)
     {
       this->CarryAndMeasure(
@@ -634,19 +623,8 @@ void vtkShrinkWrapFilter::ExecuteFrame(unsigned int slot, const convert::WrapInp
     run.seconds = secondsSince(begin);
     const bool wanted = frame == this->FrameWanted;
     std::unique_ptr<TriangleSource> wrap;
-    const convert::MeasureWrap measure = [&](const TriangleSoup& surface) {
-      std::optional<Closeness> closeness;
-      onAllCores([&] {
-        wrap = std::make_unique<TriangleSource>(surface);
-        if (wanted)
-        {
-          closeness = this->LastCloseness(slot, surface, *wrap);
-        }
-      });
-      return closeness;
-    };
-    const Status written = convert::writeWrap(
-      *run.session, report.steps, this->TimePerStep, run.seconds, wanted, output, notes, measure);
+    const Status written = convert::writeWrap(*run.session, report.steps, this->TimePerStep,
+      run.seconds, wanted, output, notes, this->MeasureWrap(slot, wanted, wrap));
     if (!written || !wrap)
     {
       this->FrameStopped = true;
@@ -763,6 +741,24 @@ void vtkShrinkWrapFilter::NextFrame(vtkInformation* request, vtkInformationVecto
   {
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), schedule.times()[frame]);
   }
+}
+
+// The written wrap as a distance source, into `wrap`; with `closeness`, the run's sampled distances
+// both ways for its summary.
+convert::MeasureWrap vtkShrinkWrapFilter::MeasureWrap(
+  unsigned int slot, bool closeness, std::unique_ptr<TriangleSource>& wrap)
+{
+  return [this, slot, closeness, &wrap](const TriangleSoup& surface) {
+    std::optional<Closeness> sampled;
+    onAllCores([&] {
+      wrap = std::make_unique<TriangleSource>(surface);
+      if (closeness)
+      {
+        sampled = this->LastCloseness(slot, surface, *wrap);
+      }
+    });
+    return sampled;
+  };
 }
 
 Closeness vtkShrinkWrapFilter::LastCloseness(

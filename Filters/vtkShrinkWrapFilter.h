@@ -57,9 +57,10 @@
 
 #include "vtkInputGeometry.h" // for InputGeometry's values
 
-#include <memory>   // for the internals
-#include <optional> // for a field's lattice
-#include <vector>   // for the inputs
+#include <functional> // for the measures
+#include <memory>     // for the internals
+#include <optional>   // for a field's lattice
+#include <vector>     // for the inputs
 
 class vtkCompositeDataSet;
 class vtkDataSet;
@@ -75,6 +76,7 @@ struct WrapInputs;
 class WrapRuns;
 }
 class DistanceSource;
+class TriangleSource;
 struct Closeness;
 struct GridLattice;
 struct TriangleSoup;
@@ -389,6 +391,10 @@ private:
   void CarryAndMeasure(unsigned int slot, vtkDataObject* target, vtkDataObject* whole,
     const shrinkwrap::DistanceSource& wrap, bool last, bool finished, vtkPolyData* output,
     vtkDataObject* measured, std::vector<shrinkwrap::Note>& notes);
+  // What writing the wrap measures on it (WrapOutput.h): the wrap as a distance source into `wrap`,
+  // and with `closeness` the summary's sampled distances.
+  std::function<std::optional<shrinkwrap::Closeness>(const shrinkwrap::TriangleSoup&)> MeasureWrap(
+    unsigned int slot, bool closeness, std::unique_ptr<shrinkwrap::TriangleSource>& wrap);
   // The summary's sampled distances of the run's last step (measured once per run).
   shrinkwrap::Closeness LastCloseness(unsigned int slot, const shrinkwrap::TriangleSoup& surface,
     const shrinkwrap::DistanceSource& wrap);

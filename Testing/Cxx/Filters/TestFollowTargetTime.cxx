@@ -3,9 +3,11 @@
 // the first and after the last give the frame at or before them, as ParaView's readers do; the
 // frames are computed in order and cached (going back asks the target for that frame alone), a
 // property edit starts the series over, an abort leaves the frames before it cached; a static
-// target still animates its evolution, and Evolution Steps reads a moving target at one time.
+// target still animates its evolution, and Evolution Steps reads a moving target at one time; a
+// Distance Field with times follows too.
 #include "SeriesSource.h"
 #include "TestUtilities.h"
+#include "vtkMeshSignedDistance.h"
 #include "vtkShrinkWrapFilter.h"
 
 #include <vtkCallbackCommand.h>
@@ -197,6 +199,25 @@ void translation()
     "asked again: the series resumes at frame 3 (the target still holds it)");
 }
 
+// A Distance Field of the moving target (Mesh Signed Distance on the same series) follows too: each
+// frame's wrap lands on that frame's field.
+void fieldWithTimes()
+{
+  vtkSmartPointer<testing::SeriesSource> source = movingSphere();
+  vtkNew<vtkMeshSignedDistance> field;
+  field->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputConnection(0, source->GetOutputPort());
+  wrap->SetInputConnection(1, field->GetOutputPort());
+  double first[6], last[6];
+  wrapAt(wrap, 0)->GetBounds(first);
+  wrapAt(wrap, 4)->GetBounds(last);
+  std::cout << "with a Distance Field: x from " << first[0] << ", " << first[1] << " to " << last[0]
+            << ", " << last[1] << std::endl;
+  SW_CHECK(std::abs(last[0] - first[0] - 0.4) < 0.01 && std::abs(last[1] - first[1] - 0.4) < 0.01,
+    "with a Distance Field that has times, frame 4's wrap stands 0.4 further along x");
+}
+
 void staticAndEvolutionSteps()
 {
   vtkNew<vtkSphereSource> sphere;
@@ -222,6 +243,7 @@ void staticAndEvolutionSteps()
 int TestFollowTargetTime(int, char*[])
 {
   translation();
+  fieldWithTimes();
   staticAndEvolutionSteps();
   return testing::finish("TestFollowTargetTime");
 }

@@ -4,7 +4,7 @@
 // frames are computed in order and cached (going back asks the target for that frame alone), a
 // property edit starts the series over, an abort leaves the frames before it cached; a static
 // target still animates its evolution, and Evolution Steps reads a moving target at one time; a
-// Distance Field with times follows too.
+// Distance Field with times follows too; Cache Memory bounds the frames kept.
 #include "SeriesSource.h"
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"
@@ -218,6 +218,28 @@ void fieldWithTimes()
     "with a Distance Field that has times, frame 4's wrap stands 0.4 further along x");
 }
 
+// Under Cache Memory the frames' outputs are dropped, but the first's and the newest's; a dropped
+// frame asked for again is computed again, from the first.
+void memoryLimit()
+{
+  vtkSmartPointer<testing::SeriesSource> source = movingSphere();
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputConnection(source->GetOutputPort());
+  wrap->SetCacheMemoryMiB(0);
+  wrapAt(wrap, 4);
+  source->Asked.clear();
+  vtkPolyData* kept = wrapAt(wrap, 0);
+  SW_CHECK(kept->GetNumberOfPoints() > 0 && source->Asked == std::vector<double>({ 0 }),
+    "Cache Memory 0: the first frame stays");
+  source->Asked.clear();
+  vtkPolyData* again = wrapAt(wrap, 2);
+  // (Frame 0's data is the source's output still: only frames 1 and 2 make it run.)
+  SW_CHECK(again->GetNumberOfPoints() > 0 && fieldValue(again, "Time") == 2 &&
+      source->Asked == std::vector<double>({ 1, 2 }),
+    "Cache Memory 0: frame 2, dropped, is computed again from the first (asked "
+      << source->Asked.size() << " frames)");
+}
+
 void staticAndEvolutionSteps()
 {
   vtkNew<vtkSphereSource> sphere;
@@ -244,6 +266,7 @@ int TestFollowTargetTime(int, char*[])
 {
   translation();
   fieldWithTimes();
+  memoryLimit();
   staticAndEvolutionSteps();
   return testing::finish("TestFollowTargetTime");
 }

@@ -18,7 +18,9 @@ def torus(cross_section, u_resolution, v_resolution):
     source.SetParametricFunction(shape)
     source.SetUResolution(u_resolution)
     source.SetVResolution(v_resolution)
-    closed = vtkCleanPolyData()  # the parametric seam's points merged
+    closed = vtkCleanPolyData()  # the parametric seam's points merged, its triangles kept as such
+    closed.ConvertPolysToLinesOff()
+    closed.ConvertLinesToPointsOff()
     closed.ToleranceIsAbsoluteOn()
     closed.SetAbsoluteTolerance(1e-6)
     closed.SetInputConnection(source.GetOutputPort())

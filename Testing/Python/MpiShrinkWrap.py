@@ -1,15 +1,20 @@
 """Shrink Wrap under ParaView's MPI engine: piece 0 holds the surface, the other ranks' pieces are
 empty, so the gathered data has the surface once. A multiblock target (issue #14): every block is
 wrapped on one rank only, in parallel, and equals its wrap in one process. The target's data carried
-onto the wrap and the target as measured (issue #64) equal one process's.
+onto the wrap and the target as measured (issue #64) equal one process's. A series is followed
+frame by frame (issue #63): every rank goes from frame to frame with the others, piece 0 holds the
+wrap of the frame asked for.
 
 Usage: mpiexec -np 2 pvbatch --symmetric MpiShrinkWrap.py <ShrinkWrap plugin .so> <mesh>
 """
+import os
 import sys
+import tempfile
 
 from paraview.simple import *  # noqa: F401,F403
 
-from mpi_checks import check, finish, rank, ranks, sums
+from mpi_checks import check, controller, finish, rank, ranks, sums
+from series import torus, write_series
 
 plugin, mesh = sys.argv[1], sys.argv[2]
 LoadPlugin(plugin, ns=globals())
@@ -80,4 +85,21 @@ check(all(measured.GetBlock(k).GetPointData().GetArray("DistanceToWrap") is not 
       all(mine.GetBlock(k).GetPointData().GetArray("p") is not None for k in here if k == 0) and
       sums([len(here)]) == [2],
       "per block, each rank measures the blocks it wraps (%s here)" % here)
+# A series of four frames of a torus moving along x by 0.2 a frame, written by rank 0.
+folder = os.path.join(tempfile.gettempdir(), "shrinkwrap_mpi_series")
+if rank == 0:
+    os.makedirs(folder, exist_ok=True)
+    write_series(folder, "torus", torus(0.4, 48, 24), [0, 1, 2, 3], lambda p, k: (p[0] + 0.2 * k, p[1], p[2]))
+controller.Barrier()
+follow = ShrinkWrap(Input=OpenDataFile(os.path.join(folder, "torus.pvd")), Resolution=48)
+xs = []
+for t in (0, 3):
+    follow.UpdatePipeline(t)
+    data = follow.GetClientSideObject().GetOutputDataObject(0)
+    xs.append(data.GetBounds()[0] if data.GetNumberOfPoints() > 0 else None)
+if rank == 0:
+    check(None not in xs and abs(xs[1] - xs[0] - 0.6) < 0.01,
+          "a followed series: frame 3's wrap stands 0.6 further along x (%s)" % xs)
+else:
+    check(xs == [None, None], "a followed series: the other pieces are empty")
 finish()

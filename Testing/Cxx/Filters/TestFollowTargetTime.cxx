@@ -250,6 +250,15 @@ void staticAndEvolutionSteps()
   SW_CHECK(wrap->GetFollowsTarget() == 0 &&
       out->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) == wrap->GetNumberOfSteps() + 1,
     "a static target: its evolution's steps are the times");
+  // Follow Target Time on a static target: one frame, no times, the landed wrap with its tracks.
+  wrap->SetTimeMode(vtkShrinkWrapFilter::TIME_FOLLOW_TARGET);
+  wrap->Update();
+  SW_CHECK(wrap->GetFollowsTarget() == 1 &&
+      !out->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) &&
+      wrap->GetOutput()->GetNumberOfPoints() > 100 &&
+      wrap->GetOutput()->GetPointData()->GetArray("TrackId") != nullptr,
+    "Follow Target Time on a static target: one frame, no time steps, a wrap with TrackIds");
+  wrap->SetTimeMode(vtkShrinkWrapFilter::TIME_AUTOMATIC);
   vtkSmartPointer<testing::SeriesSource> source = movingSphere();
   wrap->SetInputConnection(source->GetOutputPort());
   wrap->SetTimeMode(vtkShrinkWrapFilter::TIME_EVOLUTION_STEPS);

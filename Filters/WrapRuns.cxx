@@ -244,6 +244,17 @@ void WrapRuns::keepFramesFor(vtkMTimeType key)
   }
 }
 
+void WrapRuns::followTimes(const std::vector<double>& times)
+{
+  if (this->Frames.follow(times))
+  {
+    for (auto& slot : this->Runs)
+    {
+      slot.second.series = Run::Series();
+    }
+  }
+}
+
 bool WrapRuns::startFrame(Run& run, int frame, const WrapInputs& inputs, vtkMTimeType key,
   int inputGeometry, WrapSettings settings, const Progress& progress, Notes& notes, Status& status,
   FrameReport& report)

@@ -137,6 +137,8 @@ public:
   FrameSchedule& frames() { return this->Frames; }
   // Forgets every run's frames when `key` is not the one they were made for.
   void keepFramesFor(vtkMTimeType key);
+  // Follows the target's `times`; every run's frames are forgotten when they change.
+  void followTimes(const std::vector<double>& times);
 
   // The piece that wraps each block, as `share()` gives it, made once per key and piece count.
   template <typename Share>

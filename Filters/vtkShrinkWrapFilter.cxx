@@ -209,7 +209,7 @@ int vtkShrinkWrapFilter::RequestInformation(
     const double* t = in->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
     times.assign(t, t + frames);
   }
-  this->Runs->frames().follow(
+  this->Runs->followTimes(
     this->FollowsTarget && times.empty() ? std::vector<double>{ 0.0 } : times);
   for (int port = 0; port < 2; ++port)
   {
@@ -311,6 +311,7 @@ int vtkShrinkWrapFilter::RequestData(
   vtkDataObject* measured = vtkDataObject::GetData(outputVector, 1);
   output->Initialize();
   measured->Initialize();
+  this->FrameStopped = false; // set by this execution when a followed series cannot go on
   if (const Status checked = this->CheckProperties(); !checked)
   {
     vtkErrorMacro(<< "Cannot wrap: " << checked.message() << ".");
@@ -332,6 +333,7 @@ int vtkShrinkWrapFilter::RequestData(
   }
   catch (const std::exception& e) // std::bad_alloc, threads that cannot start under the same limits
   {
+    this->FrameStopped = true; // a followed series ends its update here
     output->Initialize();
     measured->Initialize();
     this->Runs->clear(); // a half-made step is not kept; the next update starts over
@@ -419,6 +421,7 @@ void vtkShrinkWrapFilter::ExecuteWhole(vtkInformationVector** inputVector, vtkIn
   if (!one)
   {
     vtkErrorMacro(<< one.message() << ".");
+    this->FrameStopped = true; // (following a series: its update ends here)
   }
   inputs.target =
     convert::wholeInput(one ? inputs.target : nullptr, this->Controller, this->Gathered);

@@ -298,13 +298,15 @@ FollowedWrap followedWrap(const WrapSession& session, int step,
   return followed;
 }
 
-void FrameSchedule::follow(const std::vector<double>& times)
+bool FrameSchedule::follow(const std::vector<double>& times)
 {
-  if (times != this->Times)
+  if (times == this->Times)
   {
-    this->Times = times;
-    this->clear();
+    return false;
   }
+  this->Times = times;
+  this->clear();
+  return true;
 }
 
 int FrameSchedule::frameAt(double time) const

@@ -59,8 +59,9 @@ struct FollowedWrap
 class FrameSchedule
 {
 public:
-  // A series of `times` (ascending); the frames done so far are forgotten when they change.
-  void follow(const std::vector<double>& times);
+  // A series of `times` (ascending); the frames done so far are forgotten when they change (then
+  // true).
+  bool follow(const std::vector<double>& times);
   const std::vector<double>& times() const { return this->Times; }
   int frameAt(double time) const; // NaN: the last
   // The frame to compute (or give from the cache) next on the way to `wanted`: itself when done,

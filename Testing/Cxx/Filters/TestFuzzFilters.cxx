@@ -262,6 +262,7 @@ void randomizeWrap(vtkShrinkWrapFilter* f, Dice& dice)
   f->SetSolverTolerance(dice.value(1e-6));
   f->SetResolution(dice.chance(0.9) ? dice.between(-1, 32) : 1 << 20);
   f->SetCacheMemoryMiB(dice.chance(0.7) ? 512 : dice.pick({ 0.0, 1e-9, 0.01, -1.0, kNaN }));
+  f->SetTimeMode(dice.chance(0.8) ? vtkShrinkWrapFilter::TIME_AUTOMATIC : dice.between(-1, 3));
 }
 
 // An image for the DistanceField port: a real field, or random values, short arrays, NaNs.
@@ -524,6 +525,7 @@ int TestFuzzFilters(int argc, char* argv[])
       wrap->SetResolution(24);
       wrap->SetCacheMemoryMiB(512);
       wrap->SetStartOffsetInCells(3);
+      wrap->SetTimeMode(vtkShrinkWrapFilter::TIME_AUTOMATIC);
       wrap->Update();
       SW_CHECK(wrap->GetOutput() && wrap->GetOutput()->GetNumberOfPoints() == 162 &&
           validWrap(wrap->GetOutput()),

@@ -276,6 +276,7 @@ int vtkShrinkWrapFilter::RequestUpdateExtent(
       : std::nan("");
     this->FrameWanted = schedule.frameAt(asked);
     this->FrameAsked = this->FrameFirst = schedule.next(this->FrameWanted);
+    this->FrameLoopTime = this->GetMTime();
   }
   vtkInformation* in = inputVector[0]->GetInformationObject(0);
   if (in && in->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
@@ -713,6 +714,15 @@ void vtkShrinkWrapFilter::NextFrame(vtkInformation* request, vtkInformationVecto
   if (frame < 0)
   {
     return;
+  }
+  // A property edited during the series (a panel edit, a script's callback): the series stops here
+  // and starts over with the new values at the next update.
+  if (!this->FrameStopped && frame < this->FrameWanted && this->GetMTime() != this->FrameLoopTime)
+  {
+    vtkWarningMacro("Properties changed while the series was followed (frame "
+      << frame << "); it starts over with them at the next update.");
+    this->FrameStopped = true;
+    this->RunAgain = true;
   }
   // Every rank goes on to the next frame together (each takes part in gathering the target).
   if (this->Controller && this->Controller->GetNumberOfProcesses() > 1)

@@ -358,8 +358,9 @@ private:
   int FrameAsked = -1;
   int FrameWanted = -1;
   int FrameFirst = -1;
-  bool FrameStopped = false;   // aborted or failed: the update ends
-  bool FrameContinues = false; // the pipeline runs again for the next frame
+  bool FrameStopped = false;      // aborted or failed: the update ends
+  bool FrameContinues = false;    // the pipeline runs again for the next frame
+  vtkMTimeType FrameLoopTime = 0; // the filter's modification time when the update began
   vtkMTimeType PipelineTime = 0;
 
   double FieldCellSize = 0; // planned in RequestInformation, the run's in RequestData; as are

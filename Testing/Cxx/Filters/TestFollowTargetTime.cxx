@@ -218,6 +218,42 @@ void fieldWithTimes()
     "with a Distance Field that has times, frame 4's wrap stands 0.4 further along x");
 }
 
+// A property edited while a series is followed (a script's callback at frame 2): the update stops
+// there with a warning, and the next one starts the series over with the new value.
+void editDuringSeries()
+{
+  vtkSmartPointer<testing::SeriesSource> source = movingSphere();
+  vtkNew<vtkShrinkWrapFilter> wrap;
+  wrap->SetInputConnection(source->GetOutputPort());
+  struct Edit
+  {
+    testing::SeriesSource* source;
+    bool done = false;
+  } once{ source.Get() };
+  vtkNew<vtkCallbackCommand> edit;
+  edit->SetClientData(&once);
+  edit->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    auto* e = static_cast<Edit*>(data);
+    if (!e->done && !e->source->Asked.empty() && e->source->Asked.back() == 2)
+    {
+      e->done = true;
+      auto* filter = static_cast<vtkShrinkWrapFilter*>(caller);
+      filter->SetSmoothing(filter->GetSmoothing() * 1.1);
+    }
+  });
+  const unsigned long observer = wrap->AddObserver(vtkCommand::ProgressEvent, edit);
+  vtkPolyData* stopped = wrapAt(wrap, 4);
+  wrap->RemoveObserver(observer);
+  SW_CHECK(source->Asked == std::vector<double>({ 0, 1, 2 }) && fieldValue(stopped, "Time") == 2,
+    "an edit during frame 2: the series stops there (asked " << source->Asked.size() << ")");
+  source->Asked.clear();
+  wrap->Update(); // the same time asked again: the series starts over, to frame 4
+  SW_CHECK(source->Asked == std::vector<double>({ 0, 1, 2, 3, 4 }) &&
+      fieldValue(wrap->GetOutput(), "Time") == 4,
+    "... and the next update starts it over with the new value (asked " << source->Asked.size()
+                                                                        << ")");
+}
+
 // Under Cache Memory the frames' outputs are dropped, but the first's and the newest's; a dropped
 // frame asked for again is computed again, from the first.
 void memoryLimit()
@@ -275,6 +311,7 @@ int TestFollowTargetTime(int, char*[])
 {
   translation();
   fieldWithTimes();
+  editDuringSeries();
   memoryLimit();
   staticAndEvolutionSteps();
   return testing::finish("TestFollowTargetTime");

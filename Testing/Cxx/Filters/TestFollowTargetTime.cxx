@@ -2,9 +2,10 @@
 // vertex the translation as its Displacement and keeps every TrackId; times between frames, before
 // the first and after the last give the frame at or before them, as ParaView's readers do; the
 // frames are computed in order and cached (going back asks the target for that frame alone), a
-// property edit starts the series over, an abort leaves the frames before it cached; a static
-// target still animates its evolution, and Evolution Steps reads a moving target at one time; a
-// Distance Field with times follows too; Cache Memory bounds the frames kept.
+// property edit starts the series over (one made during a series stops it there), an abort leaves
+// the frames before it cached; a static target still animates its evolution, and Evolution Steps
+// reads a moving target at one time; a Distance Field with times follows too; Cache Memory bounds
+// the frames kept.
 #include "SeriesSource.h"
 #include "TestUtilities.h"
 #include "vtkMeshSignedDistance.h"

@@ -53,26 +53,16 @@ double stretch(const SurfaceMesh& mesh, const std::vector<Vec3>& before)
   return most;
 }
 
-// How far the vertices of the session's current surface lie from the target closed over its gaps
-// (what the wrap lands on): on average and the largest, in cells of the field.
-struct Off
+// How far the farthest vertex of the session's current surface lies from the target closed over
+// its gaps (what the wrap lands on), in cells of the field.
+double largestOff(const WrapSession& session)
 {
-  double mean = 0, largest = 0;
-};
-Off offTarget(const WrapSession& session)
-{
-  const WrapSession::Surface surface = session.surface(session.computedSteps());
-  Off off;
-  for (const Vec3& x : surface.points)
+  double most = 0;
+  for (const Vec3& x : session.surface(session.computedSteps()).points)
   {
-    const double d = std::abs(session.fields().driving.sample(x).value);
-    off.mean += d;
-    off.largest = std::max(off.largest, d);
+    most = std::max(most, std::abs(session.fields().driving.sample(x).value));
   }
-  const double cell = session.plan().lattice.spacing.maxCoeff();
-  off.mean /= std::max<std::size_t>(surface.points.size(), 1) * cell;
-  off.largest /= cell;
-  return off;
+  return most / session.plan().lattice.spacing.maxCoeff();
 }
 
 // Whether `points` lie on the target already (what the wrap lands on: `field`): 95% within
@@ -109,7 +99,7 @@ bool land(WrapSession& session, const FollowSettings& follow, const Progress& pr
       return true;
     }
     // Still on average, and landed everywhere or no nearer where it is farthest.
-    const double off = offTarget(session).largest;
+    const double off = largestOff(session);
     const std::optional<double> motion = session.meanMotion(steps);
     if (steps >= follow.minSteps && motion && *motion < follow.stillCells &&
       (off <= follow.landedCells || off > follow.stall * before))
@@ -211,7 +201,7 @@ Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedW
         {
           return Status::failure("aborted");
         }
-        const double off = carried->lastGood() < 0 ? offTarget(*carried).largest : 0;
+        const double off = carried->lastGood() < 0 ? largestOff(*carried) : 0;
         if (carried->lastGood() < 0 && off <= follow.fitCells)
         {
           report.carried = true;

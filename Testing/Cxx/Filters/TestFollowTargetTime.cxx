@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -75,6 +76,31 @@ std::string statusOf(vtkDataObject* data)
   auto* a = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("Status"));
   return a ? a->GetValue(0) : "";
 }
+
+// Does `act` once, at the first progress event of the wrap while `source` was last asked for
+// `frame` (as a user or a script's callback would; the executive's closing event does not repeat
+// it).
+struct OnceAtFrame
+{
+  testing::SeriesSource* source;
+  double frame;
+  std::function<void(vtkShrinkWrapFilter*)> act;
+  bool done = false;
+  vtkNew<vtkCallbackCommand> command;
+  unsigned long observe(vtkShrinkWrapFilter* wrap)
+  {
+    this->command->SetClientData(this);
+    this->command->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+      auto* once = static_cast<OnceAtFrame*>(data);
+      if (!once->done && !once->source->Asked.empty() && once->source->Asked.back() == once->frame)
+      {
+        once->done = true;
+        once->act(static_cast<vtkShrinkWrapFilter*>(caller));
+      }
+    });
+    return wrap->AddObserver(vtkCommand::ProgressEvent, this->command);
+  }
+};
 
 std::map<vtkIdType, vtkIdType> tracksOf(vtkPolyData* wrap)
 {
@@ -167,24 +193,8 @@ void translation()
   wrapAt(wrap, 1);
   SW_CHECK(source->Asked == std::vector<double>({ 0, 1 }), "an edit starts the series over");
   // An abort at frame 3 stops the series there; frames 0-2 stay.
-  // Aborted once, at frame 3's first progress event, as a user would (the executive's closing
-  // event must not abort again).
-  struct Abort
-  {
-    testing::SeriesSource* source;
-    bool done = false;
-  } once{ source.Get() };
-  vtkNew<vtkCallbackCommand> abort;
-  abort->SetClientData(&once);
-  abort->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
-    auto* a = static_cast<Abort*>(data);
-    if (!a->done && !a->source->Asked.empty() && a->source->Asked.back() == 3)
-    {
-      a->done = true;
-      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-    }
-  });
-  const unsigned long observer = wrap->AddObserver(vtkCommand::ProgressEvent, abort);
+  OnceAtFrame abort{ source.Get(), 3, [](vtkShrinkWrapFilter* w) { w->SetAbortExecute(1); } };
+  const unsigned long observer = abort.observe(wrap);
   source->Asked.clear();
   vtkPolyData* aborted = wrapAt(wrap, 4);
   wrap->RemoveObserver(observer);
@@ -226,23 +236,9 @@ void editDuringSeries()
   vtkSmartPointer<testing::SeriesSource> source = movingSphere();
   vtkNew<vtkShrinkWrapFilter> wrap;
   wrap->SetInputConnection(source->GetOutputPort());
-  struct Edit
-  {
-    testing::SeriesSource* source;
-    bool done = false;
-  } once{ source.Get() };
-  vtkNew<vtkCallbackCommand> edit;
-  edit->SetClientData(&once);
-  edit->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
-    auto* e = static_cast<Edit*>(data);
-    if (!e->done && !e->source->Asked.empty() && e->source->Asked.back() == 2)
-    {
-      e->done = true;
-      auto* filter = static_cast<vtkShrinkWrapFilter*>(caller);
-      filter->SetSmoothing(filter->GetSmoothing() * 1.1);
-    }
-  });
-  const unsigned long observer = wrap->AddObserver(vtkCommand::ProgressEvent, edit);
+  OnceAtFrame edit{ source.Get(), 2,
+    [](vtkShrinkWrapFilter* w) { w->SetSmoothing(w->GetSmoothing() * 1.1); } };
+  const unsigned long observer = edit.observe(wrap);
   vtkPolyData* stopped = wrapAt(wrap, 4);
   wrap->RemoveObserver(observer);
   SW_CHECK(source->Asked == std::vector<double>({ 0, 1, 2 }) && fieldValue(stopped, "Time") == 2,

@@ -590,7 +590,7 @@ void vtkShrinkWrapFilter::ExecuteFrame(unsigned int slot, const convert::WrapInp
 {
   const int frame = this->FrameAsked;
   const FrameSchedule& schedule = this->Runs->frames();
-  const bool timed = schedule.times().size() > 1 ||
+  const bool timed =
     this->GetInputInformation(0, 0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   const double time = timed ? schedule.times()[frame] : 0;
   convert::WrapRuns::Run& run = this->Runs->run(slot);

@@ -161,9 +161,9 @@ Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedW
   {
     SurfaceMesh start = previous->mesh;
     const std::vector<Vec3> before = start.points();
-    report.moved = previous->target && target.polygons &&
+    const bool moved = previous->target && target.polygons &&
       carryWithTarget(*previous->target, *target.polygons, start.points());
-    if (report.moved) // where the carried surface would pass through itself, it stays
+    if (moved) // where the carried surface would pass through itself, it stays
     {
       holdNewCrossings(before, start.points(), start.triangles());
     }
@@ -225,7 +225,6 @@ Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedW
     {
       report.fresh = "the target moved out of the carried wrap's field";
     }
-    report.moved = false;
   }
   if (spent)
   {

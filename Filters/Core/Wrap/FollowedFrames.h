@@ -72,7 +72,6 @@ public:
   void markDone(int frame);
   void forget(int frame) { this->Done.erase(frame); } // its output dropped (memory)
   void clear();
-  int newest() const { return this->Newest; }
 
 private:
   std::vector<double> Times;
@@ -107,7 +106,6 @@ struct FollowSettings
 struct FrameReport
 {
   bool carried = false; // from the previous frame's wrap (false: started as a single wrap)
-  bool moved = false;   // carried with the target's motion (its triangles correspond)
   int steps = 0;        // evolution steps of this frame
   std::string fresh;    // why a frame after the first started as a single wrap, if it did
 };

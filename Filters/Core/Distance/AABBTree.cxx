@@ -24,16 +24,22 @@ namespace
 void splitCandidates(const std::vector<double>& coords, int count, double lo, double hi,
   int uniform, int adaptive, std::vector<int>& histogram, std::vector<double>& candidates)
 {
-  histogram.assign(uniform, 0);
   const double width = (hi - lo) / uniform;
-  for (int k = 0; k < count; ++k)
-  {
-    ++histogram[std::min(uniform - 1, static_cast<int>((coords[k] - lo) / width))];
-  }
   candidates.clear();
   for (int k = 1; k < uniform; ++k)
   {
     candidates.push_back(lo + k * width);
+  }
+  if (adaptive == 0)
+  {
+    // Ascending already; equal only where the width is below the coordinates' rounding.
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    return;
+  }
+  histogram.assign(uniform, 0);
+  for (int k = 0; k < count; ++k)
+  {
+    ++histogram[std::min(uniform - 1, static_cast<int>((coords[k] - lo) / width))];
   }
   const double n = static_cast<double>(count);
   int bin = 0;
@@ -55,7 +61,7 @@ void splitCandidates(const std::vector<double>& coords, int count, double lo, do
 
 AABBTree::AABBTree(const TriangleSoup& soup, const AABBTreeSettings& settings)
 {
-  std::vector<Prim> prims(soup.triangles.size());
+  LargeVector<Prim> prims(soup.triangles.size());
   for (std::size_t t = 0; t < prims.size(); ++t)
   {
     const Box box = Box::around(soup.points, soup.triangles[t]);
@@ -84,9 +90,8 @@ AABBTree::AABBTree(const TriangleSoup& soup, const AABBTreeSettings& settings)
   }
 }
 
-void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int index, int begin,
-  int end, int depth, const AABBTreeSettings& s, SplitScratch& scratch,
-  std::vector<Subtree>* deferred)
+void AABBTree::build(HierarchyNodes& nodes, LargeVector<Prim>& prims, int index, int begin, int end,
+  int depth, const AABBTreeSettings& s, SplitScratch& scratch, std::vector<Subtree>* deferred)
 {
   Box box, centroids;
   for (int k = begin; k < end; ++k)
@@ -116,14 +121,14 @@ void AABBTree::build(std::vector<Node>& nodes, std::vector<Prim>& prims, int ind
   this->build(nodes, prims, left + 1, mid, end, depth + 1, s, scratch, deferred);
 }
 
-void AABBTree::buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings& s)
+void AABBTree::buildInParallel(LargeVector<Prim>& prims, const AABBTreeSettings& s)
 {
   // The top of the tree first, leaving subtrees of at most parallelSubtreeSize triangles for later;
   // then those subtrees side by side, each in a node list of its own, appended at the end.
   std::vector<Subtree> subtrees;
   SplitScratch scratch;
   this->build(this->Nodes, prims, 0, 0, static_cast<int>(prims.size()), 1, s, scratch, &subtrees);
-  std::vector<std::vector<Node>> parts(subtrees.size());
+  std::vector<HierarchyNodes> parts(subtrees.size());
   parallelFor(0, static_cast<int>(subtrees.size()), 1, [&](int b, int e) {
     for (int t = b; t < e; ++t)
     {
@@ -196,7 +201,7 @@ std::pair<double, int> cheapestCut(const std::vector<int>& binCount, const std::
 }
 } // namespace
 
-int AABBTree::splitPosition(std::vector<Prim>& prims, int begin, int end, const Box& centroids,
+int AABBTree::splitPosition(LargeVector<Prim>& prims, int begin, int end, const Box& centroids,
   const AABBTreeSettings& s, SplitScratch& scratch) const
 {
   const int count = end - begin;

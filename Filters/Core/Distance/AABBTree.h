@@ -47,7 +47,7 @@ public:
   // The hierarchy itself, for other queries over the same nodes (WindingNumber.h). Node 0 is the
   // root.
   using Node = HierarchyNode; // a leaf's slots index Order
-  const std::vector<Node>& nodes() const { return this->Nodes; }
+  const HierarchyNodes& nodes() const { return this->Nodes; }
   int triangleAt(int slot) const { return this->Order[slot]; } // the soup's triangle in a leaf slot
 
 private:
@@ -64,22 +64,22 @@ private:
   };
   struct SplitScratch;
   AABBTree() = default;
-  void buildInParallel(std::vector<Prim>& prims, const AABBTreeSettings& s);
-  void build(std::vector<Node>& nodes, std::vector<Prim>& prims, int index, int begin, int end,
+  void buildInParallel(LargeVector<Prim>& prims, const AABBTreeSettings& s);
+  void build(HierarchyNodes& nodes, LargeVector<Prim>& prims, int index, int begin, int end,
     int depth, const AABBTreeSettings& s, SplitScratch& scratch, std::vector<Subtree>* deferred);
-  int splitPosition(std::vector<Prim>& prims, int begin, int end, const Box& centroids,
+  int splitPosition(LargeVector<Prim>& prims, int begin, int end, const Box& centroids,
     const AABBTreeSettings& s, SplitScratch& scratch) const;
 
-  std::vector<Node> Nodes;
-  std::vector<int> Order;                   // soup triangle index per leaf slot
-  std::vector<std::array<Vec3, 3>> Corners; // triangle corners in leaf order, for locality
+  // Megabytes for a large target: huge pages, whose first writes fault 2 MiB at a time.
+  HierarchyNodes Nodes;
+  LargeVector<int> Order;                   // soup triangle index per leaf slot
+  LargeVector<std::array<Vec3, 3>> Corners; // triangle corners in leaf order, for locality
   struct Plane // n . x = offset, |n| = 1 (zero for a degenerate triangle: never skipped)
   {
     Vec3 normal = Vec3::Zero();
     double offset = 0;
   };
-  std::vector<Plane>
-    Planes; // the triangles' planes in leaf order, a cheap bound before the closest point
+  LargeVector<Plane> Planes; // the triangles' planes in leaf order: a cheap bound first
 };
 
 } // namespace shrinkwrap

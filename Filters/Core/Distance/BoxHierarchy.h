@@ -5,6 +5,7 @@
 #define ShrinkWrap_BoxHierarchy_h
 
 #include "Common/Box.h"
+#include "Common/HugePages.h"
 
 #include <vector>
 
@@ -18,6 +19,9 @@ struct HierarchyNode
   int count; // leaf: number of slots; inner: 0
 };
 
+// A hierarchy's nodes, root first (a large target's tree is megabytes: huge pages).
+using HierarchyNodes = LargeVector<HierarchyNode>;
+
 // Deeper trees are not built (a leaf then holds more slots).
 constexpr int kMaxHierarchyDepth = 64;
 
@@ -25,8 +29,7 @@ constexpr int kMaxHierarchyDepth = 64;
 // distance that visit lowers as it finds nearer elements), nearer boxes first so that they prune
 // more.
 template <typename Visit>
-void searchNearest(
-  const std::vector<HierarchyNode>& nodes, const Vec3& p, const double& best, Visit&& visit)
+void searchNearest(const HierarchyNodes& nodes, const Vec3& p, const double& best, Visit&& visit)
 {
   if (nodes.empty())
   {

@@ -2,6 +2,7 @@
 #include "Distance/SoupEdges.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 namespace shrinkwrap
@@ -16,21 +17,31 @@ double area(const TriangleSoup& soup, int t)
   return 0.5 * (b - a).cross(c - a).norm();
 }
 
-// Per triangle, its neighbours across edges shared by exactly two triangles, and whether the two
-// run that edge the same way (then one of them is flipped against the other).
-std::vector<std::vector<std::pair<int, bool>>> manifoldNeighbours(const TriangleSoup& soup)
+// A triangle's neighbours across edges shared by exactly two triangles (at most one per edge), and
+// whether the two run that edge the same way (then one of them is flipped against the other).
+struct Neighbours
+{
+  std::array<std::pair<int, bool>, 3> across;
+  int count = 0;
+};
+
+LargeVector<Neighbours> manifoldNeighbours(const TriangleSoup& soup)
 {
   // Degenerate triangles have no orientation to pass on: a flip through one would turn everything
   // beyond it.
-  const std::vector<EdgeUse> uses =
-    edgeUses(soup, [&](int t) { return !unitNormal(soup, t).isZero(); });
-  std::vector<std::vector<std::pair<int, bool>>> neighbours(soup.triangles.size());
+  const EdgeUses uses = edgeUses(soup, [&](int t) { return !unitNormal(soup, t).isZero(); });
+  LargeVector<Neighbours> neighbours(soup.triangles.size());
   forEachEdge(uses, [&](std::size_t first, std::size_t last) {
     if (last - first == 2)
     {
       const EdgeUse &a = uses[first], &b = uses[first + 1];
-      neighbours[a.triangle].push_back({ b.triangle, a.forward == b.forward });
-      neighbours[b.triangle].push_back({ a.triangle, a.forward == b.forward });
+      Neighbours &na = neighbours[a.triangle], &nb = neighbours[b.triangle];
+      // (a triangle naming one edge twice, as (p, q, p), has at most three uses in all)
+      if (na.count < 3 && nb.count < 3)
+      {
+        na.across[na.count++] = { b.triangle, a.forward == b.forward };
+        nb.across[nb.count++] = { a.triangle, a.forward == b.forward };
+      }
     }
   });
   return neighbours;
@@ -59,10 +70,12 @@ long long orientConsistently(TriangleSoup& welded)
     for (std::size_t q = 0; q < piece.size(); ++q)
     {
       const int t = piece[q];
-      total += area(welded, t);
-      flippedArea += flip[t] ? area(welded, t) : 0;
-      for (const auto& [u, same] : neighbours[t])
+      const double a = area(welded, t);
+      total += a;
+      flippedArea += flip[t] ? a : 0;
+      for (int k = 0; k < neighbours[t].count; ++k)
       {
+        const auto [u, same] = neighbours[t].across[k];
         if (flip[u] < 0)
         {
           flip[u] = static_cast<signed char>(flip[t] ^ same);

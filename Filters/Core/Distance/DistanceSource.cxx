@@ -112,7 +112,7 @@ const std::vector<char>& TriangleSource::sidesConfirmed() const
 std::vector<std::array<Vec3, 2>> TriangleSource::rims(double creaseAngle) const
 {
   std::vector<std::array<Vec3, 2>> rims;
-  const std::vector<EdgeUse> uses = edgeUses(this->Soup);
+  const EdgeUses uses = edgeUses(this->Soup);
   const auto& x = this->Soup.points;
   const double cosCrease = std::cos(creaseAngle * M_PI / 180);
   auto crease = [&](const EdgeUse& u, const EdgeUse& v) {

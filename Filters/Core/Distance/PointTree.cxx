@@ -34,8 +34,8 @@ int splitAtMedian(LargeVector<Entry>& entries, int begin, int end, const Box& bo
 }
 
 // The subtree over entries [begin, end) as nodes appended to `nodes`, its root first.
-void buildSubtree(LargeVector<Entry>& entries, int begin, int end, int depth, int leafSize,
-  std::vector<HierarchyNode>& nodes)
+void buildSubtree(
+  LargeVector<Entry>& entries, int begin, int end, int depth, int leafSize, HierarchyNodes& nodes)
 {
   struct Range
   {
@@ -93,7 +93,7 @@ PointTree::PointTree(const Vec3* points, std::size_t count, int leafSize)
   {
     const Box box = boxOf(entries, 0, n);
     const int middle = splitAtMedian(entries, 0, n, box);
-    std::vector<HierarchyNode> halves[2];
+    HierarchyNodes halves[2];
     parallelFor(0, 2, 1, [&](Index b, Index e) {
       for (Index h = b; h < e; ++h)
       {

@@ -50,7 +50,7 @@ public:
 private:
   PointTree(const Vec3* points, std::size_t count, int leafSize);
 
-  std::vector<HierarchyNode> Nodes;
+  HierarchyNodes Nodes;
   LargeVector<Entry> Sorted; // built in place: no copy (fresh memory costs as much as the build)
 };
 

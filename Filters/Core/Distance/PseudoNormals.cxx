@@ -52,7 +52,7 @@ PseudoNormals::PseudoNormals(const TriangleSoup& soup)
   // edge of one triangle (a rim) or of more than two has no inside and outside, nor have its ends.
   this->Open.assign(nt, 0);
   std::vector<char> openVertex(soup.points.size(), 0);
-  const std::vector<EdgeUse> uses = edgeUses(soup);
+  const EdgeUses uses = edgeUses(soup);
   forEachEdge(uses, [&](std::size_t first, std::size_t last) {
     Vec3 sum = Vec3::Zero();
     for (std::size_t k = first; k < last; ++k)

@@ -4,6 +4,7 @@
 #ifndef ShrinkWrap_PseudoNormals_h
 #define ShrinkWrap_PseudoNormals_h
 
+#include "Common/HugePages.h"
 #include "Common/TriangleSoup.h"
 #include "Distance/TriangleDistance.h"
 
@@ -32,10 +33,11 @@ public:
   long long nonManifoldEdges() const { return this->NonManifoldEdges; }
 
 private:
-  std::vector<Vec3> Face;
-  std::vector<std::array<Vec3, 3>> Corner; // per triangle: its vertices' pseudonormals
-  std::vector<std::array<Vec3, 3>> Edge;   // per triangle: edges 01, 12, 20
-  std::vector<std::uint8_t> Open;          // per triangle: a bit per Feature that is not sure
+  // Megabytes for a large target: huge pages, whose first writes fault 2 MiB at a time.
+  LargeVector<Vec3> Face;
+  LargeVector<std::array<Vec3, 3>> Corner; // per triangle: its vertices' pseudonormals
+  LargeVector<std::array<Vec3, 3>> Edge;   // per triangle: edges 01, 12, 20
+  LargeVector<std::uint8_t> Open;          // per triangle: a bit per Feature that is not sure
   long long BoundaryEdges = 0;
   long long NonManifoldEdges = 0;
 };

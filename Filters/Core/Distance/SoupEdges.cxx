@@ -42,24 +42,32 @@ TriangleSoup weldDuplicatePoints(const TriangleSoup& soup)
 long long dropRepeatedTriangles(TriangleSoup& welded, std::vector<int>* kept)
 {
   const int n = static_cast<int>(welded.triangles.size());
-  auto cornersOf = [&](int t) {
-    std::array<int, 3> c = welded.triangles[t];
-    std::sort(c.begin(), c.end());
-    return c;
+  // Each triangle's sorted corners and index, sorted: repeats follow their first (lowest index).
+  struct Key
+  {
+    std::array<int, 3> corners;
+    int triangle;
+    bool operator<(const Key& o) const
+    {
+      return corners != o.corners ? corners < o.corners : triangle < o.triangle;
+    }
   };
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(
-    order.begin(), order.end(), [&](int a, int b) { return cornersOf(a) < cornersOf(b); });
+  std::vector<Key> keys(n);
+  for (int t = 0; t < n; ++t)
+  {
+    keys[t] = { welded.triangles[t], t };
+    std::sort(keys[t].corners.begin(), keys[t].corners.end());
+  }
+  std::sort(keys.begin(), keys.end());
   std::vector<char> repeated(n, 0);
   long long dropped = 0;
   for (int k = 1; k < n; ++k)
   {
-    const std::array<int, 3> c = cornersOf(order[k]);
+    const std::array<int, 3>& c = keys[k].corners;
     // Only proper triangles: a segment's repeats mean nothing of sides.
-    if (c[0] != c[1] && c[1] != c[2] && c == cornersOf(order[k - 1]))
+    if (c[0] != c[1] && c[1] != c[2] && c == keys[k - 1].corners)
     {
-      repeated[order[k]] = 1;
+      repeated[keys[k].triangle] = 1;
       ++dropped;
     }
   }
@@ -94,26 +102,56 @@ Vec3 unitNormal(const TriangleSoup& soup, int triangle)
   return len > 1e-9 * longest ? Vec3(n / len) : Vec3::Zero();
 }
 
-std::vector<EdgeUse> edgeUses(const TriangleSoup& soup, const std::function<bool(int)>& keep)
+EdgeUses edgeUses(const TriangleSoup& soup, const std::function<bool(int)>& keep)
 {
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * soup.triangles.size());
+  // Counted into runs by the edge's lower id, then each short run sorted by its higher id: the
+  // uses of an edge come in the order of their triangles.
+  std::vector<int> start(soup.points.size() + 1, 0);
+  const auto lowerOf = [&](const std::array<int, 3>& tri, int e) {
+    return std::min(tri[e], tri[(e + 1) % 3]);
+  };
+  std::vector<char> kept(soup.triangles.size(), 1);
   for (std::size_t t = 0; t < soup.triangles.size(); ++t)
   {
-    if (keep && !keep(static_cast<int>(t)))
+    kept[t] = !keep || keep(static_cast<int>(t));
+    for (int e = 0; kept[t] && e < 3; ++e)
     {
-      continue;
+      ++start[lowerOf(soup.triangles[t], e) + 1];
     }
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  EdgeUses uses(start.back());
+  std::vector<int> next(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
     const auto& tri = soup.triangles[t];
-    for (int e = 0; e < 3; ++e)
+    for (int e = 0; kept[t] && e < 3; ++e)
     {
       const auto i = static_cast<std::uint64_t>(tri[e]),
                  j = static_cast<std::uint64_t>(tri[(e + 1) % 3]);
-      uses.push_back({ (std::min(i, j) << 32) | std::max(i, j), static_cast<int>(t), e, i < j });
+      uses[next[lowerOf(tri, e)]++] = { (std::min(i, j) << 32) | std::max(i, j),
+        static_cast<int>(t), e, i < j };
     }
   }
-  std::sort(
-    uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) { return a.key < b.key; });
+  const auto byKey = [](const EdgeUse& a, const EdgeUse& b) { return a.key < b.key; };
+  for (std::size_t p = 0; p + 1 < start.size(); ++p)
+  {
+    if (start[p + 1] - start[p] > 32) // a fan's apex
+    {
+      std::stable_sort(uses.begin() + start[p], uses.begin() + start[p + 1], byKey);
+      continue;
+    }
+    for (int k = start[p] + 1; k < start[p + 1]; ++k) // insertion: a vertex's few edges
+    {
+      const EdgeUse use = uses[k];
+      int at = k;
+      for (; at > start[p] && uses[at - 1].key > use.key; --at)
+      {
+        uses[at] = uses[at - 1];
+      }
+      uses[at] = use;
+    }
+  }
   return uses;
 }
 

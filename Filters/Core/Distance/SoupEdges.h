@@ -3,6 +3,7 @@
 #ifndef ShrinkWrap_SoupEdges_h
 #define ShrinkWrap_SoupEdges_h
 
+#include "Common/HugePages.h"
 #include "Common/TriangleSoup.h"
 
 #include <cstdint>
@@ -35,12 +36,14 @@ struct EdgeUse
   bool forward;
 };
 
+using EdgeUses = LargeVector<EdgeUse>; // megabytes for a large soup: huge pages
+
 // The edge uses of the triangles `keep` accepts (all when empty), grouped by edge: sorted by key.
-std::vector<EdgeUse> edgeUses(const TriangleSoup& soup, const std::function<bool(int)>& keep = {});
+EdgeUses edgeUses(const TriangleSoup& soup, const std::function<bool(int)>& keep = {});
 
 // f(first, last) for each edge's run [first, last) of `uses` (grouped as edgeUses gives them).
 template <typename F>
-void forEachEdge(const std::vector<EdgeUse>& uses, F&& f)
+void forEachEdge(const EdgeUses& uses, F&& f)
 {
   for (std::size_t first = 0; first < uses.size();)
   {

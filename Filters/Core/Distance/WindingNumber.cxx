@@ -37,7 +37,7 @@ WindingNumber::WindingNumber(const TriangleSoup& soup, const WindingNumberSettin
 
 // Bottom up: a leaf's moments from its triangles, an inner node's from its children's. The radius
 // is the smaller of two bounds: the farthest corner of the node's box, and the children's balls.
-void WindingNumber::moments(int index, const std::vector<AABBTree::Node>& tree)
+void WindingNumber::moments(int index, const HierarchyNodes& tree)
 {
   const AABBTree::Node& t = tree[index];
   Node node;

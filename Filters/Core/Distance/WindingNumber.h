@@ -51,7 +51,7 @@ private:
     int first;     // leaf: first slot in Order; inner: left child (right = first + 1)
     int count;     // leaf: triangles; inner: 0
   };
-  void moments(int index, const std::vector<AABBTree::Node>& tree);
+  void moments(int index, const HierarchyNodes& tree);
   double solidAngle(int triangle, const Vec3& x) const;
 
   std::vector<std::array<Vec3, 3>> Corners;

@@ -139,11 +139,20 @@ std::vector<Nearest> nearestPoints(
           }
         });
       };
-      // Most samples lie on the surface: a small box finds them (a hit within it is the nearest).
-      search(std::min(near, reach));
-      if (hit.triangle < 0 && near < reach)
+      // Most samples lie on the surface: a small box finds them (a hit within it is the nearest);
+      // the rest mostly within a third of the reach, whose box holds a ninth of the triangles.
+      double searched = 0;
+      for (const double radius : { std::min(near, reach), reach / 3, reach })
       {
-        search(reach);
+        if (radius > searched)
+        {
+          search(radius);
+          searched = radius;
+        }
+        if (hit.triangle >= 0)
+        {
+          break;
+        }
       }
     }
   });

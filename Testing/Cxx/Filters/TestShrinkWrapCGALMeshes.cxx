@@ -112,7 +112,7 @@ struct Figures
 std::vector<shrinkwrap::Vec3> rimPoints(const shrinkwrap::TriangleSoup& soup)
 {
   const shrinkwrap::TriangleSoup welded = shrinkwrap::weldDuplicatePoints(soup);
-  const std::vector<shrinkwrap::EdgeUse> uses = shrinkwrap::edgeUses(welded);
+  const shrinkwrap::EdgeUses uses = shrinkwrap::edgeUses(welded);
   std::vector<shrinkwrap::Vec3> points;
   shrinkwrap::forEachEdge(uses, [&](std::size_t first, std::size_t last) {
     if (last - first == 1)

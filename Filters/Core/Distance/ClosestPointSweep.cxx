@@ -40,7 +40,7 @@ struct Envelope
 
   // The sites the line's nodes hold (those of nodes first .. end - 1 only), each run once.
   template <typename OffsetOf>
-  void collect(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf,
+  void collect(const Line& line, int axis, const SiteList& sites, OffsetOf&& offsetOf,
     int first = 0, int end = -1)
   {
     this->candidates.clear();
@@ -54,8 +54,7 @@ struct Envelope
     }
   }
   template <typename OffsetOf>
-  void add(
-    const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf, std::int32_t s)
+  void add(const Line& line, int axis, const SiteList& sites, OffsetOf&& offsetOf, std::int32_t s)
   {
     this->candidates.push_back({ sites[s][axis] - line.origin, offsetOf(sites[s]), s });
   }
@@ -154,8 +153,8 @@ struct Envelope
   }
 
   template <typename OffsetOf>
-  void apply(const Line& line, int axis, const std::vector<Vec3>& sites, OffsetOf&& offsetOf,
-    float* distance)
+  void apply(
+    const Line& line, int axis, const SiteList& sites, OffsetOf&& offsetOf, float* distance)
   {
     this->collect(line, axis, sites, offsetOf);
     if (!this->candidates.empty())
@@ -169,8 +168,8 @@ struct Envelope
 // The pass along `axis`: every line parallel to it, in parallel. Lines are taken in index order
 // (x fastest among the others), so neighbouring lines reuse the same cache lines. False when
 // `progress` asked to stop (reported over batches of lines).
-bool envelopePass(const GridLattice& lattice, const std::vector<Vec3>& sites, std::int32_t* site,
-  int axis, float* distance, const Progress& progress)
+bool envelopePass(const GridLattice& lattice, const SiteList& sites, std::int32_t* site, int axis,
+  float* distance, const Progress& progress)
 {
   const auto& d = lattice.dims;
   const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2; // the two other axes, u varying fastest
@@ -197,8 +196,8 @@ bool envelopePass(const GridLattice& lattice, const std::vector<Vec3>& sites, st
 }
 } // namespace
 
-bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sites,
-  std::int32_t* siteOfNode, float* distance, const Progress& progress)
+bool sweepClosestPoints(const GridLattice& lattice, const SiteList& sites, std::int32_t* siteOfNode,
+  float* distance, const Progress& progress)
 {
   for (int axis = 0; axis < 3; ++axis)
   {
@@ -211,7 +210,7 @@ bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sit
   return true;
 }
 
-bool sweepClosestPointsInPlanes(const GridLattice& slab, const std::vector<Vec3>& sites,
+bool sweepClosestPointsInPlanes(const GridLattice& slab, const SiteList& sites,
   std::int32_t* siteOfNode, const Progress& progress)
 {
   for (int axis = 0; axis < 2; ++axis)
@@ -259,7 +258,7 @@ auto columnOffset(const GridLattice& whole, int i, int j)
 } // namespace
 
 ColumnSites columnWinners(const SlabPlanes& planes, const std::vector<std::array<int, 2>>& wanted,
-  const std::vector<Vec3>& sites, std::int32_t* siteOfNode)
+  const SiteList& sites, std::int32_t* siteOfNode)
 {
   const GridLattice& whole = planes.whole;
   const int nx = whole.dims[0], ny = whole.dims[1], nz = whole.dims[2];
@@ -315,8 +314,8 @@ ColumnSites columnWinners(const SlabPlanes& planes, const std::vector<std::array
   return result;
 }
 
-void sweepColumns(const SlabPlanes& planes, const std::vector<Vec3>& sites,
-  const ColumnSites& others, std::int32_t* siteOfNode, float* distance)
+void sweepColumns(const SlabPlanes& planes, const SiteList& sites, const ColumnSites& others,
+  std::int32_t* siteOfNode, float* distance)
 {
   const GridLattice& whole = planes.whole;
   const int nx = whole.dims[0];

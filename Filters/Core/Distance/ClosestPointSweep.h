@@ -21,8 +21,8 @@ namespace shrinkwrap
 
 // siteOfNode: index into sites for each node, -1 where none yet; on return every node has the
 // nearest site found (if there is any site at all), and distance its distance to it.
-bool sweepClosestPoints(const GridLattice& lattice, const std::vector<Vec3>& sites,
-  std::int32_t* siteOfNode, float* distance, const Progress& progress);
+bool sweepClosestPoints(const GridLattice& lattice, const SiteList& sites, std::int32_t* siteOfNode,
+  float* distance, const Progress& progress);
 
 // One slab of the planes of a lattice along z, computed by one of several processes
 // (SlabDistance.h).
@@ -43,19 +43,19 @@ struct ColumnSites
 
 // The x and y passes over the slab's planes (`slab`: the lattice of those planes); they need
 // nothing from other planes.
-bool sweepClosestPointsInPlanes(const GridLattice& slab, const std::vector<Vec3>& sites,
+bool sweepClosestPointsInPlanes(const GridLattice& slab, const SiteList& sites,
   std::int32_t* siteOfNode, const Progress& progress);
 // For each column, the sites of the owned planes that are the nearest of those to some node of the
 // column in the wanted plane ranges (whole-grid [first, last], disjoint, ascending; the planes
 // other processes compute): all that their z pass needs of this one.
 ColumnSites columnWinners(const SlabPlanes& planes, const std::vector<std::array<int, 2>>& wanted,
-  const std::vector<Vec3>& sites, std::int32_t* siteOfNode);
+  const SiteList& sites, std::int32_t* siteOfNode);
 // The z pass of the slab: every node takes the site nearest to it among those of the owned planes
 // in its column and `others` (the other processes' winners), with its distance. Equals the whole
 // grid's z pass on these planes: the nearest site of a column, seen from a node, is the nearest of
 // some process's planes, and that process's winners hold it.
-void sweepColumns(const SlabPlanes& planes, const std::vector<Vec3>& sites,
-  const ColumnSites& others, std::int32_t* siteOfNode, float* distance);
+void sweepColumns(const SlabPlanes& planes, const SiteList& sites, const ColumnSites& others,
+  std::int32_t* siteOfNode, float* distance);
 
 } // namespace shrinkwrap
 

@@ -12,7 +12,7 @@
 namespace shrinkwrap
 {
 
-std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std::int64_t>& nodes)
+std::array<int, 6> nodeExtent(const GridLattice& lattice, const IndexList& nodes)
 {
   std::array<int, 6> e = { lattice.dims[0], -1, lattice.dims[1], -1, lattice.dims[2], -1 };
   for (std::int64_t n : nodes)
@@ -27,13 +27,12 @@ std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std:
   return e;
 }
 
-std::vector<std::int64_t> bandNodes(const GridLattice& lattice,
-  const std::vector<std::int64_t>& cells, int extraLayers, const std::array<bool, 6>& gridFaces,
-  std::uint8_t* state)
+IndexList bandNodes(const GridLattice& lattice, const IndexList& cells, int extraLayers,
+  const std::array<bool, 6>& gridFaces, std::uint8_t* state)
 {
   const std::int64_t sx = 1, sy = lattice.dims[0],
                      sz = static_cast<std::int64_t>(lattice.dims[0]) * lattice.dims[1];
-  std::vector<std::int64_t> nodes;
+  IndexList nodes;
   nodes.reserve(cells.size() * 3);
   auto add = [&](std::int64_t n) {
     if (state[n] == Unvisited)
@@ -84,9 +83,9 @@ std::vector<std::int64_t> bandNodes(const GridLattice& lattice,
   return nodes;
 }
 
-bool computeBand(const DistanceSource& source, const GridLattice& lattice,
-  std::vector<std::int64_t> nodes, double searchRadius, double onSurface, const Progress& progress,
-  DistanceBand& band, std::uint8_t* state)
+bool computeBand(const DistanceSource& source, const GridLattice& lattice, IndexList nodes,
+  double searchRadius, double onSurface, const Progress& progress, DistanceBand& band,
+  std::uint8_t* state)
 {
   const std::size_t n = nodes.size();
   band.nodes = std::move(nodes);

@@ -32,13 +32,13 @@ inline bool isBand(std::uint8_t state)
 
 struct DistanceBand
 {
-  std::vector<std::int64_t> nodes; // grid node indices
-  std::vector<Vec3> closest;       // closest surface point of each band node
-  std::vector<float> distance;     // exact unsigned distance
-  std::vector<signed char> sign;   // +1 outside, -1 inside, from the closest feature's pseudonormal
-  std::vector<std::array<float, 3>> normal; // the pseudonormal there (unit length)
-  std::vector<std::int32_t> element;        // the triangle the closest point lies on
-  std::vector<char> sure;                   // SourcePoint::sure: whether `sign` can be trusted
+  IndexList nodes;               // grid node indices
+  SiteList closest;              // closest surface point of each band node
+  LargeVector<float> distance;   // exact unsigned distance
+  LargeVector<signed char> sign; // +1 outside, -1 inside, from the closest feature's pseudonormal
+  LargeVector<std::array<float, 3>> normal; // the pseudonormal there (unit length)
+  LargeVector<std::int32_t> element;        // the triangle the closest point lies on
+  LargeVector<char> sure;                   // SourcePoint::sure: whether `sign` can be trusted
 };
 
 // Marks the nodes of the given cells (and `extraLayers` rings of 6-neighbours) as band nodes in
@@ -63,23 +63,22 @@ inline double onSurfaceDistance(const GridLattice& lattice)
   return 1e-6 * lattice.minSpacing();
 }
 // imin, imax, jmin, jmax, kmin, kmax of the given nodes (imin > imax when there are none).
-std::array<int, 6> nodeExtent(const GridLattice& lattice, const std::vector<std::int64_t>& nodes);
+std::array<int, 6> nodeExtent(const GridLattice& lattice, const IndexList& nodes);
 
 inline std::array<bool, 6> allFaces(bool on)
 {
   return { on, on, on, on, on, on };
 }
-std::vector<std::int64_t> bandNodes(const GridLattice& lattice,
-  const std::vector<std::int64_t>& cells, int extraLayers, const std::array<bool, 6>& gridFaces,
-  std::uint8_t* state);
+IndexList bandNodes(const GridLattice& lattice, const IndexList& cells, int extraLayers,
+  const std::array<bool, 6>& gridFaces, std::uint8_t* state);
 
 // Exact distances, closest points and signs at the band nodes; the signs go into state too (band
 // nodes within `onSurface` of the surface stay BandOnSurface). Returns false if aborted.
 // searchRadius bounds the distance of band nodes near the surface (a node farther off is searched
 // again without bound).
-bool computeBand(const DistanceSource& source, const GridLattice& lattice,
-  std::vector<std::int64_t> nodes, double searchRadius, double onSurface, const Progress& progress,
-  DistanceBand& band, std::uint8_t* state);
+bool computeBand(const DistanceSource& source, const GridLattice& lattice, IndexList nodes,
+  double searchRadius, double onSurface, const Progress& progress, DistanceBand& band,
+  std::uint8_t* state);
 
 } // namespace shrinkwrap
 

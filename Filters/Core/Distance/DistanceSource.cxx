@@ -31,7 +31,7 @@ TriangleSource::TriangleSource(const TriangleSoup& soup)
 }
 
 bool TriangleSource::outline(
-  const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const
+  const GridLattice& lattice, const Progress& progress, IndexList& cells) const
 {
   return outlineCells(this->Soup, lattice, progress, cells);
 }

@@ -56,8 +56,8 @@ public:
   virtual ~DistanceSource() = default;
   virtual Box bounds() const = 0;
   // The grid cells the surface touches; false if progress asked to stop.
-  virtual bool outline(const GridLattice& lattice, const Progress& progress,
-    std::vector<std::int64_t>& cells) const = 0;
+  virtual bool outline(
+    const GridLattice& lattice, const Progress& progress, IndexList& cells) const = 0;
   // The nearest surface point to x within sqrt(maxSquaredDistance).
   virtual SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const = 0;
 
@@ -90,8 +90,8 @@ public:
   // (ConsistentOrientation.h).
   explicit TriangleSource(const TriangleSoup& soup);
   Box bounds() const override { return this->Soup.bounds(); }
-  bool outline(const GridLattice& lattice, const Progress& progress,
-    std::vector<std::int64_t>& cells) const override;
+  bool outline(
+    const GridLattice& lattice, const Progress& progress, IndexList& cells) const override;
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   long long boundaryEdges() const { return this->Normals.boundaryEdges(); }
   long long nonManifoldEdges() const { return this->Normals.nonManifoldEdges(); }

@@ -4,6 +4,7 @@
 #define ShrinkWrap_GridLattice_h
 
 #include "Common/Box.h"
+#include "Common/HugePages.h"
 #include "Common/Status.h"
 
 #include <algorithm>
@@ -13,6 +14,11 @@
 
 namespace shrinkwrap
 {
+
+// Grid node or cell indices, and points per node or site (the closest points that the
+// closest-point passes spread): a fine grid's band, outline and sites are megabytes, in huge pages.
+using IndexList = LargeVector<std::int64_t>;
+using SiteList = LargeVector<Vec3>;
 
 struct GridLattice
 {

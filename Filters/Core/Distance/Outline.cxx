@@ -61,8 +61,8 @@ void subdivide(const TriangleSoup& soup, const GridLattice& lattice, const std::
 }
 } // namespace
 
-bool outlineCells(const TriangleSoup& soup, const GridLattice& lattice, const Progress& progress,
-  std::vector<std::int64_t>& cells)
+bool outlineCells(
+  const TriangleSoup& soup, const GridLattice& lattice, const Progress& progress, IndexList& cells)
 {
   cells.clear();
   const std::array<int, 3> last = { lattice.dims[0] - 2, lattice.dims[1] - 2, lattice.dims[2] - 2 };

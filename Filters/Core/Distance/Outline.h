@@ -15,8 +15,8 @@ namespace shrinkwrap
 
 // Algorithm 2: grid cells intersected by the soup, found by an octree whose nodes pass the
 // triangles touching them on to their children. Returns false if aborted.
-bool outlineCells(const TriangleSoup& soup, const GridLattice& lattice, const Progress& progress,
-  std::vector<std::int64_t>& cells);
+bool outlineCells(
+  const TriangleSoup& soup, const GridLattice& lattice, const Progress& progress, IndexList& cells);
 
 } // namespace shrinkwrap
 

@@ -28,7 +28,7 @@ PointSource::PointSource(PointList points)
 }
 
 bool PointSource::outline(
-  const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const
+  const GridLattice& lattice, const Progress& progress, IndexList& cells) const
 {
   cells.clear();
   cells.reserve(this->Points.size());

@@ -31,8 +31,8 @@ public:
   explicit PointSource(const std::vector<Vec3>& points); // copied (a soup's points, a test's)
   Box bounds() const override { return this->Bounds; }
   // The cells that hold a point (Algorithm 2's outline reduces to that).
-  bool outline(const GridLattice& lattice, const Progress& progress,
-    std::vector<std::int64_t>& cells) const override;
+  bool outline(
+    const GridLattice& lattice, const Progress& progress, IndexList& cells) const override;
   // The nearest input point; side 0 and not sure: a point has no inside.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   const PointList& points() const { return this->Points; }

@@ -34,8 +34,8 @@ public:
   PointSurface(const PointSurface&) = delete;
   PointSurface& operator=(const PointSurface&) = delete;
   Box bounds() const override { return this->Points->bounds(); }
-  bool outline(const GridLattice& lattice, const Progress& progress,
-    std::vector<std::int64_t>& cells) const override
+  bool outline(
+    const GridLattice& lattice, const Progress& progress, IndexList& cells) const override
   {
     return this->Points->outline(lattice, progress, cells);
   }

@@ -213,7 +213,7 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   // Lines 2-5 (progress from 0.05 on: line 1 built the source): the octree outline and exact
   // distances on its nodes.
   auto clock = std::chrono::steady_clock::now();
-  std::vector<std::int64_t> cells;
+  IndexList cells;
   if (!source.outline(lattice, progress.stage(0.05, 0.2), cells))
   {
     return result;
@@ -225,7 +225,7 @@ SignedDistanceResult computeSignedDistance(const DistanceSource& source, const G
   const Box grid = lattice.bounds();
   const Box surface = source.bounds();
   const bool meshInsideGrid = strictlyInside(surface, grid);
-  std::vector<std::int64_t> nodes =
+  IndexList nodes =
     bandNodes(lattice, cells, settings.bandLayers, allFaces(!meshInsideGrid), state.data());
   if (!computeBand(source, lattice, std::move(nodes),
         bandSearchRadius(lattice, settings.bandLayers), onSurfaceDistance(lattice),

@@ -321,7 +321,7 @@ private:
   bool NeedWinding = false;
   long long BandSize = 0;
   std::vector<std::int32_t> Site;
-  std::vector<Vec3> SitePoints, SiteNormals;
+  SiteList SitePoints, SiteNormals;
 };
 
 // Round 1: who computes which planes, and who owns them.
@@ -361,13 +361,13 @@ void SlabRun::bandOfSlab()
   {
     return;
   }
-  std::vector<std::int64_t> cells;
+  IndexList cells;
   this->Stopped = !this->Source.outline(this->OuterLattice, this->Report.stage(0.05, 0.2), cells);
   this->State.assign(this->OuterLattice.nodeCount(), Unvisited);
   std::array<bool, 6> faces = allFaces(!this->MeshInsideGrid);
   faces[4] = faces[4] && this->Outer.first == 0;
   faces[5] = faces[5] && this->Outer.last == this->Planes - 1;
-  std::vector<std::int64_t> nodes =
+  IndexList nodes =
     bandNodes(this->OuterLattice, cells, this->Settings.bandLayers, faces, this->State.data());
   // Exact distances where they are used: the slab's planes and the plane beyond each side.
   const std::int64_t from = std::max(0, this->Mine.first - 1 - this->Outer.first) * this->PlaneSize;
@@ -527,7 +527,7 @@ bool SlabRun::sweep(float* distance)
   }
   Writer message;
   message.put(winners.start);
-  auto winning = [&](const std::vector<Vec3>& of) {
+  auto winning = [&](const SiteList& of) {
     std::vector<Vec3> values(winners.sites.size());
     std::transform(winners.sites.begin(), winners.sites.end(), values.begin(),
       [&](std::int32_t s) { return of[s]; });

@@ -22,10 +22,10 @@ Box UnionSource::bounds() const
 }
 
 bool UnionSource::outline(
-  const GridLattice& lattice, const Progress& progress, std::vector<std::int64_t>& cells) const
+  const GridLattice& lattice, const Progress& progress, IndexList& cells) const
 {
   cells.clear();
-  std::vector<std::int64_t> own;
+  IndexList own;
   const double share = 1.0 / std::max<std::size_t>(this->Parts.size(), 1);
   for (std::size_t i = 0; i < this->Parts.size(); ++i)
   {

@@ -18,8 +18,8 @@ class UnionSource : public DistanceSource
 public:
   explicit UnionSource(std::vector<std::shared_ptr<const DistanceSource>> parts);
   Box bounds() const override;
-  bool outline(const GridLattice& lattice, const Progress& progress,
-    std::vector<std::int64_t>& cells) const override;
+  bool outline(
+    const GridLattice& lattice, const Progress& progress, IndexList& cells) const override;
   // The nearest of the parts' nearest points, side 0 and not sure.
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override;
   std::vector<std::array<Vec3, 2>> rims(double creaseAngle) const override; // all parts' rims

@@ -8,13 +8,13 @@
 namespace shrinkwrap
 {
 
-std::vector<Vec3> trustedNormals(const DistanceSource& source, const DistanceBand& band)
+SiteList trustedNormals(const DistanceSource& source, const DistanceBand& band)
 {
   // A site is trusted where its pseudonormal is sure and its triangle's sides are confirmed.
   // Untrusted sites get n = 0: the winding number decides.
   const std::vector<char>& confirmed = source.sidesConfirmed();
   const std::size_t nb = band.nodes.size();
-  std::vector<Vec3> normal(nb);
+  SiteList normal(nb);
   parallelFor(0, static_cast<Index>(nb), [&](Index b, Index e) {
     for (Index k = b; k < e; ++k)
     {
@@ -29,8 +29,8 @@ std::vector<Vec3> trustedNormals(const DistanceSource& source, const DistanceBan
 }
 
 WindingSignResult signByWindingNumber(const DistanceSource& source, const GridLattice& lattice,
-  const std::vector<Vec3>& sitePoints, const std::vector<Vec3>& normal, const std::int32_t* site,
-  std::uint8_t* state, const Progress& progress)
+  const SiteList& sitePoints, const SiteList& normal, const std::int32_t* site, std::uint8_t* state,
+  const Progress& progress)
 {
   WindingSignResult result;
   for (char c : source.sidesConfirmed())

@@ -26,15 +26,15 @@ struct WindingSignResult
 
 // Per band node, the normal its side may be taken from: its pseudonormal where that is sure and
 // the triangle's sides are confirmed, else zero (the winding number decides).
-std::vector<Vec3> trustedNormals(const DistanceSource& source, const DistanceBand& band);
+SiteList trustedNormals(const DistanceSource& source, const DistanceBand& band);
 
 // Relabels every node of `state` (BandOnSurface nodes stay). `site`: each node's site from the
 // closest-point passes, an index into sitePoints and siteNormals (trustedNormals of the band, and
 // of other processes' sites for a slab). The source must have a winding number (sidesConfirmed()
 // not empty).
 WindingSignResult signByWindingNumber(const DistanceSource& source, const GridLattice& lattice,
-  const std::vector<Vec3>& sitePoints, const std::vector<Vec3>& siteNormals,
-  const std::int32_t* site, std::uint8_t* state, const Progress& progress);
+  const SiteList& sitePoints, const SiteList& siteNormals, const std::int32_t* site,
+  std::uint8_t* state, const Progress& progress);
 
 } // namespace shrinkwrap
 

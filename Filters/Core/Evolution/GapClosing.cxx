@@ -42,12 +42,11 @@ std::vector<char> dilationNodes(const DistanceGrid& field, double radius, bool f
 
 // The nodes within a cell of D's boundary by their distance to the target (every node with a
 // neighbour across it), but for those of filled cavities.
-std::vector<std::int64_t> nodesNearBoundary(
-  const DistanceGrid& field, double r, const std::vector<char>& inside)
+IndexList nodesNearBoundary(const DistanceGrid& field, double r, const std::vector<char>& inside)
 {
   const double width = field.lattice().spacing.maxCoeff();
   const FieldValues& d = field.values();
-  std::vector<std::int64_t> nodes;
+  IndexList nodes;
   for (std::size_t n = 0; n < d.size(); ++n)
   {
     if (std::abs(d[n] - r) < width && (d[n] < r || !inside[n]))
@@ -188,8 +187,8 @@ namespace
 // The closing's sites: a boundary point of D for each node near its boundary (found: it has one).
 struct ClosingSites
 {
-  std::vector<std::int64_t> near;
-  std::vector<Vec3> sites;
+  IndexList near;
+  SiteList sites;
   std::vector<char> found;
 };
 

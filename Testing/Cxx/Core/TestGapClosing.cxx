@@ -50,10 +50,7 @@ public:
     b.extend(Vec3(C + R, R, R));
     return b;
   }
-  bool outline(const GridLattice&, const Progress&, std::vector<std::int64_t>&) const override
-  {
-    return false;
-  }
+  bool outline(const GridLattice&, const Progress&, IndexList&) const override { return false; }
   SourcePoint closestPoint(const Vec3& x, double maxSquaredDistance) const override
   {
     const Vec3 centre(x[0] < 0 ? -C : C, 0, 0);

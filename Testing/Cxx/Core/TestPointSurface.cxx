@@ -66,10 +66,7 @@ public:
   {
   }
   Box bounds() const override { return Box::around(std::vector<Vec3>{ this->P }); }
-  bool outline(const GridLattice&, const Progress&, std::vector<std::int64_t>&) const override
-  {
-    return true;
-  }
+  bool outline(const GridLattice&, const Progress&, IndexList&) const override { return true; }
   SourcePoint closestPoint(const Vec3& x, double) const override
   {
     SourcePoint p;

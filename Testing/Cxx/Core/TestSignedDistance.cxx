@@ -29,7 +29,7 @@ struct Setup
 void outline()
 {
   const Setup s;
-  std::vector<std::int64_t> cells;
+  IndexList cells;
   SW_CHECK(outlineCells(s.soup, s.lattice, {}, cells), "the outline completes");
   std::set<std::int64_t> found(cells.begin(), cells.end());
   // Brute force: every cell box against every triangle.

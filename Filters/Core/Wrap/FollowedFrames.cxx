@@ -113,28 +113,42 @@ bool land(WrapSession& session, const FollowSettings& follow, const Progress& pr
 }
 } // namespace
 
-bool carryWithTarget(
-  const TriangleSoup& before, const TriangleSoup& after, std::vector<Vec3>& points)
+bool carryWithTarget(const TriangleSoup& before, const TriangleSoup& after,
+  std::vector<Vec3>& points, const TriangleSource* measured)
 {
   if (before.points.size() != after.points.size() || before.triangles != after.triangles ||
     before.triangles.empty() || points.empty())
   {
     return false;
   }
-  const AABBTree tree(before);
+  const std::unique_ptr<const AABBTree> tree =
+    measured ? nullptr : std::make_unique<const AABBTree>(before);
+  const auto nearestOn = [&](const Vec3& x) { // the triangle of `before` and the point on it
+    if (!measured)
+    {
+      const ClosestHit hit = tree->closestPoint(x);
+      return std::make_pair(hit.triangle, hit.point);
+    }
+    const SourcePoint p = measured->closestPoint(x, std::numeric_limits<double>::infinity());
+    return std::make_pair(p.found ? measured->inputTriangle(p.element) : -1, p.point);
+  };
   const std::vector<Vec3> from = points;
   parallelFor(0, static_cast<Index>(points.size()), kQueryGrain, [&](Index b, Index e) {
     for (Index i = b; i < e; ++i)
     {
-      const ClosestHit hit = tree.closestPoint(from[i]);
-      const auto& t = before.triangles[hit.triangle];
+      const auto [triangle, point] = nearestOn(from[i]);
+      if (triangle < 0)
+      {
+        continue;
+      }
+      const auto& t = before.triangles[triangle];
       const std::array<double, 3> w =
-        barycentric(hit.point, before.points[t[0]], before.points[t[1]], before.points[t[2]]);
+        barycentric(point, before.points[t[0]], before.points[t[1]], before.points[t[2]]);
       const Vec3 foot =
         w[0] * after.points[t[0]] + w[1] * after.points[t[1]] + w[2] * after.points[t[2]];
       const Vec3 n0 = unitNormal(before.points[t[0]], before.points[t[1]], before.points[t[2]]);
       const Vec3 n1 = unitNormal(after.points[t[0]], after.points[t[1]], after.points[t[2]]);
-      const Vec3 offset = from[i] - hit.point;
+      const Vec3 offset = from[i] - point;
       const double along = offset.dot(n0); // the rest (off a rim or corner) keeps its direction
       points[i] = foot + along * n1 + (offset - along * n0);
     }
@@ -162,7 +176,8 @@ Status wrapFrame(const WrapTarget& target, const WrapPlan& plan, const FollowedW
     SurfaceMesh start = previous->mesh;
     const std::vector<Vec3> before = start.points();
     const bool moved = previous->target && target.polygons &&
-      carryWithTarget(*previous->target, *target.polygons, start.points());
+      carryWithTarget(
+        *previous->target, *target.polygons, start.points(), previous->measured.get());
     if (moved) // where the carried surface would pass through itself, it stays
     {
       holdNewCrossings(before, start.points(), start.triangles());
@@ -255,6 +270,8 @@ FollowedWrap followedWrap(const WrapSession& session, int step,
 {
   FollowedWrap followed;
   followed.target = std::move(target);
+  followed.measured =
+    std::dynamic_pointer_cast<const TriangleSource>(session.fields().target.exactShared());
   const WrapSession::Surface surface = session.surface(step);
   if (!SurfaceMesh::build(surface.points, *surface.cached->triangles, followed.mesh))
   {

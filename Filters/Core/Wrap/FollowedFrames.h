@@ -47,7 +47,10 @@ struct FollowedWrap
 {
   SurfaceMesh mesh; // target units, with kTrackProperty and kOriginProperty
   std::shared_ptr<const TriangleSoup> target; // the frame's triangles (none: points)
-  std::int64_t nextTrack = 0;                 // the first id not yet given
+  // The same triangles as the frame's session measured them (null: not kept): its tree finds the
+  // wrap's feet on them when the next frame carries it.
+  std::shared_ptr<const TriangleSource> measured;
+  std::int64_t nextTrack = 0; // the first id not yet given
   // Per vertex: how far it moved since the previous frame (from where it was carried from; zero
   // on a frame started afresh), target units.
   std::vector<Vec3> displacement;
@@ -113,9 +116,10 @@ struct FrameReport
 // Moves `points` (near `before`) with the target from `before` to `after`, which must have the
 // same triangles on the same number of points: each point keeps the barycentric place of its
 // closest point on its triangle, and its offset along that triangle's normal. False (nothing
-// moved) when the two do not correspond.
-bool carryWithTarget(
-  const TriangleSoup& before, const TriangleSoup& after, std::vector<Vec3>& points);
+// moved) when the two do not correspond. `measured`, if given, is `before` as a distance source
+// (its tree is used instead of building one).
+bool carryWithTarget(const TriangleSoup& before, const TriangleSoup& after,
+  std::vector<Vec3>& points, const TriangleSource* measured = nullptr);
 
 // The session of frame `target` (planned as `plan`): started from `previous` carried when there is
 // one and it fits the field, else as startWrap does. Then advanced: a carried start until it lands,

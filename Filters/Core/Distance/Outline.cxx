@@ -30,32 +30,57 @@ Box cellBox(const GridLattice& lattice, const std::array<int, 3>& lo, int size)
 }
 
 // Algorithm 2, lines 3-11 for one node: the children that the surface touches, with their
-// triangles.
+// triangles. A triangle is tested only against the children its box reaches (a margin wider than
+// the cells' pad: the exact test decides).
 void subdivide(const TriangleSoup& soup, const GridLattice& lattice, const std::array<int, 3>& last,
   const OctreeNode& node, std::vector<OctreeNode>& children)
 {
   const int half = node.size / 2;
+  std::array<OctreeNode, 8> child;
+  std::array<Box, 8> box;
+  std::array<bool, 8> inGrid;
   for (int octant = 0; octant < 8; ++octant)
   {
-    OctreeNode child{ { node.lo[0] + (octant & 1) * half, node.lo[1] + ((octant >> 1) & 1) * half,
-                        node.lo[2] + ((octant >> 2) & 1) * half },
-      half, {} };
-    if (child.lo[0] > last[0] || child.lo[1] > last[1] || child.lo[2] > last[2])
+    child[octant] =
+      OctreeNode{ { node.lo[0] + (octant & 1) * half, node.lo[1] + ((octant >> 1) & 1) * half,
+                    node.lo[2] + ((octant >> 2) & 1) * half },
+        half, {} };
+    inGrid[octant] = child[octant].lo[0] <= last[0] && child[octant].lo[1] <= last[1] &&
+      child[octant].lo[2] <= last[2];
+    box[octant] = cellBox(lattice, child[octant].lo, half);
+  }
+  const Vec3 mid = lattice.position(node.lo[0] + half, node.lo[1] + half, node.lo[2] + half);
+  const Vec3 margin = 1e-5 * lattice.spacing;
+  for (int t : node.triangles)
+  {
+    const auto& tri = soup.triangles[t];
+    const Vec3 &a = soup.points[tri[0]], &b = soup.points[tri[1]], &c = soup.points[tri[2]];
+    const Vec3 lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+    std::array<int, 3> sides; // per axis: bit 0 the lower half reached, bit 1 the upper
+    for (int axis = 0; axis < 3; ++axis)
     {
-      continue; // outside the grid
+      sides[axis] = (lo[axis] <= mid[axis] + margin[axis] ? 1 : 0) |
+        (hi[axis] >= mid[axis] - margin[axis] ? 2 : 0);
     }
-    const Box box = cellBox(lattice, child.lo, half);
-    for (int t : node.triangles)
+    for (int octant = 0; octant < 8; ++octant)
     {
-      const auto& tri = soup.triangles[t];
-      if (triangleOverlapsBox(soup.points[tri[0]], soup.points[tri[1]], soup.points[tri[2]], box))
+      const bool reached = (sides[0] >> (octant & 1) & 1) &&
+        (sides[1] >> ((octant >> 1) & 1) & 1) && (sides[2] >> ((octant >> 2) & 1) & 1);
+      const Box& cell = box[octant];
+      // A triangle inside the child's box overlaps it: no separating axis to look for.
+      const bool inside =
+        (lo.array() >= cell.min.array()).all() && (hi.array() <= cell.max.array()).all();
+      if (reached && inGrid[octant] && (inside || triangleOverlapsBox(a, b, c, cell)))
       {
-        child.triangles.push_back(t);
+        child[octant].triangles.push_back(t);
       }
     }
-    if (!child.triangles.empty())
+  }
+  for (int octant = 0; octant < 8; ++octant)
+  {
+    if (!child[octant].triangles.empty())
     {
-      children.push_back(std::move(child));
+      children.push_back(std::move(child[octant]));
     }
   }
 }

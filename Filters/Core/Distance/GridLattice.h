@@ -19,6 +19,7 @@ namespace shrinkwrap
 // closest-point passes spread): a fine grid's band, outline and sites are megabytes, in huge pages.
 using IndexList = LargeVector<std::int64_t>;
 using SiteList = LargeVector<Vec3>;
+using NodeFlags = LargeVector<char>; // a yes or no per node
 
 struct GridLattice
 {

@@ -14,7 +14,7 @@ namespace
 class FreeRuns
 {
 public:
-  FreeRuns(const GridLattice& lattice, const std::vector<char>& blocked)
+  FreeRuns(const GridLattice& lattice, const NodeFlags& blocked)
     : Dims(lattice.dims)
   {
     const int rows = this->Dims[1] * this->Dims[2];
@@ -47,7 +47,7 @@ public:
       }
   }
 
-  std::vector<char> reachingBorder()
+  NodeFlags reachingBorder()
   {
     std::vector<char> regionReached(this->Runs.size(), 0);
     for (int k = 0; k < this->Dims[2]; ++k)
@@ -61,8 +61,7 @@ public:
             regionReached[this->root(r)] = 1;
         }
       }
-    std::vector<char> nodes(
-      static_cast<std::size_t>(this->Dims[0]) * this->Dims[1] * this->Dims[2], 0);
+    NodeFlags nodes(static_cast<std::size_t>(this->Dims[0]) * this->Dims[1] * this->Dims[2], 0);
     for (int row = 0; row + 1 < static_cast<int>(this->RowStart.size()); ++row)
     {
       const auto first = nodes.begin() + static_cast<std::int64_t>(row) * this->Dims[0];
@@ -116,7 +115,7 @@ private:
 };
 } // namespace
 
-std::vector<char> reachedFromBorder(const GridLattice& lattice, const std::vector<char>& blocked)
+NodeFlags reachedFromBorder(const GridLattice& lattice, const NodeFlags& blocked)
 {
   return FreeRuns(lattice, blocked).reachingBorder();
 }

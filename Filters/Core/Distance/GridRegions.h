@@ -14,7 +14,7 @@ namespace shrinkwrap
 
 // Per node of `lattice`: 1 where it is free (blocked[n] == 0) and a path of free face neighbours
 // joins it to a node on the grid's border.
-std::vector<char> reachedFromBorder(const GridLattice& lattice, const std::vector<char>& blocked);
+NodeFlags reachedFromBorder(const GridLattice& lattice, const NodeFlags& blocked);
 
 } // namespace shrinkwrap
 

@@ -35,13 +35,10 @@ LargeVector<Neighbours> manifoldNeighbours(const TriangleSoup& soup)
     if (last - first == 2)
     {
       const EdgeUse &a = uses[first], &b = uses[first + 1];
+      // A kept triangle has three distinct edges, so three neighbours at most.
       Neighbours &na = neighbours[a.triangle], &nb = neighbours[b.triangle];
-      // (a triangle naming one edge twice, as (p, q, p), has at most three uses in all)
-      if (na.count < 3 && nb.count < 3)
-      {
-        na.across[na.count++] = { b.triangle, a.forward == b.forward };
-        nb.across[nb.count++] = { a.triangle, a.forward == b.forward };
-      }
+      na.across[na.count++] = { b.triangle, a.forward == b.forward };
+      nb.across[nb.count++] = { a.triangle, a.forward == b.forward };
     }
   });
   return neighbours;

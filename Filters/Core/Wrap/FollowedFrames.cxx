@@ -1,7 +1,7 @@
 #include "Wrap/FollowedFrames.h"
 
 #include "Common/Parallel.h"
-#include "Distance/AABBTree.h"
+#include "Distance/DistanceSource.h"
 #include "Surface/SelfIntersections.h"
 #include "Wrap/TargetFeet.h"
 #include "Wrap/Wrap.h"
@@ -121,14 +121,13 @@ bool carryWithTarget(const TriangleSoup& before, const TriangleSoup& after,
   {
     return false;
   }
-  const std::unique_ptr<const AABBTree> tree =
-    measured ? nullptr : std::make_unique<const AABBTree>(before);
+  std::unique_ptr<const TriangleSource> own; // when the frame's own source was not kept
+  if (!measured)
+  {
+    own = std::make_unique<const TriangleSource>(before);
+    measured = own.get();
+  }
   const auto nearestOn = [&](const Vec3& x) { // the triangle of `before` and the point on it
-    if (!measured)
-    {
-      const ClosestHit hit = tree->closestPoint(x);
-      return std::make_pair(hit.triangle, hit.point);
-    }
     const SourcePoint p = measured->closestPoint(x, std::numeric_limits<double>::infinity());
     return std::make_pair(p.found ? measured->inputTriangle(p.element) : -1, p.point);
   };

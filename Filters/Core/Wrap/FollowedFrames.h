@@ -117,7 +117,7 @@ struct FrameReport
 // same triangles on the same number of points: each point keeps the barycentric place of its
 // closest point on its triangle, and its offset along that triangle's normal. False (nothing
 // moved) when the two do not correspond. `measured`, if given, is `before` as a distance source
-// (its tree is used instead of building one).
+// (else one is made of it).
 bool carryWithTarget(const TriangleSoup& before, const TriangleSoup& after,
   std::vector<Vec3>& points, const TriangleSource* measured = nullptr);
 

@@ -313,8 +313,12 @@ SelfIntersections findNewSelfIntersections(const SurfaceMesh& before, const std:
   {
     return fromPairs(triangles.size(), {});
   }
+  if (made.empty() || triangles.size() < 2)
+  {
+    return fromPairs(triangles.size(), {});
+  }
   const TriangleGrid grid(x, triangles);
-  if (made.empty() || triangles.size() < 2 || grid.empty() || stopped())
+  if (grid.empty() || stopped())
   {
     return fromPairs(triangles.size(), {});
   }
@@ -702,7 +706,7 @@ int holdNewCrossings(const std::vector<Vec3>& previous, std::vector<Vec3>& next,
   const auto stopped = [&] { return stop && stop(); };
   std::vector<int> moving;
   std::vector<Box> swept = sweptBoxes(previous, next, triangles, moving);
-  if (stopped())
+  if (moving.empty() || stopped())
   {
     return 0;
   }

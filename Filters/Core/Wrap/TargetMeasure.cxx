@@ -14,6 +14,8 @@ namespace shrinkwrap
 namespace
 {
 constexpr double kEverywhere = std::numeric_limits<double>::infinity();
+// A bound within this factor of the distance it is compared with is not trusted over rounding.
+constexpr double kSure = 1 - 1e-9;
 
 // The farthest a point of the triangle lies from its nearest corner: the circumradius of an acute
 // triangle, half the longest edge of another.
@@ -54,20 +56,22 @@ std::vector<double> farShares(const TriangleSoup& target, const DistanceSource& 
   parallelFor(0, static_cast<Index>(share.size()), kQueryGrain, [&](Index b, Index e) {
     for (Index t = b; t < e; ++t)
     {
-      const Vec3& a = target.points[target.triangles[t][0]];
-      const Vec3& u = target.points[target.triangles[t][1]] - a;
-      const Vec3& v = target.points[target.triangles[t][2]] - a;
+      const auto& c = target.triangles[t];
+      const Vec3& a = target.points[c[0]];
+      const Vec3& u = target.points[c[1]] - a;
+      const Vec3& v = target.points[c[2]] - a;
       const double longest = std::max({ u.norm(), v.norm(), (u - v).norm() });
+      const std::array<double, 3> d = atPoints
+        ? std::array<double, 3>{ std::abs((*atPoints)[c[0]]), std::abs((*atPoints)[c[1]]),
+            std::abs((*atPoints)[c[2]]) }
+        : std::array<double, 3>{ kEverywhere, kEverywhere, kEverywhere };
       if (atPoints)
       {
-        const auto& c = target.triangles[t];
-        const double d0 = std::abs((*atPoints)[c[0]]), d1 = std::abs((*atPoints)[c[1]]),
-                     d2 = std::abs((*atPoints)[c[2]]);
-        if (std::max({ d0, d1, d2 }) + longest <= distance)
+        if (std::max({ d[0], d[1], d[2] }) + longest <= distance)
         {
           continue; // near everywhere: share 0
         }
-        if (std::min({ d0, d1, d2 }) - longest > distance)
+        if (std::min({ d[0], d[1], d[2] }) - longest > distance)
         {
           share[t] = 1; // far everywhere
           continue;
@@ -76,8 +80,28 @@ std::vector<double> farShares(const TriangleSoup& target, const DistanceSource& 
       const int n = std::clamp(static_cast<int>(std::ceil(longest / (0.5 * distance))), 1,
         distance > 0 ? kMaxFarSplits : 1);
       int far = 0;
+      const std::array<Vec3, 3> corner = { a, target.points[c[1]], target.points[c[2]] };
       auto judge = [&](double s, double r) { // the part's centroid at a + s u + r v
-        const SourcePoint p = wrap.closestPoint(a + s * u + r * v, kEverywhere);
+        const Vec3 x = a + s * u + r * v;
+        // The distance changes by no more than the way from a corner: a part that near (or that
+        // far) from a corner is settled without a search (kSure keeps the rounding on its side).
+        double nearest = kEverywhere, farthest = 0;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double way = (x - corner[k]).norm();
+          nearest = std::min(nearest, d[k] + way);
+          farthest = std::max(farthest, d[k] - way);
+        }
+        if (nearest <= kSure * distance)
+        {
+          return;
+        }
+        if (farthest > distance / kSure && std::isfinite(farthest))
+        {
+          ++far;
+          return;
+        }
+        const SourcePoint p = wrap.closestPoint(x, kEverywhere);
         far += !p.found || p.squaredDistance > squared;
       };
       for (int i = 0; i < n; ++i)

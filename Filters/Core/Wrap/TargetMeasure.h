@@ -22,8 +22,8 @@ std::vector<double> signedDistances(
 // the triangle cut into n^2 equal parts (n from 1 to kMaxFarSplits, parts no longer than half
 // `distance`), each judged at its centroid (on all cores). `atPoints`, the distances at the
 // target's points (signedDistances), if given, settle the triangles whose corners all lie nearer
-// (or all farther) than `distance` by more than their longest edge: the distance changes by no more
-// than the way along the triangle.
+// (or all farther) than `distance` by more than their longest edge, and the parts whose centroid
+// does so by more than its way from a corner: the distance changes by no more than the way.
 constexpr int kMaxFarSplits = 8;
 std::vector<double> farShares(const TriangleSoup& target, const DistanceSource& wrap,
   double distance, const std::vector<double>* atPoints = nullptr);

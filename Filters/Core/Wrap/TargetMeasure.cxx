@@ -1,6 +1,7 @@
 #include "Wrap/TargetMeasure.h"
 
 #include "Common/Parallel.h"
+#include "Distance/TriangleDistance.h"
 
 #include <algorithm>
 #include <array>
@@ -121,9 +122,37 @@ std::vector<double> farShares(const TriangleSoup& target, const DistanceSource& 
   return share;
 }
 
+namespace
+{
+// A bound on the distance over the triangle p from the wrap's triangles w (-1: none): no point of it
+// lies farther from the wrap than from w[k], and no farther from w[k] than its farthest corner (the
+// distance to a triangle is convex). Infinite without a triangle.
+double footBound(const std::array<Vec3, 3>& p, const std::array<int, 3>& w, const TriangleSoup* soup)
+{
+  double bound = kEverywhere;
+  for (int k = 0; k < 3 && soup; ++k)
+  {
+    if (w[k] < 0 || (k > 0 && w[k] == w[k - 1]) || (k == 2 && w[2] == w[0]))
+    {
+      continue;
+    }
+    const auto& t = soup->triangles[w[k]];
+    const Vec3 &a = soup->points[t[0]], &b = soup->points[t[1]], &c = soup->points[t[2]];
+    double farthest = 0;
+    for (const Vec3& x : p)
+    {
+      farthest = std::max(farthest, (closestPointOnTriangle(x, a, b, c).point - x).squaredNorm());
+    }
+    bound = std::min(bound, std::sqrt(farthest));
+  }
+  return bound;
+}
+} // namespace
+
 double largestDistance(const TriangleSoup& target, const DistanceSource& wrap,
   const std::vector<double>& atPoints, double tolerance)
 {
+  const TriangleSoup* wrapTriangles = wrap.triangles();
   double start = 0;
   for (const auto& t : target.triangles)
   {
@@ -143,11 +172,13 @@ double largestDistance(const TriangleSoup& target, const DistanceSource& wrap,
   {
     std::array<Vec3, 3> corner;
     std::array<double, 3> d; // unsigned distances at the corners
+    std::array<int, 3> foot; // the wrap's triangles nearest to the corners (-1: not known)
     int depth;
   };
-  auto unsignedAt = [&](const Vec3& x) {
+  auto nearestAt = [&](const Vec3& x, double& distance, int& foot) {
     const SourcePoint p = wrap.closestPoint(x, kEverywhere);
-    return p.found ? std::sqrt(p.squaredDistance) : 0.0;
+    distance = p.found ? std::sqrt(p.squaredDistance) : 0.0;
+    foot = p.found ? p.element : -1;
   };
   parallelFor(0, static_cast<Index>(target.triangles.size()), kQueryGrain, [&](Index b, Index e) {
     std::vector<Piece> stack;
@@ -155,26 +186,35 @@ double largestDistance(const TriangleSoup& target, const DistanceSource& wrap,
     {
       const auto& c = target.triangles[t];
       stack.push_back({ { target.points[c[0]], target.points[c[1]], target.points[c[2]] },
-        { std::abs(atPoints[c[0]]), std::abs(atPoints[c[1]]), std::abs(atPoints[c[2]]) }, 0 });
+        { std::abs(atPoints[c[0]]), std::abs(atPoints[c[1]]), std::abs(atPoints[c[2]]) },
+        { -1, -1, -1 }, 0 });
       while (!stack.empty())
       {
         const Piece piece = stack.back();
         stack.pop_back();
-        const auto& [p, d, depth] = piece;
-        const double bound = std::max({ d[0], d[1], d[2] }) + reach(p);
-        if (depth >= kMaxSplitDepth || bound <= (1 + tolerance) * best.load())
+        const auto& [p, d, w, depth] = piece;
+        const double enough = (1 + tolerance) * best.load();
+        if (depth >= kMaxSplitDepth || std::max({ d[0], d[1], d[2] }) + reach(p) <= enough ||
+          footBound(p, w, wrapTriangles) <= enough)
         {
           continue;
         }
         const std::array<Vec3, 3> mid = { 0.5 * (p[0] + p[1]), 0.5 * (p[1] + p[2]),
           0.5 * (p[2] + p[0]) };
-        const std::array<double, 3> dm = { unsignedAt(mid[0]), unsignedAt(mid[1]),
-          unsignedAt(mid[2]) };
+        std::array<double, 3> dm;
+        std::array<int, 3> wm;
+        for (int k = 0; k < 3; ++k)
+        {
+          nearestAt(mid[k], dm[k], wm[k]);
+        }
         raise(std::max({ dm[0], dm[1], dm[2] }));
-        stack.push_back({ { p[0], mid[0], mid[2] }, { d[0], dm[0], dm[2] }, depth + 1 });
-        stack.push_back({ { mid[0], p[1], mid[1] }, { dm[0], d[1], dm[1] }, depth + 1 });
-        stack.push_back({ { mid[2], mid[1], p[2] }, { dm[2], dm[1], d[2] }, depth + 1 });
-        stack.push_back({ { mid[0], mid[1], mid[2] }, { dm[0], dm[1], dm[2] }, depth + 1 });
+        stack.push_back(
+          { { p[0], mid[0], mid[2] }, { d[0], dm[0], dm[2] }, { w[0], wm[0], wm[2] }, depth + 1 });
+        stack.push_back(
+          { { mid[0], p[1], mid[1] }, { dm[0], d[1], dm[1] }, { wm[0], w[1], wm[1] }, depth + 1 });
+        stack.push_back(
+          { { mid[2], mid[1], p[2] }, { dm[2], dm[1], d[2] }, { wm[2], wm[1], w[2] }, depth + 1 });
+        stack.push_back({ mid, dm, wm, depth + 1 });
       }
     }
   });

@@ -185,6 +185,10 @@ double largestDistance(const TriangleSoup& target, const DistanceSource& wrap,
     for (Index t = b; t < e; ++t)
     {
       const auto& c = target.triangles[t];
+      // What the split's depth may leave short anyway (the reach of a piece at the last depth): no
+      // piece need come nearer.
+      const double slack = reach({ target.points[c[0]], target.points[c[1]], target.points[c[2]] }) /
+        (1 << kMaxSplitDepth);
       stack.push_back({ { target.points[c[0]], target.points[c[1]], target.points[c[2]] },
         { std::abs(atPoints[c[0]]), std::abs(atPoints[c[1]]), std::abs(atPoints[c[2]]) },
         { -1, -1, -1 }, 0 });
@@ -193,7 +197,7 @@ double largestDistance(const TriangleSoup& target, const DistanceSource& wrap,
         const Piece piece = stack.back();
         stack.pop_back();
         const auto& [p, d, w, depth] = piece;
-        const double enough = (1 + tolerance) * best.load();
+        const double enough = std::max((1 + tolerance) * best.load(), best.load() + slack);
         if (depth >= kMaxSplitDepth || std::max({ d[0], d[1], d[2] }) + reach(p) <= enough ||
           footBound(p, w, wrapTriangles) <= enough)
         {

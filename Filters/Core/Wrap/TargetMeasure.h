@@ -29,11 +29,14 @@ std::vector<double> farShares(const TriangleSoup& target, const DistanceSource& 
   double distance, const std::vector<double>* atPoints = nullptr);
 
 // The largest distance from the target's triangles to the wrap, found to `tolerance` (relative):
-// from `atPoints` (the distances at the target's points), each triangle split in four where its
-// corners' distances plus the way to the nearest corner could exceed the largest found by more
-// than the tolerance, down to kMaxSplitDepth levels (on all cores). At least the largest at the
-// points; short of the largest by at most `tolerance` of it, or by a 32nd of a triangle's size
-// where the split stops at its depth; in the target's units.
+// from `atPoints` (the distances at the target's points), each triangle split in four where the
+// distance over it could exceed the largest found by more than the tolerance and by more than
+// the way across a piece of the last depth, down to kMaxSplitDepth levels (on all cores). Over a
+// piece the distance is at most its corners' plus the way to the nearest corner, and at most the
+// distance from its farthest corner to the wrap triangle nearest to one of its corners (`wrap`'s
+// triangles, where it has them). At least the largest at the points; short of the largest by at
+// most `tolerance` of it, or by the farthest a point of a 32nd-size piece of a triangle lies from
+// the piece's nearest corner; in the target's units.
 constexpr int kMaxSplitDepth = 5;
 double largestDistance(const TriangleSoup& target, const DistanceSource& wrap,
   const std::vector<double>& atPoints, double tolerance = 0.02);

@@ -32,6 +32,31 @@ double reach(const std::array<Vec3, 3>& p)
   const double twiceArea = (p[1] - p[0]).cross(p[2] - p[0]).norm();
   return twiceArea > 0 ? a * b * c / (2 * twiceArea) : 0.5 * longest;
 }
+
+// A bound on the distance over the triangle p from the wrap's triangles w (-1: none): no point of
+// it lies farther from the wrap than from w[k], and no farther from w[k] than its farthest corner
+// (the distance to a triangle is convex). Infinite without a triangle.
+double boundByNearestTriangles(
+  const std::array<Vec3, 3>& p, const std::array<int, 3>& w, const TriangleSoup* soup)
+{
+  double bound = kEverywhere;
+  for (int k = 0; k < 3 && soup; ++k)
+  {
+    if (w[k] < 0 || (k > 0 && w[k] == w[k - 1]) || (k == 2 && w[2] == w[0]))
+    {
+      continue;
+    }
+    const auto& t = soup->triangles[w[k]];
+    const Vec3 &a = soup->points[t[0]], &b = soup->points[t[1]], &c = soup->points[t[2]];
+    double farthest = 0;
+    for (const Vec3& x : p)
+    {
+      farthest = std::max(farthest, (closestPointOnTriangle(x, a, b, c).point - x).squaredNorm());
+    }
+    bound = std::min(bound, std::sqrt(farthest));
+  }
+  return bound;
+}
 } // namespace
 
 std::vector<double> signedDistances(
@@ -122,33 +147,6 @@ std::vector<double> farShares(const TriangleSoup& target, const DistanceSource& 
   return share;
 }
 
-namespace
-{
-// A bound on the distance over the triangle p from the wrap's triangles w (-1: none): no point of it
-// lies farther from the wrap than from w[k], and no farther from w[k] than its farthest corner (the
-// distance to a triangle is convex). Infinite without a triangle.
-double footBound(const std::array<Vec3, 3>& p, const std::array<int, 3>& w, const TriangleSoup* soup)
-{
-  double bound = kEverywhere;
-  for (int k = 0; k < 3 && soup; ++k)
-  {
-    if (w[k] < 0 || (k > 0 && w[k] == w[k - 1]) || (k == 2 && w[2] == w[0]))
-    {
-      continue;
-    }
-    const auto& t = soup->triangles[w[k]];
-    const Vec3 &a = soup->points[t[0]], &b = soup->points[t[1]], &c = soup->points[t[2]];
-    double farthest = 0;
-    for (const Vec3& x : p)
-    {
-      farthest = std::max(farthest, (closestPointOnTriangle(x, a, b, c).point - x).squaredNorm());
-    }
-    bound = std::min(bound, std::sqrt(farthest));
-  }
-  return bound;
-}
-} // namespace
-
 double largestDistance(const TriangleSoup& target, const DistanceSource& wrap,
   const std::vector<double>& atPoints, double tolerance)
 {
@@ -187,7 +185,8 @@ double largestDistance(const TriangleSoup& target, const DistanceSource& wrap,
       const auto& c = target.triangles[t];
       // What the split's depth may leave short anyway (the reach of a piece at the last depth): no
       // piece need come nearer.
-      const double slack = reach({ target.points[c[0]], target.points[c[1]], target.points[c[2]] }) /
+      const double slack =
+        reach({ target.points[c[0]], target.points[c[1]], target.points[c[2]] }) /
         (1 << kMaxSplitDepth);
       stack.push_back({ { target.points[c[0]], target.points[c[1]], target.points[c[2]] },
         { std::abs(atPoints[c[0]]), std::abs(atPoints[c[1]]), std::abs(atPoints[c[2]]) },
@@ -199,7 +198,7 @@ double largestDistance(const TriangleSoup& target, const DistanceSource& wrap,
         const auto& [p, d, w, depth] = piece;
         const double enough = std::max((1 + tolerance) * best.load(), best.load() + slack);
         if (depth >= kMaxSplitDepth || std::max({ d[0], d[1], d[2] }) + reach(p) <= enough ||
-          footBound(p, w, wrapTriangles) <= enough)
+          boundByNearestTriangles(p, w, wrapTriangles) <= enough)
         {
           continue;
         }

@@ -38,8 +38,8 @@ double slackOf(const TriangleSoup& target)
 
 // Parts settled by the corners' distances are judged as a search would: the same far shares at
 // fractions of `largest`, some of them between 0 and 1.
-void sharesAgree(const TriangleSoup& target, const DistanceSource& wrap, double largest,
-  const std::string& name)
+void sharesAgree(
+  const TriangleSoup& target, const DistanceSource& wrap, double largest, const std::string& name)
 {
   const std::vector<double> atPoints =
     signedDistances(target.points.data(), target.points.size(), wrap);

@@ -422,11 +422,12 @@ int Evolver::coverRims()
     rimMoves(this->Mesh, samples, r.tolerance * length, r.reach * length);
   // A move the hold-back refuses (it would cross the surface: near a rim both layers lie on the
   // sheet) is tried again at half its length, twice.
+  // A move too small to change a coordinate at its full length changes none at a share of it.
   std::vector<char> pending(moves.size());
   int left = 0;
   for (std::size_t v = 0; v < moves.size(); ++v)
   {
-    pending[v] = moves[v] != Vec3::Zero();
+    pending[v] = this->Mesh.points()[v] + moves[v] != this->Mesh.points()[v];
     left += pending[v];
   }
   int moved = 0;

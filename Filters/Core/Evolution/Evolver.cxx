@@ -421,8 +421,8 @@ int Evolver::coverRims()
   const std::vector<Vec3> moves =
     rimMoves(this->Mesh, samples, r.tolerance * length, r.reach * length);
   // A move the hold-back refuses (it would cross the surface: near a rim both layers lie on the
-  // sheet) is tried again at half its length, twice.
-  // A move too small to change a coordinate at its full length changes none at a share of it.
+  // sheet) is tried again at half its length, twice; one too small to change a coordinate is not
+  // tried (it changes none at a share either).
   std::vector<char> pending(moves.size());
   int left = 0;
   for (std::size_t v = 0; v < moves.size(); ++v)

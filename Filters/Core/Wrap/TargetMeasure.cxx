@@ -87,12 +87,11 @@ std::vector<double> farShares(const TriangleSoup& target, const DistanceSource& 
       const Vec3& u = target.points[c[1]] - a;
       const Vec3& v = target.points[c[2]] - a;
       const double longest = std::max({ u.norm(), v.norm(), (u - v).norm() });
-      const std::array<double, 3> d = atPoints
-        ? std::array<double, 3>{ std::abs((*atPoints)[c[0]]), std::abs((*atPoints)[c[1]]),
-            std::abs((*atPoints)[c[2]]) }
-        : std::array<double, 3>{ kEverywhere, kEverywhere, kEverywhere };
+      std::array<double, 3> d{};
       if (atPoints)
       {
+        d = { std::abs((*atPoints)[c[0]]), std::abs((*atPoints)[c[1]]),
+          std::abs((*atPoints)[c[2]]) };
         if (std::max({ d[0], d[1], d[2] }) + longest <= distance)
         {
           continue; // near everywhere: share 0
@@ -111,21 +110,24 @@ std::vector<double> farShares(const TriangleSoup& target, const DistanceSource& 
         const Vec3 x = a + s * u + r * v;
         // The distance changes by no more than the way from a corner: a part that near (or that
         // far) from a corner is settled without a search (kSure keeps the rounding on its side).
-        double nearest = kEverywhere, farthest = 0;
-        for (int k = 0; k < 3; ++k)
+        if (atPoints)
         {
-          const double way = (x - corner[k]).norm();
-          nearest = std::min(nearest, d[k] + way);
-          farthest = std::max(farthest, d[k] - way);
-        }
-        if (nearest <= kSure * distance)
-        {
-          return;
-        }
-        if (farthest > distance / kSure && std::isfinite(farthest))
-        {
-          ++far;
-          return;
+          double nearest = kEverywhere, farthest = 0;
+          for (int k = 0; k < 3; ++k)
+          {
+            const double way = (x - corner[k]).norm();
+            nearest = std::min(nearest, d[k] + way);
+            farthest = std::max(farthest, d[k] - way);
+          }
+          if (nearest <= kSure * distance)
+          {
+            return;
+          }
+          if (farthest > distance / kSure && std::isfinite(farthest))
+          {
+            ++far;
+            return;
+          }
         }
         const SourcePoint p = wrap.closestPoint(x, kEverywhere);
         far += !p.found || p.squaredDistance > squared;
